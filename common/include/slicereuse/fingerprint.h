@@ -1,0 +1,11 @@
+#pragma once
+// mesh_fingerprint: the connectivity fingerprint of a mesh (see slices.h). Two meshes have the
+// same fingerprint exactly when (up to hash collisions) their face index arrays are equal.
+#include "slicereuse/mesh.h"
+#include "slicereuse/slices.h"
+
+namespace slicereuse {
+
+Fingerprint mesh_fingerprint(const Mesh& mesh);
+
+}  // namespace slicereuse

@@ -1,0 +1,44 @@
+#pragma once
+// MaskStack: read access to a stack of mask images on disk, one PNG per layer, either
+//   - a folder of PNG files (export_masks writes layerNNNNN.png; unpacked .sl1 archives hold
+//     <jobDir>NNNNN.png), only its top level is listed, or
+//   - a Prusa .sl1 archive (zip), entries <jobDir>NNNNN.png; thumbnail entries are ignored.
+// Layer k is the PNG whose name ends in the decimal number k right before ".png"; PNGs without
+// such a number are ignored, and the numbers must run 0..L-1 with no gap and no repeat.
+// The constructor throws Error naming the path when it does not exist, is neither a folder nor
+// a readable zip archive, holds no layer image, or misses or repeats a layer number.
+// mask_layer_file_name gives the names export_masks writes: prefix, k with at least 5 digits
+// (zero-padded, like PrusaSlicer's %.5d), ".png".
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+struct zip;
+
+namespace slicereuse {
+
+std::string mask_layer_file_name(const std::string& prefix, size_t k);
+
+class MaskStack {
+ public:
+  explicit MaskStack(const std::string& path);
+  ~MaskStack();
+  MaskStack(const MaskStack&) = delete;
+  MaskStack& operator=(const MaskStack&) = delete;
+
+  size_t layers() const { return names_.size(); }
+  // The file path, or archive:entry, of layer k, as shown in messages.
+  std::string layer_name(size_t k) const;
+  // Reads the PNG bytes of layer k into bytes (replaced); throws Error naming layer_name(k) when
+  // it cannot be read (a zip entry failing its CRC included). One archive handle: not thread-safe.
+  void read(size_t k, std::vector<uint8_t>& bytes);
+
+ private:
+  std::string path_;
+  struct zip* zip_ = nullptr;
+  std::vector<std::string> names_;   // file or entry name per layer
+  std::vector<uint64_t> entry_;      // zip entry index per layer
+};
+
+}  // namespace slicereuse

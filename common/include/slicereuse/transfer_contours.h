@@ -1,0 +1,37 @@
+#pragma once
+// transfer_contours: computes a target mesh's contours from a source's encoding and the
+// target's vertices (the target must have the source's faces, checked by fingerprint).
+//
+// Exact mode: every encoded point lies on a mesh edge; the same edge of the target is cut by
+// the same plane layer_z[k] (every member sits on the same build plate). A layer is certified
+// when every one of its edges still straddles its plane the same way up and the target has
+// exactly as many straddling edges on that plane as the layer has points; otherwise that layer
+// alone is re-sliced directly on the target. Layers run up to the target's own top, as direct
+// slicing with the source's z_start and thickness would give: a taller target's extra layers are
+// sliced directly (and counted as re-sliced), a shorter target's surplus layers are dropped.
+// The result therefore equals direct slicing of the target layer by layer (up to the order of
+// contours and the start point of each loop), bit for bit.
+// Barycentric mode: the method's Eq. 2, p = sum lambda_i * v_i on the target face, on the
+// source's layers as they are; points may leave the plane when the target differs in z
+// (max_plane_deviation reports by how much).
+//
+// Output: Slices with xyz and the target's own encoding, so the target can be a source later.
+#include "slicereuse/mesh.h"
+#include "slicereuse/progress.h"
+#include "slicereuse/slices.h"
+
+namespace slicereuse {
+
+enum class TransferMode { Exact = 0, Barycentric = 1 };
+
+struct TransferStats {
+  size_t transferred_layers = 0;
+  size_t resliced_layers = 0;
+  double max_plane_deviation = 0;  // barycentric mode: max |z - layer_z|
+};
+
+// Throws Error when target's fingerprint differs from encoding.fingerprint.
+Slices transfer_contours(const Slices& encoding, const Mesh& target, TransferMode mode,
+                         TransferStats* stats = nullptr, const Progress& progress = {});
+
+}  // namespace slicereuse

@@ -1,0 +1,186 @@
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cctype>
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <omp.h>
+
+#include "slicereuse/atomic_file.h"
+#include "slicereuse/buffer.h"
+#include "slicereuse/error.h"
+#include "slicereuse/mask_png.h"
+#include "slicereuse/mask_stack.h"
+#include "slicereuse/masks.h"
+#include "slicereuse/parallel_blocks.h"
+#include "slicereuse/printer_profile.h"
+#include "slicereuse/sl1_writer.h"
+
+namespace slicereuse {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Folder output names its images layer00000.png, layer00001.png, ...
+const char* const FOLDER_PREFIX = "layer";
+const char* const PHASE = "writing mask images";
+
+bool is_sl1(const std::string& path) {
+  if (path.size() < 4) return false;
+  std::string ext = path.substr(path.size() - 4);
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".sl1";
+}
+
+// Resin volume from the contours' areas (shoelace; holes run clockwise and subtract).
+double used_material_ml(const Slices& s) {
+  double mm3 = 0;
+  for (size_t k = 0; k < s.layers(); ++k) {
+    double area = 0;
+    for (uint64_t c = s.layer_begin[k]; c < s.layer_begin[k + 1]; ++c) {
+      if (s.contour_open[c]) continue;
+      const uint64_t b = s.contour_begin[c], n = s.contour_begin[c + 1] - b;
+      for (uint64_t i = 0; i < n; ++i) {
+        const double* p = &s.xyz[3 * (b + i)];
+        const double* q = &s.xyz[3 * (b + (i + 1 == n ? 0 : i + 1))];
+        area += 0.5 * (p[0] * q[1] - q[0] * p[1]);
+      }
+    }
+    mm3 += std::max(0.0, area) * s.thickness;
+  }
+  return mm3 / 1000;
+}
+
+void encode_layer(const Slices& s, size_t k, const PrinterProfile& p, std::vector<uint8_t>& png) {
+  thread_local Buffer<uint8_t> image;
+  image.resize(size_t(p.width_px) * size_t(p.height_px));
+  rasterize_layer(s, k, p, image.data());
+  encode_mask_png(image.data(), p.width_px, p.height_px, p.antialiasing ? 8 : 1, png);
+}
+
+// A fresh folder next to the target that collects the images; removed with its content unless
+// commit() moved them into place, so a failed or cancelled export leaves the target untouched.
+class StagingFolder {
+ public:
+  explicit StagingFolder(const std::string& target) : target_(target) {
+    std::error_code ec;
+    if (fs::exists(target, ec) && !fs::is_directory(target, ec))
+      throw Error("cannot write masks to '" + target + "': it exists and is not a folder");
+    for (int attempt = 0;; ++attempt) {
+      path_ = target + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(attempt);
+      if (::mkdir(path_.c_str(), 0777) == 0) break;
+      if (errno != EEXIST || attempt > 100)
+        throw Error("cannot create a folder next to '" + target + "': " + std::strerror(errno));
+    }
+  }
+  ~StagingFolder() {
+    if (path_.empty()) return;
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  const std::string& path() const { return path_; }
+
+  // A missing or empty target is replaced in one rename. Into an existing folder the images
+  // are renamed one by one, and images of a former, longer export are removed.
+  void commit(size_t layers) {
+    if (::rename(path_.c_str(), target_.c_str()) == 0) {
+      path_.clear();
+      return;
+    }
+    if (errno != ENOTEMPTY && errno != EEXIST)
+      throw Error("cannot move '" + path_ + "' to '" + target_ + "': " + std::strerror(errno));
+    for (size_t k = 0; k < layers; ++k) {
+      const std::string name = mask_layer_file_name(FOLDER_PREFIX, k);
+      const std::string from = path_ + "/" + name, to = target_ + "/" + name;
+      if (::rename(from.c_str(), to.c_str()) != 0)
+        throw Error("cannot move '" + from + "' to '" + to + "': " + std::strerror(errno));
+    }
+    for (size_t k = layers;; ++k) {
+      const std::string stale = target_ + "/" + mask_layer_file_name(FOLDER_PREFIX, k);
+      if (::unlink(stale.c_str()) != 0) break;
+    }
+  }
+
+ private:
+  std::string target_, path_;
+};
+
+void export_folder(const Slices& s, const PrinterProfile& p, std::string folder,
+                   const Progress& progress) {
+  while (folder.size() > 1 && folder.back() == '/') folder.pop_back();
+  StagingFolder staging(folder);
+  parallel_blocks(
+      s.layers(),
+      [&](size_t k) {
+        thread_local std::vector<uint8_t> png;
+        encode_layer(s, k, p, png);
+        AtomicFile file(staging.path() + "/" + mask_layer_file_name(FOLDER_PREFIX, k));
+        file.write(png.data(), png.size());
+        file.commit();
+      },
+      progress, PHASE);
+  // Last chance to cancel: once committed, the export is done and no longer reports.
+  report_progress(progress, 1, PHASE);
+  staging.commit(s.layers());
+}
+
+// Encodes layers in parallel batches as write_sl1 asks for them in order, holding one batch.
+class BatchEncoder {
+ public:
+  BatchEncoder(const Slices& s, const PrinterProfile& p, const Progress& progress)
+      : s_(s), p_(p), progress_(progress), pngs_(size_t(16) * size_t(omp_get_max_threads())) {}
+
+  const std::vector<uint8_t>& operator()(size_t k) {
+    if (k < first_ || k >= first_ + count_) {
+      report_progress(progress_, double(k) / double(s_.layers()), PHASE);
+      first_ = k;
+      count_ = std::min(pngs_.size(), s_.layers() - k);
+      parallel_blocks(count_, [&](size_t i) { encode_layer(s_, first_ + i, p_, pngs_[i]); }, {},
+                      PHASE);
+    }
+    return pngs_[k - first_];
+  }
+
+ private:
+  const Slices& s_;
+  const PrinterProfile& p_;
+  const Progress& progress_;
+  std::vector<std::vector<uint8_t>> pngs_;
+  size_t first_ = 0, count_ = 0;
+};
+
+}  // namespace
+
+MaskExportStats export_masks(const Slices& s, const PrinterProfile& profile,
+                             const std::string& output_path, const Progress& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  validate_printer_profile(profile);
+  validate_slices(s);
+  if (!s.has_points())
+    throw Error("mask export needs contour points, but the slices carry only an encoding");
+  if (s.layers() == 0) throw Error("mask export: the slices have no layers");
+  if (output_path.empty()) throw Error("mask export: no output path given");
+  report_progress(progress, 0, PHASE);
+  if (is_sl1(output_path)) {
+    BatchEncoder encoder(s, profile, progress);
+    write_sl1(output_path, Sl1Job{profile, s.layers(), s.thickness, used_material_ml(s)},
+              std::ref(encoder));
+  } else {
+    export_folder(s, profile, output_path, progress);
+  }
+  MaskExportStats stats;
+  stats.layers = s.layers();
+  stats.ignored_open_contours = s.open_contours();
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return stats;
+}
+
+}  // namespace slicereuse

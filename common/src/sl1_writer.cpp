@@ -1,0 +1,264 @@
+#include "slicereuse/sl1_writer.h"
+
+#include <zip.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <exception>
+#include <memory>
+
+#include "slicereuse/atomic_file.h"
+#include "slicereuse/error.h"
+#include "slicereuse/mask_stack.h"
+
+namespace slicereuse {
+namespace {
+
+// Placeholder exposure settings: the printer profile has no resin data; SL1 defaults.
+constexpr double EXPOSURE_S = 6, FIRST_EXPOSURE_S = 35, TILT_S = 5;
+constexpr size_t FADED_LAYERS = 10;
+
+std::string num(double v) {
+  char buf[32];
+  return std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
+}
+
+std::string utc_timestamp(std::time_t now) {
+  std::tm tm;
+  gmtime_r(&now, &tm);
+  char buf[64];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d at %H:%M:%S UTC", &tm);
+  return buf;
+}
+
+std::string config_ini(const Sl1Job& j, const std::string& job, std::time_t now) {
+  const size_t fade = std::min(FADED_LAYERS, j.layers);
+  const double print_s = double(fade) * FIRST_EXPOSURE_S + double(j.layers - fade) * EXPOSURE_S +
+                         double(j.layers) * TILT_S;
+  return "action = print\n"
+         "expTime = " + num(EXPOSURE_S) + "\n"
+         "expTimeFirst = " + num(FIRST_EXPOSURE_S) + "\n"
+         "expUserProfile = 0\n"
+         "fileCreationTimestamp = " + utc_timestamp(now) + "\n"
+         "hollow = 0\n"
+         "jobDir = " + job + "\n"
+         "layerHeight = " + num(j.layer_height_mm) + "\n"
+         "materialName = slicereuse\n"
+         "numFade = " + std::to_string(fade) + "\n"
+         "numFast = " + std::to_string(j.layers) + "\n"
+         "numSlow = 0\n"
+         "printProfile = slicereuse\n"
+         "printTime = " + num(std::round(print_s)) + "\n"
+         "printerModel = SL1\n"
+         "printerProfile = slicereuse\n"
+         "printerVariant = default\n"
+         "prusaSlicerVersion = slicereuse\n"
+         "usedMaterial = " + num(std::round(j.used_material_ml * 1000) / 1000) + "\n";
+}
+
+std::string prusaslicer_ini(const Sl1Job& j) {
+  const PrinterProfile& p = j.profile;
+  const std::string w = num(p.width_px * p.pixel_size_x_um / 1000);
+  const std::string h = num(p.height_px * p.pixel_size_y_um / 1000);
+  const double height = std::max(150.0, std::ceil(double(j.layers) * j.layer_height_mm));
+  return "bed_shape = 0x0," + w + "x0," + w + "x" + h + ",0x" + h + "\n"
+         "display_height = " + h + "\n"
+         "display_mirror_x = " + std::to_string(int(p.mirror_x)) + "\n"
+         "display_mirror_y = " + std::to_string(int(p.mirror_y)) + "\n"
+         "display_orientation = landscape\n"
+         "display_pixels_x = " + std::to_string(p.width_px) + "\n"
+         "display_pixels_y = " + std::to_string(p.height_px) + "\n"
+         "display_width = " + w + "\n"
+         "exposure_time = " + num(EXPOSURE_S) + "\n"
+         "faded_layers = " + std::to_string(std::min(FADED_LAYERS, j.layers)) + "\n"
+         "gamma_correction = " + (p.antialiasing ? "1" : "0") + "\n"
+         "initial_exposure_time = " + num(FIRST_EXPOSURE_S) + "\n"
+         "initial_layer_height = " + num(j.layer_height_mm) + "\n"
+         "layer_height = " + num(j.layer_height_mm) + "\n"
+         "max_print_height = " + num(height) + "\n"
+         "printer_model = SL1\n"
+         "printer_settings_id = slicereuse\n"
+         "printer_technology = SLA\n"
+         "printer_variant = default\n"
+         "sla_material_settings_id = slicereuse\n"
+         "sla_print_settings_id = slicereuse\n";
+}
+
+// libzip writes the archive through this source into the AtomicFile's stream. Finishing
+// (rename into place) is left to AtomicFile::commit after zip_close succeeded.
+struct ZipError {
+  zip_error_t e;
+  ZipError() { zip_error_init(&e); }
+  ~ZipError() { zip_error_fini(&e); }
+};
+
+struct Target {
+  FILE* file;
+  ZipError error;
+};
+
+zip_int64_t target_cb(void* ud, void* data, zip_uint64_t len, zip_source_cmd_t cmd) {
+  Target& t = *static_cast<Target*>(ud);
+  switch (cmd) {
+    case ZIP_SOURCE_SUPPORTS:
+      return ZIP_SOURCE_SUPPORTS_WRITABLE;
+    case ZIP_SOURCE_STAT:  // no archive yet: libzip then creates a new one
+      zip_error_set(&t.error.e, ZIP_ER_READ, ENOENT);
+      return -1;
+    case ZIP_SOURCE_ERROR:
+      return zip_error_to_data(&t.error.e, data, len);
+    case ZIP_SOURCE_WRITE:
+      if (std::fwrite(data, 1, len, t.file) != len) {
+        zip_error_set(&t.error.e, ZIP_ER_WRITE, errno);
+        return -1;
+      }
+      return zip_int64_t(len);
+    case ZIP_SOURCE_SEEK_WRITE: {
+      auto* a = ZIP_SOURCE_GET_ARGS(zip_source_args_seek_t, data, len, &t.error.e);
+      if (!a) return -1;
+      if (fseeko(t.file, off_t(a->offset), a->whence) != 0) {
+        zip_error_set(&t.error.e, ZIP_ER_SEEK, errno);
+        return -1;
+      }
+      return 0;
+    }
+    case ZIP_SOURCE_TELL_WRITE: {
+      const off_t at = ftello(t.file);
+      if (at < 0) zip_error_set(&t.error.e, ZIP_ER_TELL, errno);
+      return at;
+    }
+    case ZIP_SOURCE_BEGIN_WRITE:
+    case ZIP_SOURCE_COMMIT_WRITE:
+    case ZIP_SOURCE_ROLLBACK_WRITE:
+    case ZIP_SOURCE_REMOVE:
+    case ZIP_SOURCE_OPEN:
+    case ZIP_SOURCE_CLOSE:
+    case ZIP_SOURCE_FREE:
+      return 0;
+    default:
+      zip_error_set(&t.error.e, ZIP_ER_OPNOTSUPP, 0);
+      return -1;
+  }
+}
+
+// One layer entry: its bytes are asked for only when libzip reaches it on close.
+struct Layers {
+  const LayerPng* layer_png;
+  std::time_t mtime;
+  std::exception_ptr failure;
+  ZipError error;
+};
+
+struct LayerEntry {
+  Layers* layers;
+  size_t k;
+  size_t pos = 0;
+  const std::vector<uint8_t>* bytes = nullptr;
+};
+
+zip_int64_t layer_cb(void* ud, void* data, zip_uint64_t len, zip_source_cmd_t cmd) {
+  LayerEntry& e = *static_cast<LayerEntry*>(ud);
+  Layers& ls = *e.layers;
+  try {
+    switch (cmd) {
+      case ZIP_SOURCE_SUPPORTS:
+        return ZIP_SOURCE_SUPPORTS_READABLE;
+      case ZIP_SOURCE_STAT: {
+        auto* st = ZIP_SOURCE_GET_ARGS(zip_stat_t, data, len, &ls.error.e);
+        if (!st) return -1;
+        zip_stat_init(st);
+        e.bytes = &(*ls.layer_png)(e.k);
+        st->size = e.bytes->size();
+        st->mtime = ls.mtime;
+        st->valid = ZIP_STAT_SIZE | ZIP_STAT_MTIME;
+        return sizeof(zip_stat_t);
+      }
+      case ZIP_SOURCE_OPEN:
+        e.bytes = &(*ls.layer_png)(e.k);
+        e.pos = 0;
+        return 0;
+      case ZIP_SOURCE_READ: {
+        const size_t n = std::min<size_t>(len, e.bytes->size() - e.pos);
+        std::memcpy(data, e.bytes->data() + e.pos, n);
+        e.pos += n;
+        return zip_int64_t(n);
+      }
+      case ZIP_SOURCE_ERROR:
+        return zip_error_to_data(&ls.error.e, data, len);
+      case ZIP_SOURCE_CLOSE:
+      case ZIP_SOURCE_FREE:
+        return 0;
+      default:
+        zip_error_set(&ls.error.e, ZIP_ER_OPNOTSUPP, 0);
+        return -1;
+    }
+  } catch (...) {
+    // Exceptions must not unwind through libzip's C frames; carried out after zip_close.
+    if (!ls.failure) ls.failure = std::current_exception();
+    zip_error_set(&ls.error.e, ZIP_ER_INTERNAL, 0);
+    return -1;
+  }
+}
+
+std::string job_name(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  if (name.size() > 4) name.resize(name.size() - 4);  // ".sl1"
+  return name;
+}
+
+void add_entry(zip_t* za, const std::string& name, zip_source_t* src, bool store,
+               const std::string& path) {
+  if (!src) throw Error("cannot write '" + path + "': " + zip_strerror(za));
+  const zip_int64_t i = zip_file_add(za, name.c_str(), src, ZIP_FL_ENC_UTF_8);
+  if (i < 0) {
+    zip_source_free(src);
+    throw Error("cannot write '" + path + "': entry '" + name + "': " + zip_strerror(za));
+  }
+  if (store && zip_set_file_compression(za, zip_uint64_t(i), ZIP_CM_STORE, 0) != 0)
+    throw Error("cannot write '" + path + "': " + zip_strerror(za));
+}
+
+}  // namespace
+
+void write_sl1(const std::string& path, const Sl1Job& job, const LayerPng& layer_png) {
+  AtomicFile out(path);
+  Target target{out.stream(), {}};
+  ZipError error;
+  zip_source_t* src = zip_source_function_create(target_cb, &target, &error.e);
+  zip_t* za = src ? zip_open_from_source(src, ZIP_CREATE | ZIP_TRUNCATE, &error.e) : nullptr;
+  if (!za) {
+    if (src) zip_source_free(src);
+    throw Error("cannot write '" + path + "': " + zip_error_strerror(&error.e));
+  }
+  std::unique_ptr<zip_t, void (*)(zip_t*)> archive(za, zip_discard);
+
+  const std::time_t now = std::time(nullptr);
+  const std::string name = job_name(path);
+  const std::string config = config_ini(job, name, now), slicer = prusaslicer_ini(job);
+  add_entry(za, "config.ini", zip_source_buffer(za, config.data(), config.size(), 0), false, path);
+  add_entry(za, "prusaslicer.ini", zip_source_buffer(za, slicer.data(), slicer.size(), 0), false,
+            path);
+
+  Layers layers{&layer_png, now, nullptr, {}};
+  std::vector<LayerEntry> entries(job.layers);
+  for (size_t k = 0; k < job.layers; ++k) {
+    entries[k].layers = &layers;
+    entries[k].k = k;
+    add_entry(za, mask_layer_file_name(name, k), zip_source_function(za, layer_cb, &entries[k]),
+              true, path);
+  }
+  if (zip_close(za) != 0) {
+    if (layers.failure) std::rethrow_exception(layers.failure);
+    throw Error("cannot write '" + path + "': " + zip_strerror(za));
+  }
+  archive.release();
+  out.commit();
+}
+
+}  // namespace slicereuse

@@ -1,0 +1,90 @@
+// "Export Mask Images" and "Compare Mask Stacks": file-to-file filters, no mesh involved.
+#include <cmath>
+
+#include "filters_common.h"
+#include "slicereuse/error.h"
+#include "slicereuse/masks.h"
+#include "slicereuse/slice_files.h"
+
+namespace slicereuse::plugin {
+namespace {
+
+int positive_int(const ParamValues& values, const char* name) {
+  const double v = values.number(name);
+  if (!(v >= 1 && v <= 1e6)) throw Error(format("%s must be between 1 and 1000000 pixels (got %g)", name, v));
+  return int(v);
+}
+
+double positive(const ParamValues& values, const char* name) {
+  const double v = values.number(name);
+  if (!(v > 0) || !std::isfinite(v)) throw Error(format("%s must be greater than 0 (got %g)", name, v));
+  return v;
+}
+
+double finite(const ParamValues& values, const char* name) {
+  const double v = values.number(name);
+  if (!std::isfinite(v)) throw Error(format("%s must be a finite number", name));
+  return v;
+}
+
+// A folder given as "out/masks/" is checked like "out/masks": its parent must be writable.
+std::string without_trailing_slash(std::string path) {
+  while (path.size() > 1 && path.back() == '/') path.pop_back();
+  return path;
+}
+
+}  // namespace
+
+Result run_export_masks(const ParamValues& values, Host& host) {
+  const auto start = std::chrono::steady_clock::now();
+  PrinterProfile profile;
+  profile.width_px = positive_int(values, "width_px");
+  profile.height_px = positive_int(values, "height_px");
+  profile.pixel_size_x_um = positive(values, "pixel_size_x_um");
+  profile.pixel_size_y_um = positive(values, "pixel_size_y_um");
+  profile.offset_x_mm = finite(values, "offset_x_mm");
+  profile.offset_y_mm = finite(values, "offset_y_mm");
+  profile.mirror_x = values.number("mirror_x") != 0;
+  profile.mirror_y = values.number("mirror_y") != 0;
+  profile.antialiasing = values.number("antialiasing") != 0;
+  const std::string& contour_file = values.text("contour_file");
+  if (contour_file.empty()) throw Error("contour_file is empty: choose a contour file");
+  const std::string output_path = without_trailing_slash(values.text("output_path"));
+  if (output_path.empty()) throw Error("output_path is empty: choose a folder or a .sl1 file");
+  check_outputs({{"output_path", output_path}});
+
+  const Progress progress = host.progress();
+  const Slices s = read_contour_file(contour_file, sub_progress(progress, 0, 0.1));
+  const MaskExportStats stats = export_masks(s, profile, output_path, sub_progress(progress, 0.1, 1));
+
+  const double seconds = seconds_since(start);
+  host.log(format("Export Mask Images: %zu layers of %dx%d pixels to %s, %zu open contours ignored, %.3f s",
+                  stats.layers, profile.width_px, profile.height_px, output_path.c_str(),
+                  stats.ignored_open_contours, seconds));
+  return {{"layers", int64_t(stats.layers)},
+          {"ignored_open_contours", int64_t(stats.ignored_open_contours)},
+          {"seconds", seconds}};
+}
+
+Result run_compare_masks(const ParamValues& values, Host& host) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string& stack_a = values.text("stack_a");
+  const std::string& stack_b = values.text("stack_b");
+  if (stack_a.empty() || stack_b.empty()) throw Error("stack_a and stack_b must both be given");
+  const std::string& report_file = values.text("report_file");
+  check_outputs({{"report_file", report_file}});
+
+  const StackComparison c = compare_mask_stacks(stack_a, stack_b, report_file, host.progress());
+
+  const double seconds = seconds_since(start);
+  host.log(format("Compare Mask Stacks: %zu layers, min similarity %.9g at layer %zu, %llu differing pixels, %.3f s",
+                  c.layers.size(), c.min_similarity, c.worst_layer,
+                  (unsigned long long)c.differing_pixels, seconds));
+  return {{"layers", int64_t(c.layers.size())},
+          {"min_similarity", c.min_similarity},
+          {"worst_layer", int64_t(c.worst_layer)},
+          {"differing_pixels", int64_t(c.differing_pixels)},
+          {"seconds", seconds}};
+}
+
+}  // namespace slicereuse::plugin

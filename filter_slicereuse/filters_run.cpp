@@ -1,0 +1,83 @@
+// run_filter's dispatch and the helpers shared by the filter implementations.
+#include <cstdarg>
+#include <cstdio>
+#include <filesystem>
+#include <system_error>
+
+#include "filters_common.h"
+#include "slicereuse/atomic_file.h"
+#include "slicereuse/error.h"
+
+namespace slicereuse::plugin {
+
+Result run_filter(FilterId id, const ParamValues& values, Host& host) {
+  switch (id) {
+    case FilterId::SliceWithEncoding: return run_slice(values, host);
+    case FilterId::TransferSlicing: return run_transfer(values, host);
+    case FilterId::ExportMasks: return run_export_masks(values, host);
+    case FilterId::CompareMasks: return run_compare_masks(values, host);
+  }
+  throw Error("unknown filter id " + std::to_string(int(id)));
+}
+
+Progress sub_progress(const Progress& progress, double from, double to) {
+  if (!progress) return {};
+  return [progress, from, to](double f, const char* phase) {
+    return progress(from + (to - from) * f, phase);
+  };
+}
+
+StagedOutputs::~StagedOutputs() {
+  for (const auto& [staging, final_path] : files_) std::remove(staging.c_str());
+}
+
+std::string StagedOutputs::stage(const std::string& final_path) {
+  files_.emplace_back(final_path + ".partial", final_path);
+  return files_.back().first;
+}
+
+void StagedOutputs::commit() {
+  for (auto& [staging, final_path] : files_) {
+    if (std::rename(staging.c_str(), final_path.c_str()) != 0)
+      throw Error("cannot rename " + staging + " to " + final_path + ": " +
+                  std::error_code(errno, std::generic_category()).message());
+    staging.clear();
+  }
+  files_.clear();
+}
+
+void check_outputs(const std::vector<std::pair<const char*, std::string>>& named_paths) {
+  namespace fs = std::filesystem;
+  std::vector<std::pair<const char*, fs::path>> seen;
+  for (const auto& [name, path] : named_paths) {
+    if (path.empty()) continue;
+    try {
+      check_writable(path);
+    } catch (const Error& e) {
+      throw Error(std::string(name) + ": " + e.what());
+    }
+    const fs::path normal = fs::absolute(path).lexically_normal();
+    for (const auto& [other_name, other] : seen)
+      if (other == normal)
+        throw Error(std::string(name) + " and " + other_name + " are the same file: " + path);
+    seen.emplace_back(name, normal);
+  }
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string format(const char* fmt, ...) {
+  va_list args, copy;
+  va_start(args, fmt);
+  va_copy(copy, args);
+  const int n = std::vsnprintf(nullptr, 0, fmt, copy);
+  va_end(copy);
+  std::string s(n > 0 ? size_t(n) : 0, '\0');
+  if (n > 0) std::vsnprintf(s.data(), s.size() + 1, fmt, args);
+  va_end(args);
+  return s;
+}
+
+}  // namespace slicereuse::plugin

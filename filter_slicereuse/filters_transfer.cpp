@@ -1,0 +1,63 @@
+// "Transfer Slicing to Mesh": a source encoding applied to a family member with the same faces.
+#include "filters_common.h"
+#include "slicereuse/error.h"
+#include "slicereuse/slice_files.h"
+#include "slicereuse/transfer_contours.h"
+
+namespace slicereuse::plugin {
+namespace {
+
+// The transfer filter has no format parameter: the output name decides, .srb being binary.
+FileFormat format_for(const std::string& path) {
+  const std::string ext = ".srb";
+  const bool binary = path.size() >= ext.size() &&
+                      path.compare(path.size() - ext.size(), ext.size(), ext) == 0;
+  return binary ? FileFormat::Binary : FileFormat::Text;
+}
+
+}  // namespace
+
+Result run_transfer(const ParamValues& values, Host& host) {
+  const auto start = std::chrono::steady_clock::now();
+  if (!values.text("map_file").empty())
+    throw Error("map_file: cross-parameterization maps are not supported yet; leave it empty "
+                "and use a target with the source's faces");
+  const double mode_index = values.number("mode");
+  if (mode_index != 0 && mode_index != 1)
+    throw Error(format("mode must be 0 (exact) or 1 (barycentric), got %g", mode_index));
+  const TransferMode mode = TransferMode(int(mode_index));
+  const std::string& encoding_file = values.text("encoding_file");
+  if (encoding_file.empty()) throw Error("encoding_file is empty: choose the source's encoding file");
+  const std::string& contour_file = values.text("contour_file");
+  const std::string& target_encoding_file = values.text("target_encoding_file");
+  check_outputs({{"contour_file", contour_file}, {"target_encoding_file", target_encoding_file}});
+
+  const Progress progress = host.progress();
+  const Slices encoding = read_encoding_file(encoding_file, sub_progress(progress, 0, 0.2));
+  const Mesh target = host.mesh_at(int(values.number("target_mesh")));
+  TransferStats stats;
+  const Slices s = transfer_contours(encoding, target, mode, &stats, sub_progress(progress, 0.2, 0.6));
+  StagedOutputs outputs;
+  if (!contour_file.empty())
+    write_contour_file(outputs.stage(contour_file), s, format_for(contour_file),
+                       sub_progress(progress, 0.6, 0.8));
+  if (!target_encoding_file.empty())
+    write_encoding_file(outputs.stage(target_encoding_file), s, format_for(target_encoding_file),
+                        sub_progress(progress, 0.8, 1));
+  outputs.commit();
+
+  const double seconds = seconds_since(start);
+  std::string line = format("Transfer Slicing to Mesh: %zu points in %zu layers, %zu transferred, %zu re-sliced",
+                            s.points(), s.layers(), stats.transferred_layers, stats.resliced_layers);
+  if (mode == TransferMode::Barycentric)
+    line += format(", max plane deviation %.3g mm", stats.max_plane_deviation);
+  host.log(line + format(", %.3f s", seconds));
+  return {{"points", int64_t(s.points())},
+          {"layers", int64_t(s.layers())},
+          {"transferred_layers", int64_t(stats.transferred_layers)},
+          {"resliced_layers", int64_t(stats.resliced_layers)},
+          {"max_plane_deviation", stats.max_plane_deviation},
+          {"seconds", seconds}};
+}
+
+}  // namespace slicereuse::plugin

@@ -1,0 +1,78 @@
+"""Fixtures for the pymeshlab (MeshLab 2025.07, double) host tests.
+
+Run: scripts/python -m pytest tests/python
+Needs the 2025 plugin (build/2025, or $SLICEREUSE_PLUGIN) and the family generator gen_family
+($SLICEREUSE_GEN_FAMILY, else build/2020/tests/gen_family, else any build/*/tests/gen_family).
+"""
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "python"))
+import slicereuse_pymeshlab as sr  # noqa: E402  (must come before any import of pymeshlab)
+
+THICKNESS = 0.1
+HEIGHT = 8.0  # mm: every shape then fits the default 76.8 x 57.6 mm mask area
+
+
+def _gen_family_binary():
+    env = os.environ.get("SLICEREUSE_GEN_FAMILY")
+    candidates = [Path(env)] if env else []
+    candidates.append(ROOT / "build" / "2020" / "tests" / "gen_family")
+    candidates += sorted((ROOT / "build").glob("*/tests/gen_family"), key=lambda p: -p.stat().st_mtime)
+    for c in candidates:
+        if c.is_file() and os.access(c, os.X_OK):
+            return c
+    return None
+
+
+@pytest.fixture(scope="session")
+def pymeshlab():
+    return sr.load()
+
+
+@pytest.fixture(scope="session")
+def make_family(tmp_path_factory):
+    """make_family(shape, members, z_change=False, faces=3000, seed=1) -> [member paths]."""
+    binary = _gen_family_binary()
+    if binary is None:
+        pytest.skip("gen_family not built: cmake --build build/2020 --target gen_family "
+                    "(or set SLICEREUSE_GEN_FAMILY)")
+    cache = {}
+
+    def make(shape, members, z_change=False, faces=3000, seed=1):
+        key = (shape, members, z_change, faces, seed)
+        if key not in cache:
+            out = tmp_path_factory.mktemp(f"{shape}{'_z' if z_change else ''}")
+            cmd = [str(binary), "--shape", shape, "--faces", str(faces), "--members", str(members),
+                   "--height", str(HEIGHT), "--seed", str(seed), "--out", str(out)]
+            if z_change:
+                cmd.append("--z-change")
+            subprocess.run(cmd, check=True, capture_output=True, text=True)
+            cache[key] = [out / f"member_{m:03d}.ply" for m in range(members)]
+        return cache[key]
+
+    return make
+
+
+def read_text_contours(path):
+    """Parses a text contour file into (header dict, [(layer_z, [(open, [(x, y, z), ...]), ...])])."""
+    header, layers = {}, []
+    with open(path) as f:
+        for line in f:
+            w = line.split()
+            if not w:
+                continue
+            if w[0] == "#":
+                header[w[1]] = w[2:]
+            elif w[0] == "layer":
+                layers.append((float(w[2]), []))
+            else:
+                is_open = w[0] == "open"
+                v = [float(x) for x in (w[1:] if is_open else w)]
+                layers[-1][1].append((is_open, [tuple(v[i:i + 3]) for i in range(0, len(v), 3)]))
+    return header, layers

@@ -1,0 +1,69 @@
+"""The family pipeline on the pymeshlab host: transferring the source's slicing to every member
+gives exactly the member's own slicing (same points, masks with S = 1)."""
+import json
+import subprocess
+
+import pytest
+
+import slicereuse_pymeshlab as sr
+from conftest import ROOT, THICKNESS
+
+SHAPES = ["arch", "ear", "handle", "box", "sphere", "torus"]
+KEYS = {"mesh", "layers", "points", "resliced_layers", "transfer_seconds", "direct_seconds",
+        "min_similarity"}
+
+
+@pytest.mark.parametrize("z_change", [False, True], ids=["xy", "z"])
+@pytest.mark.parametrize("shape", SHAPES)
+def test_transfer_equals_direct_slicing(make_family, tmp_path, shape, z_change):
+    members = make_family(shape, 3, z_change=z_change)
+    result = sr.family(members[0], members[1:], THICKNESS, tmp_path)
+    assert result["source"] == str(members[0])
+    assert [t["mesh"] for t in result["targets"]] == [str(m) for m in members[1:]]
+    for t in result["targets"]:
+        assert t["points"] == t["direct_points"] > 0, t
+        assert t["layers"] > 0
+        assert t["min_similarity"] == 1.0, t
+        if not z_change:
+            # x-y deformations keep every vertex on its side of every plane.
+            assert t["resliced_layers"] == 0, t
+
+
+def test_cli_prints_one_json_object(make_family, tmp_path):
+    members = make_family("arch", 3)
+    out = subprocess.run([str(ROOT / "scripts" / "python"), str(ROOT / "examples" / "family.py"),
+                          "--layer-thickness", str(THICKNESS), "--out", str(tmp_path / "out"),
+                          *map(str, members)], capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    result = json.loads(out.stdout)
+    assert set(result) == {"source", "targets"}
+    assert len(result["targets"]) == 2
+    for t in result["targets"]:
+        assert set(t) == KEYS
+        assert isinstance(t["layers"], int) and isinstance(t["points"], int)
+        assert isinstance(t["resliced_layers"], int)
+        assert t["transfer_seconds"] >= 0 and t["direct_seconds"] >= 0
+        assert t["min_similarity"] == 1.0
+    # 8 mm at 0.1 mm: layers whose bottom is below the top, z in [0, 8].
+    assert result["targets"][0]["layers"] == 80
+    assert out.stderr == ""  # no progress bar when stderr is not a terminal
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--layer-thickness", "0"], "--layer-thickness must be greater than 0"),
+    (["--layer-thickness", "0.1", "MISSING"], "mesh file not found: "),
+])
+def test_cli_errors_are_one_line(make_family, tmp_path, args, message):
+    members = make_family("arch", 3)
+    argv = [str(ROOT / "scripts" / "python"), str(ROOT / "examples" / "family.py"),
+            "--out", str(tmp_path / "out")]
+    argv += [str(tmp_path / "missing.ply") if a == "MISSING" else a for a in args]
+    if "MISSING" not in args:
+        argv += [str(m) for m in members]
+    else:
+        argv.insert(len(argv) - 1, str(members[0]))
+    out = subprocess.run(argv, capture_output=True, text=True)
+    assert out.returncode != 0
+    assert message in out.stderr
+    assert "Traceback" not in out.stderr
+    assert out.stdout == ""

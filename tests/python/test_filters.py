@@ -1,0 +1,147 @@
+"""The four filters through pymeshlab: parameters, result dicts, the preview layer, and bad
+input raising PyMeshLabException with a message that names the problem (never a crash)."""
+import pytest
+
+from conftest import THICKNESS, read_text_contours
+
+
+@pytest.fixture
+def sliced(pymeshlab, make_family, tmp_path):
+    """A MeshSet with members 0 and 1 of an arch family; member 0 sliced to text files."""
+    members = make_family("arch", 3)
+    ms = pymeshlab.MeshSet()
+    ms.load_new_mesh(str(members[0]))
+    source_id = ms.current_mesh_id()
+    r = ms.apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS,
+                        contour_file=str(tmp_path / "s.ctr"), encoding_file=str(tmp_path / "s.enc"))
+    ms.load_new_mesh(str(members[1]))
+    return ms, source_id, ms.current_mesh_id(), r, tmp_path, members
+
+
+def test_slice_result(sliced):
+    ms, _, _, r, tmp, _ = sliced
+    assert set(r) == {"layers", "contours", "points", "open_contours", "seconds"}
+    assert all(isinstance(r[k], int) for k in ("layers", "contours", "points", "open_contours"))
+    assert isinstance(r["seconds"], float)
+    header, layers = read_text_contours(tmp / "s.ctr")
+    # The float parameter 0.1 reaches the core as the double 0.1, not 0.100000001490116.
+    assert header["thickness"] == ["0.1"]
+    assert r["layers"] == len(layers) == 80
+    assert r["contours"] == sum(len(cs) for _, cs in layers)
+    assert r["points"] == sum(len(pts) for _, cs in layers for _, pts in cs)
+    assert r["open_contours"] == 0
+    for k, (z, contours) in enumerate(layers):
+        assert z == pytest.approx((k + 0.5) * THICKNESS, abs=1e-12)
+        assert all(p[2] == z for _, pts in contours for p in pts)
+
+
+def test_transfer_result_equals_direct(sliced):
+    ms, _, target, _, tmp, _ = sliced
+    t = ms.apply_filter("transfer_slicing_to_mesh", encoding_file=str(tmp / "s.enc"),
+                        target_mesh=target, contour_file=str(tmp / "t.ctr"),
+                        target_encoding_file=str(tmp / "t.enc"))
+    assert set(t) == {"points", "layers", "transferred_layers", "resliced_layers",
+                      "max_plane_deviation", "seconds"}
+    assert t["transferred_layers"] + t["resliced_layers"] == t["layers"] == 80
+    assert t["max_plane_deviation"] == 0.0
+    ms.set_current_mesh(target)
+    d = ms.apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS,
+                        contour_file=str(tmp / "d.ctr"))
+    assert d["points"] == t["points"] and d["layers"] == t["layers"]
+    _, transferred = read_text_contours(tmp / "t.ctr")
+    _, direct = read_text_contours(tmp / "d.ctr")
+    for (zt, ct), (zd, cd) in zip(transferred, direct):
+        assert zt == zd
+        # Same loops up to order and start point: compare point sets.
+        assert sorted(p for _, pts in ct for p in pts) == sorted(p for _, pts in cd for p in pts)
+
+
+def test_barycentric_mode_reports_deviation(sliced):
+    ms, _, target, _, tmp, _ = sliced
+    t = ms.apply_filter("transfer_slicing_to_mesh", encoding_file=str(tmp / "s.enc"),
+                        target_mesh=target, mode="barycentric", contour_file=str(tmp / "b.ctr"))
+    assert t["points"] > 0 and t["max_plane_deviation"] >= 0.0
+
+
+def test_masks_and_compare_results(sliced):
+    ms, _, _, r, tmp, _ = sliced
+    m = ms.apply_filter("export_mask_images", contour_file=str(tmp / "s.ctr"),
+                        output_path=str(tmp / "masks"), width_px=256, height_px=192,
+                        pixel_size_x_um=300, pixel_size_y_um=300)
+    assert set(m) == {"layers", "ignored_open_contours", "seconds"}
+    assert m["layers"] == r["layers"] and m["ignored_open_contours"] == 0
+    assert len(list((tmp / "masks").glob("*.png"))) == r["layers"]
+    c = ms.apply_filter("compare_mask_stacks", stack_a=str(tmp / "masks"), stack_b=str(tmp / "masks"),
+                        report_file=str(tmp / "compare.csv"))
+    assert set(c) == {"layers", "min_similarity", "worst_layer", "differing_pixels", "seconds"}
+    assert c["layers"] == r["layers"] and c["min_similarity"] == 1.0 and c["differing_pixels"] == 0
+    assert (tmp / "compare.csv").is_file()
+
+
+def test_preview_layer_is_an_edge_mesh_and_not_current(sliced):
+    ms, source, _, _, _, _ = sliced
+    ms.set_current_mesh(source)
+    before = ms.mesh_number()
+    ms.apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS, preview_layers=4)
+    assert ms.mesh_number() == before + 1
+    assert ms.current_mesh_id() == source
+    preview = ms.mesh(before)  # ids count up from 0 in a MeshSet without deletions
+    assert preview.face_number() == 0 and preview.edge_number() > 0
+    assert preview.edge_number() == preview.vertex_number()  # closed loops only
+
+
+def _raises(pymeshlab, ms, filter_name, message, **params):
+    with pytest.raises(pymeshlab.PyMeshLabException) as e:
+        ms.apply_filter(filter_name, **params)
+    assert message in str(e.value), str(e.value)
+
+
+@pytest.mark.parametrize("thickness", [0.0, -0.5])
+def test_thickness_must_be_positive(pymeshlab, sliced, thickness):
+    ms, _, _, _, tmp, _ = sliced
+    _raises(pymeshlab, ms, "slice_mesh_with_encoding", "layer_thickness must be greater than 0",
+            layer_thickness=thickness, contour_file=str(tmp / "x.ctr"))
+    assert not (tmp / "x.ctr").exists()
+
+
+def test_encoding_of_another_mesh_is_refused(pymeshlab, sliced, make_family):
+    ms, _, _, _, tmp, _ = sliced
+    ms.load_new_mesh(str(make_family("torus", 2)[1]))
+    _raises(pymeshlab, ms, "transfer_slicing_to_mesh", "faces differ",
+            encoding_file=str(tmp / "s.enc"), target_mesh=ms.current_mesh_id(),
+            contour_file=str(tmp / "x.ctr"))
+    assert not (tmp / "x.ctr").exists()
+
+
+def test_missing_files_are_named(pymeshlab, sliced):
+    ms, _, target, _, tmp, _ = sliced
+    _raises(pymeshlab, ms, "transfer_slicing_to_mesh", str(tmp / "missing.enc"),
+            encoding_file=str(tmp / "missing.enc"), target_mesh=target)
+    _raises(pymeshlab, ms, "export_mask_images", str(tmp / "missing.ctr"),
+            contour_file=str(tmp / "missing.ctr"), output_path=str(tmp / "m"))
+    _raises(pymeshlab, ms, "compare_mask_stacks", str(tmp / "nothing"),
+            stack_a=str(tmp / "nothing"), stack_b=str(tmp / "nothing"))
+    _raises(pymeshlab, ms, "slice_mesh_with_encoding", "contour_file",
+            layer_thickness=THICKNESS, contour_file=str(tmp / "no" / "such" / "dir" / "x.ctr"))
+
+
+def test_bad_mesh_id_and_contour_file_as_encoding(pymeshlab, sliced):
+    ms, _, target, _, tmp, _ = sliced
+    _raises(pymeshlab, ms, "transfer_slicing_to_mesh", "no mesh with id 99",
+            encoding_file=str(tmp / "s.enc"), target_mesh=99)
+    _raises(pymeshlab, ms, "transfer_slicing_to_mesh", str(tmp / "s.ctr"),
+            encoding_file=str(tmp / "s.ctr"), target_mesh=target)
+
+
+def test_interpreter_survives_errors(pymeshlab, sliced):
+    ms, source, _, _, tmp, _ = sliced
+    for _ in range(3):
+        with pytest.raises(pymeshlab.PyMeshLabException):
+            ms.apply_filter("slice_mesh_with_encoding", layer_thickness=-1)
+    ms.set_current_mesh(source)
+    assert ms.apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS)["layers"] == 80
+
+
+def test_no_current_mesh(pymeshlab):
+    with pytest.raises(pymeshlab.PyMeshLabException):
+        pymeshlab.MeshSet().apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS)

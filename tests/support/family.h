@@ -1,0 +1,47 @@
+#pragma once
+// Mass-customization families for tests and benchmarks: a base closed shape (member 0) and
+// members with exactly the same faces whose vertices are moved by smooth, seeded deformations.
+//
+// Shapes (all closed, consistently oriented outward):
+//   arch   - dental-arch-like shell: an inverted-U wall profile with tooth ridges swept along a
+//            horseshoe, rounded closed ends; sections are thin U-shaped rings (outer loop + hole).
+//   ear    - ear-canal-like hollow cup: a bent, tapering elliptic tube with inner and outer walls
+//            joined by a rounded rim, closed tip; sections have a hole, the tilted rim merges them.
+//   handle - mug-handle-like torus standing upright (genus 1): mid sections are two loops.
+//   box, sphere, torus (axis z; genus 1).
+// Every base is scaled uniformly and shifted so that its z range is exactly [0, height].
+//
+// Members: x-y deformed as smooth functions of z (scale, shear, bend, twist, Gaussian bumps),
+// each a bijection of every plane z = const, so no member self-intersects and z is untouched:
+// every member has the base's z range. With z_change, z is then remapped monotonically per
+// (x, y) column (z scaled by up to 3 %, local bumps of up to 3 % of the height that vanish at
+// the bottom and top), so slice topology changes between members; z min stays 0.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "slicereuse/mesh.h"
+
+namespace slicereuse::test {
+
+struct FamilyOptions {
+  std::string shape = "arch";  // one of family_shapes()
+  size_t faces = 20000;        // target face count; the base has it within a few per cent
+  double height = 14.484;      // mm; the base spans z in [0, height] exactly
+  uint64_t seed = 1;           // member parameters depend only on (seed, member index)
+  bool z_change = false;
+};
+
+// The accepted shape names, in the order listed above.
+const std::vector<std::string>& family_shapes();
+// Genus of a shape's surface: 0, or 1 for handle and torus. Throws Error for an unknown name.
+int family_shape_genus(const std::string& shape);
+
+// Member 0. Throws Error for an unknown shape, faces < 500 or height <= 0.
+Mesh make_family_base(const FamilyOptions& options);
+// Member `index` (>= 0) of the family whose base is `base`: the same F, V deformed as described
+// above; index 0 returns the base unchanged. Deterministic in (base, options.seed,
+// options.z_change, index).
+Mesh make_family_member(const Mesh& base, const FamilyOptions& options, int index);
+
+}  // namespace slicereuse::test

@@ -1,0 +1,448 @@
+// Mask images: exact pixel counts for known geometry, placement, invariance to loop start and
+// contour order, PNG folder and .sl1 export, stack comparison and its errors.
+#include <gtest/gtest.h>
+#include <zip.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "slicereuse/error.h"
+#include "slicereuse/mask_png.h"
+#include "slicereuse/mask_stack.h"
+#include "slicereuse/masks.h"
+
+namespace fs = std::filesystem;
+using namespace slicereuse;
+
+namespace {
+
+struct Loop {
+  std::vector<std::array<double, 2>> pts;
+  bool open = false;
+};
+using Layer = std::vector<Loop>;
+
+Slices make_slices(const std::vector<Layer>& layers, double h = 0.1) {
+  Slices s;
+  s.thickness = h;
+  s.layer_begin.push_back(0);
+  s.contour_begin.push_back(0);
+  for (size_t k = 0; k < layers.size(); ++k) {
+    s.layer_z.push_back((double(k) + 0.5) * h);
+    for (const Loop& l : layers[k]) {
+      for (const auto& p : l.pts) {
+        s.xyz.push_back(p[0]);
+        s.xyz.push_back(p[1]);
+        s.xyz.push_back(s.layer_z.back());
+      }
+      s.contour_begin.push_back(s.xyz.size() / 3);
+      s.contour_open.push_back(l.open);
+    }
+    s.layer_begin.push_back(s.contour_open.size());
+  }
+  validate_slices(s);
+  return s;
+}
+
+// Axis-aligned rectangle, counter-clockwise (or clockwise for a hole).
+Loop rect(double x0, double y0, double x1, double y1, bool clockwise = false) {
+  Loop l{{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}};
+  if (clockwise) std::reverse(l.pts.begin(), l.pts.end());
+  return l;
+}
+
+// A non-convex star with coordinates that fall nowhere special on the pixel grid.
+Loop star(double cx, double cy, double r0, double r1, int spikes) {
+  Loop l;
+  for (int i = 0; i < 2 * spikes; ++i) {
+    const double a = 3.141592653589793 * i / spikes + 0.1234, r = i % 2 ? r0 : r1;
+    l.pts.push_back({cx + r * std::cos(a), cy + r * std::sin(a)});
+  }
+  return l;
+}
+
+PrinterProfile small_display() {
+  PrinterProfile p;
+  p.width_px = 200;
+  p.height_px = 200;
+  p.pixel_size_x_um = 100;
+  p.pixel_size_y_um = 100;
+  return p;
+}
+
+std::vector<uint8_t> raster(const Slices& s, size_t k, const PrinterProfile& p,
+                            size_t* open = nullptr) {
+  std::vector<uint8_t> img(size_t(p.width_px) * p.height_px, 7);
+  const size_t o = rasterize_layer(s, k, p, img.data());
+  if (open) *open = o;
+  return img;
+}
+
+size_t on_pixels(const std::vector<uint8_t>& img) {
+  size_t n = 0;
+  for (uint8_t v : img) {
+    EXPECT_TRUE(v == 0 || v == 255);
+    n += v == 255;
+  }
+  return n;
+}
+
+class MaskFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    char tmpl[] = "/tmp/slicereuse_masks_XXXXXX";
+    ASSERT_NE(::mkdtemp(tmpl), nullptr);
+    dir = tmpl;
+  }
+  void TearDown() override { fs::remove_all(dir); }
+  std::vector<std::string> listing() const {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+  std::string dir;
+};
+
+// Three layers: a square, a square with a hole, a star.
+Slices sample_stack() {
+  return make_slices({{rect(-5, -5, 5, 5)},
+                      {rect(-5, -5, 5, 5), rect(-2, -2, 2, 2, true)},
+                      {star(0.3, -0.2, 3, 7.5, 9)}});
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(f), {});
+}
+
+}  // namespace
+
+TEST(RasterizeLayer, AlignedSquareIsExactly100By100) {
+  const PrinterProfile p = small_display();
+  const auto img = raster(make_slices({{rect(-5, -5, 5, 5)}}), 0, p);
+  EXPECT_EQ(on_pixels(img), 100u * 100u);
+  for (int r = 0; r < 200; ++r)
+    for (int c = 0; c < 200; ++c)
+      ASSERT_EQ(img[size_t(r) * 200 + c], (r >= 50 && r < 150 && c >= 50 && c < 150) ? 255 : 0);
+}
+
+TEST(RasterizeLayer, EdgesThroughPixelCentresAreHalfOpen) {
+  // Edges at x = -4.95 and 5.05 pass exactly through centres; still exactly 100 columns/rows.
+  const auto img = raster(make_slices({{rect(-4.95, -4.95, 5.05, 5.05)}}), 0, small_display());
+  EXPECT_EQ(on_pixels(img), 100u * 100u);
+}
+
+TEST(RasterizeLayer, ClockwiseHoleIsOff) {
+  const auto img =
+      raster(make_slices({{rect(-5, -5, 5, 5), rect(-2, -2, 2, 2, true)}}), 0, small_display());
+  EXPECT_EQ(on_pixels(img), 100u * 100u - 40u * 40u);
+  EXPECT_EQ(img[100 * 200 + 100], 0);
+  EXPECT_EQ(img[60 * 200 + 60], 255);
+}
+
+TEST(RasterizeLayer, OverlappingCounterClockwiseSquaresAreUnited) {
+  const auto img = raster(make_slices({{rect(-5, -5, 5, 5), rect(0, 0, 9, 9)}}), 0, small_display());
+  EXPECT_EQ(on_pixels(img), 100u * 100u + 90u * 90u - 50u * 50u);
+}
+
+TEST(RasterizeLayer, OpenContoursAreIgnoredAndCounted) {
+  Loop line = rect(-5, -5, 5, 5);
+  line.open = true;
+  size_t open = 0;
+  auto img = raster(make_slices({{line}}), 0, small_display(), &open);
+  EXPECT_EQ(open, 1u);
+  EXPECT_EQ(on_pixels(img), 0u);
+  img = raster(make_slices({{line, rect(-1, -1, 1, 1), line}}), 0, small_display(), &open);
+  EXPECT_EQ(open, 2u);
+  EXPECT_EQ(on_pixels(img), 400u);
+}
+
+TEST(RasterizeLayer, MirrorsFlipTheImage) {
+  const Slices s = make_slices({{rect(1, 2, 4, 3), star(-3, -4, 1, 2.5, 5)}});
+  PrinterProfile p = small_display();
+  const auto plain = raster(s, 0, p);
+  p.mirror_x = true;
+  const auto mx = raster(s, 0, p);
+  p.mirror_x = false;
+  p.mirror_y = true;
+  const auto my = raster(s, 0, p);
+  ASSERT_GT(on_pixels(plain), 0u);
+  for (int r = 0; r < 200; ++r)
+    for (int c = 0; c < 200; ++c) {
+      ASSERT_EQ(mx[size_t(r) * 200 + c], plain[size_t(r) * 200 + (199 - c)]);
+      ASSERT_EQ(my[size_t(r) * 200 + c], plain[size_t(199 - r) * 200 + c]);
+    }
+}
+
+TEST(RasterizeLayer, RowZeroIsTheTop) {
+  // A square above the origin (y > 0) lands in the upper half of the image.
+  const auto img = raster(make_slices({{rect(-1, 3, 1, 4)}}), 0, small_display());
+  EXPECT_EQ(on_pixels(img), 200u);
+  for (int r = 0; r < 200; ++r)
+    EXPECT_EQ(img[size_t(r) * 200 + 100], (r >= 60 && r < 70) ? 255 : 0) << r;
+}
+
+TEST(RasterizeLayer, OffsetShiftsByWholePixels) {
+  const Slices s = make_slices({{star(0.3, -0.2, 3, 7.5, 9)}});
+  PrinterProfile p = small_display();
+  const auto plain = raster(s, 0, p);
+  p.offset_x_mm = 0.3;   // 3 pixels right
+  p.offset_y_mm = -0.5;  // 5 pixels down
+  const auto shifted = raster(s, 0, p);
+  EXPECT_EQ(on_pixels(shifted), on_pixels(plain));
+  for (int r = 5; r < 200; ++r)
+    for (int c = 3; c < 200; ++c)
+      ASSERT_EQ(shifted[size_t(r) * 200 + c], plain[size_t(r - 5) * 200 + (c - 3)]);
+}
+
+TEST(RasterizeLayer, LoopStartAndContourOrderDoNotMatter) {
+  Loop outer = star(0.3, -0.2, 3, 7.5, 9), hole = star(0.1, 0.2, 1, 2, 5);
+  std::reverse(hole.pts.begin(), hole.pts.end());
+  Loop outer2 = outer, hole2 = hole;
+  std::rotate(outer2.pts.begin(), outer2.pts.begin() + 5, outer2.pts.end());
+  std::rotate(hole2.pts.begin(), hole2.pts.begin() + 3, hole2.pts.end());
+  const Slices a = make_slices({{outer, hole}}), b = make_slices({{hole2, outer2}});
+  for (bool aa : {false, true}) {
+    PrinterProfile p = small_display();
+    p.antialiasing = aa;
+    p.pixel_size_x_um = 73.1;  // nothing lines up with the grid
+    p.pixel_size_y_um = 81.7;
+    const auto ia = raster(a, 0, p), ib = raster(b, 0, p);
+    EXPECT_TRUE(ia == ib) << "antialiasing " << aa;
+    EXPECT_GT(std::count(ia.begin(), ia.end(), 255), 1000);
+  }
+}
+
+TEST(RasterizeLayer, AntialiasingGivesCoverage) {
+  PrinterProfile p = small_display();
+  p.antialiasing = true;
+  auto img = raster(make_slices({{rect(-5, -5, 5, 5)}}), 0, p);
+  EXPECT_EQ(std::accumulate(img.begin(), img.end(), size_t(0)), 255u * 100u * 100u);
+  // Shifted by half a pixel in x: the two edge columns are half covered.
+  img = raster(make_slices({{rect(-4.95, -5, 5.05, 5)}}), 0, p);
+  EXPECT_EQ(img[100 * 200 + 50], 128);
+  EXPECT_EQ(img[100 * 200 + 150], 128);
+  EXPECT_EQ(img[100 * 200 + 51], 255);
+  EXPECT_EQ(img[100 * 200 + 49], 0);
+}
+
+TEST(RasterizeLayer, RejectsBadInput) {
+  const Slices s = make_slices({{rect(-5, -5, 5, 5)}});
+  std::vector<uint8_t> img(200 * 200);
+  PrinterProfile p = small_display();
+  EXPECT_THROW(rasterize_layer(s, 1, p, img.data()), Error);
+  p.pixel_size_x_um = 0;
+  EXPECT_THROW(rasterize_layer(s, 0, p, img.data()), Error);
+}
+
+TEST_F(MaskFiles, FolderExportComparesEqualToItself) {
+  const Slices s = sample_stack();
+  const std::string out = dir + "/masks";
+  const MaskExportStats st = export_masks(s, small_display(), out);
+  EXPECT_EQ(st.layers, 3u);
+  EXPECT_EQ(listing(), std::vector<std::string>{"masks"});
+  std::vector<std::string> files;
+  for (const auto& e : fs::directory_iterator(out)) files.push_back(e.path().filename().string());
+  std::sort(files.begin(), files.end());
+  EXPECT_EQ(files, (std::vector<std::string>{"layer00000.png", "layer00001.png", "layer00002.png"}));
+  // The PNG holds exactly the rasterized layer.
+  MaskStack stack(out);
+  std::vector<uint8_t> bytes;
+  stack.read(1, bytes);
+  MaskImage img;
+  decode_mask_png(bytes.data(), bytes.size(), "layer1", img);
+  EXPECT_EQ(img.pixels, raster(s, 1, small_display()));
+
+  const StackComparison c = compare_mask_stacks(out, out, dir + "/report.csv");
+  ASSERT_EQ(c.layers.size(), 3u);
+  for (const auto& l : c.layers) {
+    EXPECT_EQ(l.similarity, 1.0);
+    EXPECT_EQ(l.differing_pixels, 0u);
+  }
+  EXPECT_EQ(c.min_similarity, 1.0);
+  EXPECT_EQ(c.differing_pixels, 0u);
+  EXPECT_EQ(read_text(dir + "/report.csv"),
+            "layer,similarity,differing_pixels\n0,1,0\n1,1,0\n2,1,0\n");
+}
+
+TEST_F(MaskFiles, OnePixelDifferenceGivesExactSimilarity) {
+  const Slices s = sample_stack();
+  const PrinterProfile p = small_display();
+  export_masks(s, p, dir + "/a");
+  export_masks(s, p, dir + "/b");
+  auto img = raster(s, 2, p);
+  img[123 * 200 + 45] ^= 255;
+  std::vector<uint8_t> png;
+  encode_mask_png(img.data(), 200, 200, 1, png);
+  std::ofstream(dir + "/b/layer00002.png", std::ios::binary)
+      .write(reinterpret_cast<const char*>(png.data()), std::streamsize(png.size()));
+  const StackComparison c = compare_mask_stacks(dir + "/a", dir + "/b", dir + "/r.csv");
+  EXPECT_EQ(c.differing_pixels, 1u);
+  EXPECT_EQ(c.worst_layer, 2u);
+  EXPECT_EQ(c.min_similarity, 1.0 - 1.0 / 40000.0);
+  EXPECT_EQ(c.layers[2].differing_pixels, 1u);
+  EXPECT_EQ(c.layers[0].similarity, 1.0);
+  EXPECT_EQ(read_text(dir + "/r.csv"),
+            "layer,similarity,differing_pixels\n0,1,0\n1,1,0\n2,0.999975,1\n");
+}
+
+TEST_F(MaskFiles, Sl1RoundTripMatchesFolder) {
+  const Slices s = sample_stack();
+  for (bool aa : {false, true}) {
+    PrinterProfile p = small_display();
+    p.antialiasing = aa;
+    p.mirror_x = true;
+    const std::string sl1 = dir + "/job.sl1", folder = dir + "/folder";
+    export_masks(s, p, sl1);
+    export_masks(s, p, folder);
+    const StackComparison c = compare_mask_stacks(sl1, folder, "");
+    ASSERT_EQ(c.layers.size(), 3u);
+    EXPECT_EQ(c.min_similarity, 1.0);
+    EXPECT_EQ(c.differing_pixels, 0u);
+
+    int err = 0;
+    zip_t* z = zip_open(sl1.c_str(), ZIP_RDONLY | ZIP_CHECKCONS, &err);
+    ASSERT_NE(z, nullptr);
+    EXPECT_GE(zip_name_locate(z, "config.ini", 0), 0);
+    EXPECT_GE(zip_name_locate(z, "prusaslicer.ini", 0), 0);
+    EXPECT_GE(zip_name_locate(z, "job00002.png", 0), 0);
+    zip_discard(z);
+    EXPECT_EQ(listing(), (std::vector<std::string>{"folder", "job.sl1"}));
+    fs::remove_all(folder);
+  }
+}
+
+TEST_F(MaskFiles, Sl1ConfigCarriesTheDisplay) {
+  PrinterProfile p = small_display();
+  p.mirror_y = true;
+  export_masks(sample_stack(), p, dir + "/x.sl1");
+  int err = 0;
+  zip_t* z = zip_open((dir + "/x.sl1").c_str(), ZIP_RDONLY, &err);
+  ASSERT_NE(z, nullptr);
+  auto entry = [&](const char* name) {
+    zip_stat_t st;
+    EXPECT_EQ(zip_stat(z, name, 0, &st), 0);
+    std::string text(st.size, '\0');
+    zip_file_t* f = zip_fopen(z, name, 0);
+    EXPECT_EQ(zip_fread(f, text.data(), st.size), zip_int64_t(st.size));
+    zip_fclose(f);
+    return text;
+  };
+  const std::string config = entry("config.ini"), slicer = entry("prusaslicer.ini");
+  zip_discard(z);
+  for (const char* line : {"jobDir = x\n", "numFast = 3\n", "numSlow = 0\n", "layerHeight = 0.1\n",
+                           "action = print\n", "printerModel = SL1\n"})
+    EXPECT_NE(config.find(line), std::string::npos) << line;
+  for (const char* line : {"display_pixels_x = 200\n", "display_pixels_y = 200\n",
+                           "display_width = 20\n", "display_height = 20\n",
+                           "display_orientation = landscape\n", "display_mirror_x = 0\n",
+                           "display_mirror_y = 1\n", "printer_technology = SLA\n"})
+    EXPECT_NE(slicer.find(line), std::string::npos) << line;
+}
+
+TEST_F(MaskFiles, ReexportIntoFolderReplacesOldLayers) {
+  const Slices s = sample_stack();
+  const std::string out = dir + "/m";
+  export_masks(make_slices({{rect(0, 0, 1, 1)}, {}, {}, {}, {}}), small_display(), out);
+  std::ofstream(out + "/notes.txt") << "kept";
+  export_masks(s, small_display(), out);
+  EXPECT_EQ(MaskStack(out).layers(), 3u);
+  EXPECT_TRUE(fs::exists(out + "/notes.txt"));
+  export_masks(s, small_display(), dir + "/ref");
+  EXPECT_EQ(compare_mask_stacks(out, dir + "/ref", "").differing_pixels, 0u);
+  EXPECT_EQ(listing(), (std::vector<std::string>{"m", "ref"}));
+}
+
+TEST_F(MaskFiles, MismatchedStacksAreErrors) {
+  const Slices s = sample_stack();
+  export_masks(s, small_display(), dir + "/a");
+  export_masks(make_slices({{rect(-5, -5, 5, 5)}, {rect(-5, -5, 5, 5)}}), small_display(),
+               dir + "/two");
+  PrinterProfile wide = small_display();
+  wide.width_px = 240;
+  export_masks(s, wide, dir + "/wide.sl1");
+  try {
+    compare_mask_stacks(dir + "/a", dir + "/two", "");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("layer count"), std::string::npos) << e.what();
+  }
+  try {
+    compare_mask_stacks(dir + "/a", dir + "/wide.sl1", dir + "/never.csv");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("200x200"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("240x200"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir + "/never.csv"));
+  EXPECT_THROW(compare_mask_stacks(dir + "/a", dir + "/missing", ""), Error);
+  EXPECT_THROW(compare_mask_stacks(dir + "/a", dir + "/a/layer00000.png", ""), Error);
+}
+
+TEST_F(MaskFiles, CorruptAndMissingImagesAreErrors) {
+  export_masks(sample_stack(), small_display(), dir + "/a");
+  export_masks(sample_stack(), small_display(), dir + "/b");
+  std::ofstream(dir + "/b/layer00001.png", std::ios::binary) << "not a png at all";
+  try {
+    compare_mask_stacks(dir + "/a", dir + "/b", "");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("layer00001.png"), std::string::npos) << e.what();
+  }
+  fs::remove(dir + "/b/layer00001.png");
+  try {
+    compare_mask_stacks(dir + "/a", dir + "/b", "");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("missing"), std::string::npos) << e.what();
+  }
+  // A damaged .sl1: flip a byte inside the stored PNG data; the entry's CRC catches it.
+  export_masks(sample_stack(), small_display(), dir + "/c.sl1");
+  std::string zip = read_text(dir + "/c.sl1");
+  const size_t at = zip.find("IDAT");
+  ASSERT_NE(at, std::string::npos);
+  zip[at + 10] ^= 0x55;
+  std::ofstream(dir + "/c.sl1", std::ios::binary) << zip;
+  EXPECT_THROW(compare_mask_stacks(dir + "/a", dir + "/c.sl1", ""), Error);
+}
+
+TEST_F(MaskFiles, FailedOrCancelledExportLeavesNothing) {
+  const Slices s = sample_stack();
+  EXPECT_THROW(export_masks(s, small_display(), dir + "/no/such/folder/m"), Error);
+  EXPECT_THROW(export_masks(s, small_display(), dir + "/no/such/folder/m.sl1"), Error);
+  int calls = 0, cancel_at = 1;
+  const Progress cancel = [&](double, const char*) { return ++calls < cancel_at; };
+  EXPECT_THROW(export_masks(s, small_display(), dir + "/m", cancel), Cancelled);
+  calls = 0;
+  EXPECT_THROW(export_masks(s, small_display(), dir + "/m.sl1", cancel), Cancelled);
+  EXPECT_TRUE(listing().empty());
+  // Cancelled in the middle: the .sl1 asks per batch of layers, the folder per layer done on
+  // the calling thread.
+  std::vector<Layer> many(300, Layer{star(0.3, -0.2, 3, 7.5, 9)});
+  const Slices big = make_slices(many);
+  cancel_at = 3;
+  calls = 0;
+  EXPECT_THROW(export_masks(big, small_display(), dir + "/m", cancel), Cancelled);
+  calls = 0;
+  EXPECT_THROW(export_masks(big, small_display(), dir + "/m.sl1", cancel), Cancelled);
+  EXPECT_TRUE(listing().empty());
+  // An existing archive survives a failed export untouched.
+  export_masks(s, small_display(), dir + "/keep.sl1");
+  const std::string before = read_text(dir + "/keep.sl1");
+  calls = 0;
+  EXPECT_THROW(export_masks(big, small_display(), dir + "/keep.sl1", cancel), Cancelled);
+  EXPECT_EQ(read_text(dir + "/keep.sl1"), before);
+  EXPECT_EQ(listing(), std::vector<std::string>{"keep.sl1"});
+  // A file where the mask folder should go.
+  std::ofstream(dir + "/file") << "x";
+  EXPECT_THROW(export_masks(s, small_display(), dir + "/file"), Error);
+}

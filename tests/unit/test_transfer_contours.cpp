@@ -1,0 +1,161 @@
+// Exact transfer must equal direct slicing of every family member, layer by layer.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "family.h"
+#include "sections.h"
+#include "slicereuse/error.h"
+#include "slicereuse/slice_layers.h"
+#include "slicereuse/transfer_contours.h"
+
+using namespace slicereuse;
+
+namespace {
+
+Slices slice(const Mesh& m, double h) {
+  SliceOptions o;
+  o.thickness = h;
+  return slice_layers(m, o);
+}
+
+struct FamilyCase {
+  std::string shape;
+  bool z_change;
+};
+
+class TransferFamily : public ::testing::TestWithParam<FamilyCase> {};
+
+}  // namespace
+
+TEST_P(TransferFamily, ExactTransferEqualsDirectSlicing) {
+  test::FamilyOptions o;
+  o.shape = GetParam().shape;
+  o.faces = 6000;
+  o.height = 10;
+  o.seed = 7;
+  o.z_change = GetParam().z_change;
+  const Mesh base = test::make_family_base(o);
+  const Slices source = slice(base, 0.05);
+  size_t resliced = 0, other_heights = 0;
+  for (int i = 1; i <= 4; ++i) {
+    const Mesh member = test::make_family_member(base, o, i);
+    TransferStats stats;
+    const Slices moved = transfer_contours(source, member, TransferMode::Exact, &stats);
+    SliceOptions same_plate;
+    same_plate.thickness = source.thickness;
+    same_plate.z_start = source.z_start;
+    const Slices direct = slice_layers(member, same_plate);
+    EXPECT_EQ(stats.transferred_layers + stats.resliced_layers, direct.layers());
+    other_heights += direct.layers() != source.layers();
+    resliced += stats.resliced_layers;
+    ASSERT_TRUE(moved.has_encoding());
+    EXPECT_EQ(moved.fingerprint, source.fingerprint);
+    EXPECT_EQ(moved.points(), direct.points()) << "member " << i;
+    test::expect_same_sections(moved, direct);
+  }
+  if (GetParam().z_change) {
+    EXPECT_GT(resliced, 0u);
+    EXPECT_GT(other_heights, 0u);  // taller and shorter members exercise the top layers
+  } else {
+    EXPECT_EQ(resliced, 0u);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Shapes, TransferFamily,
+                         ::testing::Values(FamilyCase{"arch", false}, FamilyCase{"ear", false},
+                                           FamilyCase{"handle", false}, FamilyCase{"torus", false},
+                                           FamilyCase{"arch", true}, FamilyCase{"ear", true},
+                                           FamilyCase{"handle", true}),
+                         [](const auto& info) {
+                           return info.param.shape + (info.param.z_change ? "_z_change" : "");
+                         });
+
+TEST(TransferContours, BarycentricEqualsExactWhenZIsUnchanged) {
+  test::FamilyOptions o;
+  o.faces = 5000;
+  o.height = 8;
+  const Mesh base = test::make_family_base(o);
+  const Mesh member = test::make_family_member(base, o, 2);
+  const Slices source = slice(base, 0.05);
+  TransferStats st;
+  const Slices bary = transfer_contours(source, member, TransferMode::Barycentric, &st);
+  const Slices exact = transfer_contours(source, member, TransferMode::Exact);
+  EXPECT_LT(st.max_plane_deviation, 1e-12);
+  ASSERT_EQ(bary.xyz.size(), exact.xyz.size());
+  for (size_t i = 0; i < bary.xyz.size(); ++i) ASSERT_NEAR(bary.xyz[i], exact.xyz[i], 1e-12) << i;
+}
+
+TEST(TransferContours, BarycentricReportsPointsLeavingThePlane) {
+  test::FamilyOptions o;
+  o.faces = 5000;
+  o.height = 8;
+  o.z_change = true;
+  const Mesh base = test::make_family_base(o);
+  const Mesh member = test::make_family_member(base, o, 1);
+  TransferStats st;
+  const Slices bary = transfer_contours(slice(base, 0.05), member, TransferMode::Barycentric, &st);
+  double worst = 0;
+  for (size_t k = 0; k < bary.layers(); ++k)
+    for (size_t p = bary.contour_begin[bary.layer_begin[k]]; p < bary.contour_begin[bary.layer_begin[k + 1]]; ++p)
+      worst = std::max(worst, std::abs(bary.xyz[3 * p + 2] - bary.layer_z[k]));
+  EXPECT_GT(worst, 1e-3);
+  EXPECT_EQ(st.max_plane_deviation, worst);
+}
+
+TEST(TransferContours, RefusesAMeshWithOtherFaces) {
+  test::FamilyOptions o;
+  o.faces = 2000;
+  const Mesh base = test::make_family_base(o);
+  const Slices source = slice(base, 0.1);
+  Mesh other = base;
+  std::swap(other.F[0], other.F[1]);
+  try {
+    transfer_contours(source, other, TransferMode::Exact);
+    FAIL() << "a target with other faces was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("faces differ"), std::string::npos) << e.what();
+  }
+  other = base;
+  other.F.resize(other.F.size() - 3);
+  EXPECT_THROW(transfer_contours(source, other, TransferMode::Exact), Error);
+  Slices contours_only = source;
+  contours_only.face.clear();
+  EXPECT_THROW(transfer_contours(contours_only, base, TransferMode::Exact), Error);
+}
+
+TEST(TransferContours, LocalZEditReslicesOnlyTheLayersItTouches) {
+  test::FamilyOptions o;
+  o.shape = "ear";
+  o.faces = 6000;
+  o.height = 10;
+  const Mesh base = test::make_family_base(o);
+  const double h = 0.05;
+  const Slices source = slice(base, h);
+  Mesh member = test::make_family_member(base, o, 3);
+  // Raise the top vertex by 3.2 layers (the part grows by 3 or 4 layers) and nudge one vertex
+  // at mid height: only the layers near those vertices may change.
+  size_t top = 0, mid = 0;
+  for (size_t v = 0; v < member.vertices(); ++v) {
+    if (member.V[3 * v + 2] > member.V[3 * top + 2]) top = v;
+    if (std::abs(member.V[3 * v + 2] - 5) < std::abs(member.V[3 * mid + 2] - 5)) mid = v;
+  }
+  member.V[3 * top + 2] += 3.2 * h;
+  member.V[3 * mid + 2] += 0.7 * h;
+  TransferStats stats;
+  const Slices moved = transfer_contours(source, member, TransferMode::Exact, &stats);
+  SliceOptions same_plate;
+  same_plate.thickness = h;
+  same_plate.z_start = source.z_start;
+  const Slices direct = slice_layers(member, same_plate);
+  EXPECT_GE(direct.layers(), source.layers() + 3);
+  EXPECT_GT(stats.resliced_layers, direct.layers() - source.layers());
+  EXPECT_LT(stats.resliced_layers, 30u);
+  EXPECT_EQ(stats.transferred_layers + stats.resliced_layers, direct.layers());
+  test::expect_same_sections(moved, direct);
+}
