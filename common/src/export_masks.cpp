@@ -59,11 +59,12 @@ double used_material_ml(const Slices& s) {
   return mm3 / 1000;
 }
 
-void encode_layer(const Slices& s, size_t k, const PrinterProfile& p, std::vector<uint8_t>& png) {
+void encode_layer(const Slices& s, size_t k, const PrinterProfile& p, int bits,
+                  std::vector<uint8_t>& png) {
   thread_local Buffer<uint8_t> image;
   image.resize(size_t(p.width_px) * size_t(p.height_px));
   rasterize_layer(s, k, p, image.data());
-  encode_mask_png(image.data(), p.width_px, p.height_px, p.antialiasing ? 8 : 1, png);
+  encode_mask_png(image.data(), p.width_px, p.height_px, bits, png);
 }
 
 // A fresh folder next to the target that collects the images; removed with its content unless
@@ -121,7 +122,7 @@ void export_folder(const Slices& s, const PrinterProfile& p, std::string folder,
       s.layers(),
       [&](size_t k) {
         thread_local std::vector<uint8_t> png;
-        encode_layer(s, k, p, png);
+        encode_layer(s, k, p, p.antialiasing ? 8 : 1, png);
         AtomicFile file(staging.path() + "/" + mask_layer_file_name(FOLDER_PREFIX, k));
         file.write(png.data(), png.size());
         file.commit();
@@ -133,6 +134,8 @@ void export_folder(const Slices& s, const PrinterProfile& p, std::string folder,
 }
 
 // Encodes layers in parallel batches as write_sl1 asks for them in order, holding one batch.
+// Always 8-bit: PrusaSlicer's SL1 import decodes only 8-bit greyscale PNGs (1-bit layers would
+// import as empty).
 class BatchEncoder {
  public:
   BatchEncoder(const Slices& s, const PrinterProfile& p, const Progress& progress)
@@ -143,7 +146,7 @@ class BatchEncoder {
       report_progress(progress_, double(k) / double(s_.layers()), PHASE);
       first_ = k;
       count_ = std::min(pngs_.size(), s_.layers() - k);
-      parallel_blocks(count_, [&](size_t i) { encode_layer(s_, first_ + i, p_, pngs_[i]); }, {},
+      parallel_blocks(count_, [&](size_t i) { encode_layer(s_, first_ + i, p_, 8, pngs_[i]); }, {},
                       PHASE);
     }
     return pngs_[k - first_];

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
 #include <string>
 
 #include "family.h"
@@ -47,6 +49,95 @@ double min_normal_cosine(const Mesh& base, const Mesh& m) {
   return worst;
 }
 
+// Pairs of faces sharing no vertex where an edge of one pierces the other (segment-triangle
+// test, faces binned in a uniform grid). A valid member has none.
+size_t self_intersections(const Mesh& m) {
+  const double* V = m.V.data();
+  auto P = [&](uint32_t v) { return V + 3 * size_t(v); };
+  double lo[3], hi[3], edge = 0;
+  for (int a = 0; a < 3; ++a) lo[a] = hi[a] = V[a];
+  for (size_t i = 0; i < m.V.size(); i += 3)
+    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], V[i + a]), hi[a] = std::max(hi[a], V[i + a]);
+  for (size_t f = 0; f < m.faces(); ++f) {
+    const double* a = P(m.F[3 * f]);
+    const double* b = P(m.F[3 * f + 1]);
+    edge = std::max({edge, std::fabs(a[0] - b[0]), std::fabs(a[1] - b[1]), std::fabs(a[2] - b[2])});
+  }
+  const double cell = 2 * edge;
+  int n[3];
+  for (int a = 0; a < 3; ++a) n[a] = int((hi[a] - lo[a]) / cell) + 1;
+  std::vector<std::vector<uint32_t>> grid(size_t(n[0]) * n[1] * n[2]);
+  for (size_t f = 0; f < m.faces(); ++f) {
+    int c0[3], c1[3];
+    for (int a = 0; a < 3; ++a) {
+      double l = 1e300, h = -1e300;
+      for (int k = 0; k < 3; ++k) l = std::min(l, P(m.F[3 * f + k])[a]), h = std::max(h, P(m.F[3 * f + k])[a]);
+      c0[a] = int((l - lo[a]) / cell), c1[a] = int((h - lo[a]) / cell);
+    }
+    for (int i = c0[0]; i <= c1[0]; ++i)
+      for (int j = c0[1]; j <= c1[1]; ++j)
+        for (int k = c0[2]; k <= c1[2]; ++k) grid[(size_t(i) * n[1] + j) * n[2] + k].push_back(uint32_t(f));
+  }
+  // Edge pq strictly crosses triangle abc (Moller-Trumbore).
+  auto pierces = [&](const double* p, const double* q, const uint32_t* t) {
+    const double *a = P(t[0]), *b = P(t[1]), *c = P(t[2]);
+    const double d[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+    const double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double h[3] = {d[1] * e2[2] - d[2] * e2[1], d[2] * e2[0] - d[0] * e2[2], d[0] * e2[1] - d[1] * e2[0]};
+    const double det = e1[0] * h[0] + e1[1] * h[1] + e1[2] * h[2];
+    if (std::fabs(det) < 1e-300) return false;
+    const double s[3] = {p[0] - a[0], p[1] - a[1], p[2] - a[2]};
+    const double u = (s[0] * h[0] + s[1] * h[1] + s[2] * h[2]) / det;
+    const double qv[3] = {s[1] * e1[2] - s[2] * e1[1], s[2] * e1[0] - s[0] * e1[2], s[0] * e1[1] - s[1] * e1[0]};
+    const double v = (d[0] * qv[0] + d[1] * qv[1] + d[2] * qv[2]) / det;
+    const double t_ = (e2[0] * qv[0] + e2[1] * qv[1] + e2[2] * qv[2]) / det;
+    return u > 0 && v > 0 && u + v < 1 && t_ > 0 && t_ < 1;
+  };
+  size_t hits = 0;
+  for (const auto& bin : grid) {
+    for (size_t i = 0; i < bin.size(); ++i) {
+      for (size_t j = i + 1; j < bin.size(); ++j) {
+        const uint32_t* A = &m.F[3 * size_t(bin[i])];
+        const uint32_t* B = &m.F[3 * size_t(bin[j])];
+        bool shared = false;
+        for (int x = 0; x < 3; ++x)
+          for (int y = 0; y < 3; ++y) shared |= A[x] == B[y];
+        if (shared) continue;
+        bool cross = false;
+        for (int k = 0; k < 3 && !cross; ++k)
+          cross = pierces(P(A[k]), P(A[(k + 1) % 3]), B) || pierces(P(B[k]), P(B[(k + 1) % 3]), A);
+        hits += cross;
+      }
+    }
+  }
+  return hits;
+}
+
+// Number of closed loops in the section of a closed mesh by the plane z: faces crossing the
+// plane, joined through the crossing edges they share (a vertex at z counts as above).
+size_t section_loops(const Mesh& m, double z) {
+  std::vector<uint32_t> parent(m.faces());
+  for (size_t f = 0; f < parent.size(); ++f) parent[f] = uint32_t(f);
+  auto root = [&](uint32_t f) {
+    while (parent[f] != f) f = parent[f] = parent[parent[f]];
+    return f;
+  };
+  std::map<std::pair<uint32_t, uint32_t>, uint32_t> first_face;
+  std::set<uint32_t> crossing;
+  for (size_t f = 0; f < m.faces(); ++f) {
+    for (int j = 0; j < 3; ++j) {
+      uint32_t a = m.F[3 * f + j], b = m.F[3 * f + (j + 1) % 3];
+      if ((m.V[3 * size_t(a) + 2] < z) == (m.V[3 * size_t(b) + 2] < z)) continue;
+      crossing.insert(uint32_t(f));
+      auto [it, fresh] = first_face.try_emplace({std::min(a, b), std::max(a, b)}, uint32_t(f));
+      if (!fresh) parent[root(uint32_t(f))] = root(it->second);
+    }
+  }
+  std::set<uint32_t> roots;
+  for (uint32_t f : crossing) roots.insert(root(f));
+  return roots.size();
+}
+
 }  // namespace
 
 class FamilyShape : public ::testing::TestWithParam<std::string> {};
@@ -75,6 +166,7 @@ TEST_P(FamilyShape, MembersAreClosedManifoldsSharingFaces) {
       EXPECT_EQ(long(m.vertices()) - long(c.edges) + long(m.faces()), euler);
       EXPECT_GT(signed_volume(m), 0);
       EXPECT_GT(min_normal_cosine(base, m), 0);
+      EXPECT_EQ(self_intersections(m), 0u);
       const Range z = z_range(m);
       EXPECT_EQ(z.lo, 0.0);
       if (!z_change) {
@@ -108,6 +200,33 @@ TEST(Family, BaseVolumesOfBoxAndSphereMatchAnalytic) {
   o.shape = "sphere";
   const double ball = 4.0 / 3 * 3.14159265358979323846 * 125;
   EXPECT_NEAR(signed_volume(make_family_base(o)), ball, 0.002 * ball);
+}
+
+TEST(Family, SectionsHaveTheIntendedLoops) {
+  // Mid-height: arch wall ring, hollow ear and the two handle legs give 2 loops, box 1;
+  // near the top the handle and the arch's solid crown give 1.
+  const struct { const char* shape; double z; size_t loops; } cases[] = {
+      {"arch", 0.4, 2}, {"arch", 0.97, 1}, {"ear", 0.5, 2}, {"handle", 0.5, 2},
+      {"handle", 0.97, 1}, {"box", 0.5, 1}, {"sphere", 0.5, 1}, {"torus", 0.5, 2}};
+  for (const auto& c : cases) {
+    FamilyOptions o;
+    o.shape = c.shape;
+    o.faces = 6000;
+    o.height = 10;
+    o.z_change = true;
+    const Mesh base = make_family_base(o);
+    for (int i = 0; i < 3; ++i)
+      EXPECT_EQ(section_loops(make_family_member(base, o, i), c.z * 10), c.loops) << c.shape << " z " << c.z;
+  }
+}
+
+TEST(Family, SelfIntersectionCheckSeesOverlappingBoxes) {
+  Mesh a = make_box(0, 0, 0, 2, 2, 2, 2);
+  const Mesh b = make_box(1, 1, 1, 3, 3, 3, 2);
+  const uint32_t offset = uint32_t(a.vertices());
+  a.V.insert(a.V.end(), b.V.begin(), b.V.end());
+  for (uint32_t v : b.F) a.F.push_back(v + offset);
+  EXPECT_GT(self_intersections(a), 0u);
 }
 
 TEST(Family, DeterministicInSeed) {

@@ -258,6 +258,8 @@ TEST_F(MaskFiles, FolderExportComparesEqualToItself) {
   MaskStack stack(out);
   std::vector<uint8_t> bytes;
   stack.read(1, bytes);
+  ASSERT_GT(bytes.size(), 25u);
+  EXPECT_EQ(bytes[24], 1) << "binary masks in a folder are 1-bit PNGs";
   MaskImage img;
   decode_mask_png(bytes.data(), bytes.size(), "layer1", img);
   EXPECT_EQ(img.pixels, raster(s, 1, small_display()));
@@ -308,6 +310,13 @@ TEST_F(MaskFiles, Sl1RoundTripMatchesFolder) {
     ASSERT_EQ(c.layers.size(), 3u);
     EXPECT_EQ(c.min_similarity, 1.0);
     EXPECT_EQ(c.differing_pixels, 0u);
+    // PrusaSlicer's SL1 import reads only 8-bit greyscale layers.
+    MaskStack archive(sl1);
+    std::vector<uint8_t> bytes;
+    archive.read(2, bytes);
+    ASSERT_GT(bytes.size(), 25u);
+    EXPECT_EQ(bytes[24], 8);
+    EXPECT_EQ(bytes[25], 0);
 
     int err = 0;
     zip_t* z = zip_open(sl1.c_str(), ZIP_RDONLY | ZIP_CHECKCONS, &err);
