@@ -15,6 +15,7 @@ import sys
 import slicereuse_pymeshlab as sr
 
 KEYS = ("mesh", "layers", "points", "resliced_layers", "transfer_seconds", "direct_seconds",
+        "transfer_total_seconds", "direct_total_seconds",
         "min_similarity")
 
 

@@ -50,6 +50,11 @@ struct ParamValues {
   const std::string& text(const std::string& name) const;
 };
 
+// Both MeshLab generations keep Float parameters as float, so 0.1 typed by the user arrives as
+// 0.100000001490116. The shortest decimal that rounds to that float is what the user typed;
+// shims read Float parameters through this, so both hosts slice on the planes the user meant.
+double float_as_typed(float value);
+
 // What a filter needs from the host; implemented by each shim.
 class Host {
  public:

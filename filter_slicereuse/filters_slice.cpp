@@ -65,7 +65,9 @@ Result run_slice(const ParamValues& values, Host& host) {
   if (mesh.faces() == 0) throw Error("the current mesh has no faces; there is nothing to slice");
 
   const Progress progress = host.progress();
+  const auto slicing_start = std::chrono::steady_clock::now();
   const Slices s = slice_layers(mesh, options, sub_progress(progress, 0, 0.6));
+  const double slicing_seconds = seconds_since(slicing_start);
   StagedOutputs outputs;
   if (!contour_file.empty())
     write_contour_file(outputs.stage(contour_file), s, file_format, sub_progress(progress, 0.6, 0.8));
@@ -81,12 +83,15 @@ Result run_slice(const ParamValues& values, Host& host) {
   }
 
   const double seconds = seconds_since(start);
-  host.log(format("Slice Mesh with Encoding: %zu layers, %zu contours, %zu points, %zu open contours, %.3f s",
-                  s.layers(), s.contours(), s.points(), s.open_contours(), seconds));
+  host.log(format("Slice Mesh with Encoding: %zu layers, %zu contours, %zu points, %zu open contours, "
+                  "%.3f s (slicing %.3f s)",
+                  s.layers(), s.contours(), s.points(), s.open_contours(), seconds, slicing_seconds));
   return {{"layers", int64_t(s.layers())},
           {"contours", int64_t(s.contours())},
           {"points", int64_t(s.points())},
           {"open_contours", int64_t(s.open_contours())},
+          {"z_start", s.z_start},
+          {"slicing_seconds", slicing_seconds},
           {"seconds", seconds}};
 }
 

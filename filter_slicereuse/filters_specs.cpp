@@ -1,4 +1,6 @@
 // The four filters' names, descriptions and parameters (see filter_api.h), plus ParamValues.
+#include <charconv>
+
 #include "filter_api.h"
 #include "slicereuse/error.h"
 
@@ -217,6 +219,14 @@ const std::string& ParamValues::text(const std::string& name) const {
   auto it = texts.find(name);
   if (it == texts.end()) throw Error("missing text parameter '" + name + "'");
   return it->second;
+}
+
+double float_as_typed(float value) {
+  char buf[32];
+  const auto end = std::to_chars(buf, buf + sizeof buf, value).ptr;
+  double d = value;
+  std::from_chars(buf, end, d);
+  return d;
 }
 
 }  // namespace slicereuse::plugin

@@ -36,7 +36,9 @@ Result run_transfer(const ParamValues& values, Host& host) {
   const Slices encoding = read_encoding_file(encoding_file, sub_progress(progress, 0, 0.2));
   const Mesh target = host.mesh_at(int(values.number("target_mesh")));
   TransferStats stats;
+  const auto transfer_start = std::chrono::steady_clock::now();
   const Slices s = transfer_contours(encoding, target, mode, &stats, sub_progress(progress, 0.2, 0.6));
+  const double transfer_seconds = seconds_since(transfer_start);
   StagedOutputs outputs;
   if (!contour_file.empty())
     write_contour_file(outputs.stage(contour_file), s, format_for(contour_file),
@@ -51,12 +53,13 @@ Result run_transfer(const ParamValues& values, Host& host) {
                             s.points(), s.layers(), stats.transferred_layers, stats.resliced_layers);
   if (mode == TransferMode::Barycentric)
     line += format(", max plane deviation %.3g mm", stats.max_plane_deviation);
-  host.log(line + format(", %.3f s", seconds));
+  host.log(line + format(", %.3f s (transfer %.3f s)", seconds, transfer_seconds));
   return {{"points", int64_t(s.points())},
           {"layers", int64_t(s.layers())},
           {"transferred_layers", int64_t(stats.transferred_layers)},
           {"resliced_layers", int64_t(stats.resliced_layers)},
           {"max_plane_deviation", stats.max_plane_deviation},
+          {"transfer_seconds", transfer_seconds},
           {"seconds", seconds}};
 }
 

@@ -6,7 +6,6 @@
 #include <common/interfaces.h>
 
 #include <algorithm>
-#include <charconv>
 #include <exception>
 
 #include "filter_api.h"
@@ -19,16 +18,6 @@ using namespace slicereuse::plugin;
 namespace {
 
 QString qs(const std::string& s) { return QString::fromStdString(s); }
-
-// 2020.09 keeps Float parameters as float; take the shortest decimal that reads back as the
-// same float, so 0.1 in the dialog or the .mlx becomes the double 0.1, not 0.100000001490116.
-double to_double(float f) {
-  char buf[32];
-  const auto end = std::to_chars(buf, buf + sizeof buf, f).ptr;
-  double d = f;
-  std::from_chars(buf, end, d);
-  return d;
-}
 
 const char* rich_type(ParamType type) {
   switch (type) {
@@ -98,7 +87,7 @@ ParamValues read_values(const FilterSpec& spec, const MeshDocument& md, const Ri
     if (!has_type(v, p.type))
       throw Error("parameter '" + p.name + "' has the wrong type; it must be a " + rich_type(p.type));
     switch (p.type) {
-      case ParamType::Float: values.numbers[p.name] = to_double(v.getFloat()); break;
+      case ParamType::Float: values.numbers[p.name] = float_as_typed(v.getFloat()); break;
       case ParamType::Int: values.numbers[p.name] = v.getInt(); break;
       case ParamType::Bool: values.numbers[p.name] = v.getBool() ? 1 : 0; break;
       case ParamType::Enum: values.numbers[p.name] = v.getEnum(); break;

@@ -1,7 +1,6 @@
 // MeshLab 2025.07 shim (pymeshlab 2025.7, double scalar): turns filter_specs() into a
 // FilterPlugin, reads RichParameterList into ParamValues, implements Host over MeshDocument and
 // maps the core's errors to MLException, which pymeshlab raises as PyMeshLabException.
-#include <charconv>
 #include <new>
 
 #include <common/plugins/interfaces/filter_plugin.h>
@@ -14,17 +13,6 @@ namespace slicereuse::plugin {
 namespace {
 
 QString qstr(const std::string& s) { return QString::fromStdString(s); }
-
-// RichFloat stores a float, so 0.1 typed in Python arrives as 0.100000001490116. The shortest
-// decimal that rounds to that float is what the user typed; parsing it as double gives the
-// layer planes the user meant (and the same on the float 2020.09 host).
-double typed_value(Scalarm v) {
-  char buf[32];
-  const auto end = std::to_chars(buf, buf + sizeof buf, float(v)).ptr;
-  double d = double(v);
-  std::from_chars(buf, end, d);
-  return d;
-}
 
 const FilterSpec& spec_of(MeshLabPlugin::ActionIDType id) {
   for (const FilterSpec& f : filter_specs())
@@ -66,7 +54,7 @@ ParamValues read_values(const FilterSpec& f, const RichParameterList& par) {
   for (const ParamSpec& p : f.params) {
     const QString name = qstr(p.name);
     switch (p.type) {
-      case ParamType::Float: v.numbers[p.name] = typed_value(par.getFloat(name)); break;
+      case ParamType::Float: v.numbers[p.name] = float_as_typed(float(par.getFloat(name))); break;
       case ParamType::Int: v.numbers[p.name] = par.getInt(name); break;
       case ParamType::Bool: v.numbers[p.name] = par.getBool(name) ? 1 : 0; break;
       case ParamType::Enum: v.numbers[p.name] = par.getEnum(name); break;

@@ -76,7 +76,9 @@ size_t build_edges(const Slices& s, size_t k, const PrinterProfile& p, int scale
         std::swap(x0, x1);
         dir = -1;
       }
-      if (!(y0 < y1)) continue;  // horizontal (or NaN): crosses no sample row
+      // Horizontal edges cross no sample row; non-finite ones (only possible when the caller
+      // skipped validate_slices) are dropped rather than fed to the sort.
+      if (!(y0 < y1) || !std::isfinite(y1 - y0) || !std::isfinite(x1 - x0)) continue;
       const int r0 = first_sample_at_or_after(y0, rows), r1 = first_sample_at_or_after(y1, rows);
       if (r0 >= r1) continue;
       w.edges.push_back({y0, x0, y1, x1, r0, r1, dir});

@@ -10,7 +10,7 @@ from conftest import ROOT, THICKNESS
 
 SHAPES = ["arch", "ear", "handle", "box", "sphere", "torus"]
 KEYS = {"mesh", "layers", "points", "resliced_layers", "transfer_seconds", "direct_seconds",
-        "min_similarity"}
+        "transfer_total_seconds", "direct_total_seconds", "min_similarity"}
 
 
 @pytest.mark.parametrize("z_change", [False, True], ids=["xy", "z"])

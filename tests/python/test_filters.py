@@ -20,7 +20,9 @@ def sliced(pymeshlab, make_family, tmp_path):
 
 def test_slice_result(sliced):
     ms, _, _, r, tmp, _ = sliced
-    assert set(r) == {"layers", "contours", "points", "open_contours", "seconds"}
+    assert set(r) == {"layers", "contours", "points", "open_contours", "z_start", "slicing_seconds",
+                      "seconds"}
+    assert r["z_start"] == 0.0 and 0 <= r["slicing_seconds"] <= r["seconds"]
     assert all(isinstance(r[k], int) for k in ("layers", "contours", "points", "open_contours"))
     assert isinstance(r["seconds"], float)
     header, layers = read_text_contours(tmp / "s.ctr")
@@ -41,7 +43,8 @@ def test_transfer_result_equals_direct(sliced):
                         target_mesh=target, contour_file=str(tmp / "t.ctr"),
                         target_encoding_file=str(tmp / "t.enc"))
     assert set(t) == {"points", "layers", "transferred_layers", "resliced_layers",
-                      "max_plane_deviation", "seconds"}
+                      "max_plane_deviation", "transfer_seconds", "seconds"}
+    assert 0 <= t["transfer_seconds"] <= t["seconds"]
     assert t["transferred_layers"] + t["resliced_layers"] == t["layers"] == 80
     assert t["max_plane_deviation"] == 0.0
     ms.set_current_mesh(target)

@@ -244,6 +244,25 @@ TEST(RasterizeLayer, RejectsBadInput) {
   EXPECT_THROW(rasterize_layer(s, 0, p, img.data()), Error);
 }
 
+TEST(MaskPng, RoundTripsOneAndEightBit) {
+  // 13 columns: one full byte and a 5-pixel tail per row in the 1-bit encoding.
+  const int w = 13, h = 5;
+  std::vector<uint8_t> img(w * h);
+  for (int i = 0; i < w * h; ++i) img[size_t(i)] = uint8_t((i * 37 + i / 3) % 256);
+  std::vector<uint8_t> png;
+  MaskImage back;
+  encode_mask_png(img.data(), w, h, 8, png);
+  decode_mask_png(png.data(), png.size(), "8-bit", back);
+  EXPECT_EQ(back.width, w);
+  EXPECT_EQ(back.height, h);
+  EXPECT_EQ(back.pixels, img);
+  encode_mask_png(img.data(), w, h, 1, png);
+  EXPECT_EQ(png[24], 1);
+  decode_mask_png(png.data(), png.size(), "1-bit", back);
+  for (size_t i = 0; i < img.size(); ++i) ASSERT_EQ(back.pixels[i], img[i] >= 128 ? 255 : 0) << i;
+  EXPECT_THROW(decode_mask_png(png.data(), png.size() / 2, "half", back), Error);
+}
+
 TEST_F(MaskFiles, FolderExportComparesEqualToItself) {
   const Slices s = sample_stack();
   const std::string out = dir + "/masks";
