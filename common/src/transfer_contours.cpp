@@ -38,6 +38,17 @@ void for_each_layer(size_t L, const Progress& progress, const std::function<void
       progress, "transferring");
 }
 
+// Slices with enc's layers and contours, and room for their points.
+Slices same_layout(const Slices& enc) {
+  Slices out;
+  out.layer_z = enc.layer_z;
+  out.layer_begin = enc.layer_begin;
+  out.contour_begin = enc.contour_begin;
+  out.contour_open = enc.contour_open;
+  out.xyz.resize(3 * enc.points());
+  return out;
+}
+
 // The planes direct slicing of the target uses: the source's (every member sits on the same
 // build plate) up to the target's own top, so a taller member gets its extra layers and a
 // shorter one no empty ones.
@@ -126,12 +137,7 @@ Slices transfer_exact(const Slices& enc, const Mesh& target, TransferStats& st, 
     ok[k] = counts[k] == end_point(enc, k) - first_point(enc, k);
     for (size_t c = enc.layer_begin[k]; c < enc.layer_begin[k + 1]; ++c) ok[k] &= !enc.contour_open[c];
   }
-  Slices moved;
-  moved.layer_z = enc.layer_z;
-  moved.layer_begin = enc.layer_begin;
-  moved.contour_begin = enc.contour_begin;
-  moved.contour_open = enc.contour_open;
-  moved.xyz.resize(3 * enc.points());
+  Slices moved = same_layout(enc);
   moved.face.resize(enc.points());
   moved.edge.resize(enc.points());
   moved.t.resize(enc.points());
@@ -165,12 +171,7 @@ Slices transfer_exact(const Slices& enc, const Mesh& target, TransferStats& st, 
 }
 
 Slices transfer_barycentric(const Slices& enc, const Mesh& target, TransferStats& st, const Progress& progress) {
-  Slices out;
-  out.layer_z = enc.layer_z;
-  out.layer_begin = enc.layer_begin;
-  out.contour_begin = enc.contour_begin;
-  out.contour_open = enc.contour_open;
-  out.xyz.resize(3 * enc.points());
+  Slices out = same_layout(enc);
   const double* V = target.V.data();
   const uint32_t* F = target.F.data();
   std::vector<double> deviation(enc.layers(), 0);
