@@ -9,15 +9,9 @@
 The plugin is build/2025/plugins/libfilter_slicereuse.so, or $SLICEREUSE_PLUGIN. Filters
 loaded late are not MeshSet methods: call them through ms.apply_filter(name, **params); the
 result is a dict. Errors raise pymeshlab.PyMeshLabException with the filter's message.
-
-Import this module before pymeshlab: the plugin links Debian libraries (OpenImageIO and what
-it needs) whose dependencies share sonames with older copies bundled in the pymeshlab wheel;
-load() therefore loads the Debian ones first, and the wheel's libraries then reuse them.
 """
 import json
 import os
-import subprocess
-import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -25,27 +19,6 @@ PLUGIN = Path(os.environ.get("SLICEREUSE_PLUGIN",
                              ROOT / "build" / "2025" / "plugins" / "libfilter_slicereuse.so"))
 
 _pymeshlab = None
-
-
-def _wheel_lib_dir():
-    import importlib.util
-    spec = importlib.util.find_spec("pymeshlab")
-    if spec is None or not spec.submodule_search_locations:
-        raise RuntimeError("pymeshlab is not installed in this Python (run scripts/setup)")
-    return Path(list(spec.submodule_search_locations)[0]) / "lib"
-
-
-def _preload_system_dependencies(plugin):
-    """Loads the plugin's dependencies that the wheel does not ship, from the system."""
-    import ctypes
-    bundled = {p.name for p in _wheel_lib_dir().iterdir()}
-    out = subprocess.run(["ldd", str(plugin)], capture_output=True, text=True).stdout
-    for line in out.splitlines():
-        name, arrow, rest = line.strip().partition(" => ")
-        path = rest.split(" (")[0].strip() if arrow else ""
-        if not path.startswith("/") or name in bundled or name.startswith("libQt5"):
-            continue
-        ctypes.CDLL(path, mode=ctypes.RTLD_GLOBAL)
 
 
 def load(plugin=None):
@@ -58,17 +31,8 @@ def load(plugin=None):
         raise RuntimeError(f"slicereuse plugin not found: {plugin}; build it with "
                            f"cmake -S {ROOT} -B {ROOT}/build/2025 -G Ninja "
                            f"-DSLICEREUSE_MESHLAB_API=2025 && cmake --build {ROOT}/build/2025")
-    imported_first = "pymeshlab" in sys.modules
-    if not imported_first:
-        _preload_system_dependencies(plugin)
     import pymeshlab
-    try:
-        pymeshlab.load_plugin(str(plugin))
-    except pymeshlab.PyMeshLabException as e:
-        if not imported_first:
-            raise
-        raise RuntimeError(f"{e}\nslicereuse_pymeshlab.load() must run before pymeshlab is "
-                           "imported, so that the plugin's system libraries are loaded first") from e
+    pymeshlab.load_plugin(str(plugin))
     _pymeshlab = pymeshlab
     return pymeshlab
 

@@ -13,7 +13,7 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "python"))
-import slicereuse_pymeshlab as sr  # noqa: E402  (must come before any import of pymeshlab)
+import slicereuse_pymeshlab as sr  # noqa: E402
 
 THICKNESS = 0.1
 HEIGHT = 8.0  # mm: every shape then fits the default 76.8 x 57.6 mm mask area

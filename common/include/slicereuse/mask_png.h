@@ -1,15 +1,18 @@
 #pragma once
-// PNG encoding and decoding of mask images in memory, through OpenImageIO.
+// PNG encoding and decoding of mask images in memory, through libpng.
 //
 // encode_mask_png: width x height bytes (row-major, one grey channel) -> a PNG file's bytes in
 // out (replaced), greyscale with bits = 1 (a pixel is white when its byte is >= 128) or 8.
-// 8-bit PNGs are written by OpenImageIO; 1-bit ones directly with zlib, because OpenImageIO
-// 2.4's PNG writer ignores "oiio:BitsPerSample" and 8-bit binary masks cost 8x the deflate and
-// checksum work (the export's bottleneck). Both use no row filter and zlib's run-length
-// strategy at level 1, the fastest and smallest setting measured on mostly black masks.
-// decode_mask_png: a PNG file's bytes -> its first channel as 8-bit grey (1-, 2-, 4- and 16-bit
-// files are converted); name (a path or archive:entry) only appears in error messages.
+// No row filter and zlib's run-length strategy at level 1: the fastest and smallest setting
+// measured on mostly black masks.
+// decode_mask_png: a PNG file's bytes -> 8-bit grey pixels (other depths and colour types are
+// converted by libpng's simplified reader); name (a path or archive:entry) only appears in
+// error messages.
 // Both are thread-safe and throw Error on failure.
+//
+// Why libpng and not OpenImageIO: OpenImageIO drags some 270 shared libraries into the host
+// process, and inside pymeshlab its libcurl clashes with the older libnghttp2 bundled in the
+// wheel, so pymeshlab.load_plugin failed; OpenImageIO 2.4 also cannot write 1-bit PNGs.
 #include <cstddef>
 #include <cstdint>
 #include <string>
