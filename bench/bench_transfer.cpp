@@ -19,14 +19,22 @@ using namespace slicereuse;
 
 namespace {
 
-double median_seconds(int runs, const std::function<void()>& job) {
+struct Timing {
+  double seconds;  // median
+  size_t points;   // of the last run's result
+};
+
+// Runs job `runs` times, keeping only one result alive at a time.
+Timing time_runs(int runs, const std::function<Slices()>& job) {
   std::vector<double> s;
+  size_t points = 0;
   for (int r = 0; r < runs; ++r) {
     const auto t0 = std::chrono::steady_clock::now();
-    job();
+    const Slices result = job();
     s.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    points = result.points();
   }
-  return median_of(s);
+  return {median_of(s), points};
 }
 
 }  // namespace
@@ -42,36 +50,49 @@ int main(int argc, char** argv) {
   const Slices source = slice_layers(base, options);
   std::printf("shape %s, %zu faces, %zu layers, threads %d, median of %d runs\n", args.family.shape.c_str(),
               base.faces(), source.layers(), omp_get_max_threads(), args.runs);
-  std::printf("%-10s %10s %9s %9s %9s %9s %8s\n", "member", "points", "resliced", "direct", "exact", "barycen.",
-              "speedup");
+  // Computed once per encoding, they serve every member (see encoded_edge_ends).
+  Buffer<uint32_t> ends;
+  std::vector<double> ends_seconds;
+  for (int r = 0; r < args.runs; ++r) {
+    const auto t0 = std::chrono::steady_clock::now();
+    ends = encoded_edge_ends(source, base);
+    ends_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  std::printf("encoded edge ends, once per encoding: %.3f s\n", median_of(ends_seconds));
+  std::printf("seconds: direct slicing; exact transfer with the target's encoding, then through the edge ends,\n"
+              "then contours only through the edge ends; barycentric. speed-up: direct / each exact column\n");
+  std::printf("%-6s %9s %8s %7s %7s %7s %7s %7s %7s %7s %7s\n", "member", "points", "resliced", "direct", "exact",
+              "ends", "contour", "barycen", "exact", "ends", "contour");
   for (int z_change = 0; z_change < 2; ++z_change) {
     args.family.z_change = z_change;
     for (int i = 1; i < args.members; ++i) {
       const Mesh member = test::make_family_member(base, args.family, i);
-      Slices direct, exact, bary;
-      TransferStats stats;
       SliceOptions same_plate = options;
       same_plate.z_start = source.z_start;
-      const double t_direct = median_seconds(args.runs, [&] {
-        direct = Slices();
-        direct = slice_layers(member, same_plate);
+      TransferStats stats;
+      const Timing direct = time_runs(args.runs, [&] { return slice_layers(member, same_plate); });
+      const Timing exact = time_runs(args.runs, [&] {
+        return transfer_contours(source, member, TransferMode::Exact, &stats);
       });
-      const double t_exact = median_seconds(args.runs, [&] {
-        exact = Slices();
-        exact = transfer_contours(source, member, TransferMode::Exact, &stats);
+      const Timing prepared = time_runs(args.runs, [&] {
+        return transfer_contours(source, ends, member, TransferMode::Exact);
       });
-      const double t_bary = median_seconds(args.runs, [&] {
-        bary = Slices();
-        bary = transfer_contours(source, member, TransferMode::Barycentric);
+      const Timing contours = time_runs(args.runs, [&] {
+        return transfer_contours(source, ends, member, TransferOptions(TransferMode::Exact, false));
       });
-      if (exact.points() != direct.points()) {
-        std::fprintf(stderr, "member %d: transfer gave %zu points, direct slicing %zu\n", i, exact.points(),
-                     direct.points());
+      const Timing bary = time_runs(args.runs, [&] {
+        return transfer_contours(source, ends, member, TransferMode::Barycentric);
+      });
+      if (exact.points != direct.points || prepared.points != direct.points || contours.points != direct.points) {
+        std::fprintf(stderr, "member %d: transfer gave %zu points, direct slicing %zu\n", i, exact.points,
+                     direct.points);
         return 1;
       }
-      std::printf("%-10s %10zu %9zu %9.3f %9.3f %9.3f %7.1fx\n",
-                  ((z_change ? "z" : "xy") + std::to_string(i)).c_str(), exact.points(), stats.resliced_layers,
-                  t_direct, t_exact, t_bary, t_direct / t_exact);
+      std::printf("%-6s %9zu %8zu %7.3f %7.3f %7.3f %7.3f %7.3f %6.1fx %6.1fx %6.1fx\n",
+                  ((z_change ? "z" : "xy") + std::to_string(i)).c_str(), exact.points, stats.resliced_layers,
+                  direct.seconds, exact.seconds, prepared.seconds, contours.seconds, bary.seconds,
+                  direct.seconds / exact.seconds, direct.seconds / prepared.seconds,
+                  direct.seconds / contours.seconds);
     }
   }
   return 0;

@@ -37,7 +37,8 @@ Result run_transfer(const ParamValues& values, Host& host) {
   const Mesh target = host.mesh_at(int(values.number("target_mesh")));
   TransferStats stats;
   const auto transfer_start = std::chrono::steady_clock::now();
-  const Slices s = transfer_contours(encoding, target, mode, &stats, sub_progress(progress, 0.2, 0.6));
+  const Slices s = transfer_contours(encoding, target, TransferOptions(mode, !target_encoding_file.empty()), &stats,
+                                     sub_progress(progress, 0.2, 0.6));
   const double transfer_seconds = seconds_since(transfer_start);
   StagedOutputs outputs;
   if (!contour_file.empty())

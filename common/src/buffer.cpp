@@ -1,6 +1,7 @@
 #include "slicereuse/buffer.h"
 
 #include <sys/mman.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <mutex>
@@ -16,8 +17,15 @@ constexpr size_t kLarge = 4 * kHugePage;
 struct Pool {
   std::mutex mutex;
   int users = 0;
-  std::vector<std::pair<void*, size_t>> kept;  // (pointer, rounded size)
+  size_t kept_bytes = 0;
+  std::vector<std::pair<void*, size_t>> kept;  // (pointer, rounded size), oldest first
 };
+
+// Never keep more than a quarter of the machine's memory idle.
+size_t pool_limit() {
+  static const size_t limit = size_t(sysconf(_SC_PHYS_PAGES)) * size_t(sysconf(_SC_PAGESIZE)) / 4;
+  return limit;
+}
 
 Pool& pool() {
   static Pool p;
@@ -46,6 +54,7 @@ void* allocate_buffer(size_t bytes) {
         best = i;
     if (best < pl.kept.size()) {
       void* p = pl.kept[best].first;
+      pl.kept_bytes -= pl.kept[best].second;
       pl.kept.erase(pl.kept.begin() + best);
       return p;
     }
@@ -57,18 +66,27 @@ void* allocate_buffer(size_t bytes) {
 }
 
 void free_buffer(void* p, size_t bytes) noexcept {
-  if (p && bytes >= kLarge) {
+  if (!p) return;
+  std::vector<void*> release;
+  if (bytes >= kLarge) {
     Pool& pl = pool();
     std::lock_guard<std::mutex> lock(pl.mutex);
     if (pl.users > 0) {
       try {
         pl.kept.emplace_back(p, rounded(bytes));
-        return;
+        pl.kept_bytes += rounded(bytes);
+        p = nullptr;
+        while (pl.kept_bytes > pool_limit()) {
+          release.push_back(pl.kept.front().first);
+          pl.kept_bytes -= pl.kept.front().second;
+          pl.kept.erase(pl.kept.begin());
+        }
       } catch (...) {  // no room to remember it: just free it
       }
     }
   }
   std::free(p);
+  for (void* r : release) std::free(r);
 }
 
 ReuseBuffers::ReuseBuffers() {
@@ -80,7 +98,10 @@ ReuseBuffers::~ReuseBuffers() {
   std::vector<std::pair<void*, size_t>> release;
   {
     std::lock_guard<std::mutex> lock(pool().mutex);
-    if (--pool().users == 0) release.swap(pool().kept);
+    if (--pool().users == 0) {
+      release.swap(pool().kept);
+      pool().kept_bytes = 0;
+    }
   }
   for (auto& b : release) std::free(b.first);
 }

@@ -6,19 +6,19 @@
 #include <cstring>
 #include <string>
 
-#include "slicereuse/edge_links.h"
 #include "slicereuse/edge_point.h"
 #include "slicereuse/error.h"
 #include "slicereuse/fingerprint.h"
 #include "slicereuse/layer_planes.h"
 #include "slicereuse/parallel_blocks.h"
 #include "slicereuse/slice_layers.h"
-#include "slicereuse/straddling_edges.h"
+#include "slicereuse/straddling_faces.h"
 
 namespace slicereuse {
 namespace {
 
 constexpr size_t kLayersPerBlock = 64;
+constexpr uint32_t kNextCorner[3] = {1, 2, 0};
 
 std::string describe(const Fingerprint& fp) {
   char hash[17];
@@ -36,6 +36,12 @@ void for_each_layer(size_t L, const Progress& progress, const std::function<void
         for (size_t k = b * kLayersPerBlock; k < std::min(L, (b + 1) * kLayersPerBlock); ++k) body(k);
       },
       progress, "transferring");
+}
+
+void drop_encoding(Slices& s) {
+  s.face = {};
+  s.edge = {};
+  s.t = {};
 }
 
 // Slices with enc's layers and contours, and room for their points.
@@ -61,28 +67,53 @@ std::vector<double> target_planes(const Slices& enc, const Mesh& target) {
   return planes;
 }
 
+// The two vertex ids of encoded point p's edge (corner j, corner j+1 of its face): looked up in
+// the faces, or read from encoded_edge_ends.
+struct EndsFromFaces {
+  const uint8_t* edge;
+  const uint32_t* face;
+  const uint32_t* F;
+  void operator()(size_t p, uint32_t& a, uint32_t& b) const {
+    const uint32_t* corners = F + 3 * size_t(face[p]);
+    a = corners[edge[p]];
+    b = corners[kNextCorner[edge[p]]];
+  }
+};
+
+struct EndsFromPairs {
+  const uint32_t* ends;
+  void operator()(size_t p, uint32_t& a, uint32_t& b) const {
+    a = ends[2 * p];
+    b = ends[2 * p + 1];
+  }
+};
+
 // Cuts layer k's encoded edges of the target by the layer's plane, into out at the encoding's
-// offsets. Returns the certificate's first half: every edge still crosses from corner j below
-// to corner j+1 at or above.
-bool transfer_layer(const Slices& enc, const Mesh& target, size_t k, Slices& out) {
+// offsets (and the target's encoding when out has room for it). Returns the certificate's first
+// half: every edge still crosses from corner j below to corner j+1 at or above.
+template <bool WithEncoding, class Ends>
+bool transfer_layer(const Slices& enc, const Ends& ends, const Mesh& target, size_t k, Slices& out) {
   const double zk = enc.layer_z[k];
   const double* V = target.V.data();
-  const uint32_t* F = target.F.data();
+  double* xyz = out.xyz.data();
   bool good = true;
   const size_t p0 = first_point(enc, k), p1 = end_point(enc, k);
   for (size_t p = p0; p < p1; ++p) {
-    const size_t f = enc.face[p], j = enc.edge[p];
-    const double* a = V + 3 * size_t(F[3 * f + j]);
-    const double* b = V + 3 * size_t(F[3 * f + (j + 1) % 3]);
+    uint32_t ia, ib;
+    ends(p, ia, ib);
+    const double* a = V + 3 * size_t(ia);
+    const double* b = V + 3 * size_t(ib);
     good &= (a[2] < zk) & (b[2] >= zk);
     const EdgePoint e = edge_point(a, b, zk);
-    out.xyz[3 * p] = e.x;
-    out.xyz[3 * p + 1] = e.y;
-    out.xyz[3 * p + 2] = zk;
-    out.t[p] = e.t;
+    xyz[3 * p] = e.x;
+    xyz[3 * p + 1] = e.y;
+    xyz[3 * p + 2] = zk;
+    if (WithEncoding) out.t[p] = e.t;
   }
-  std::memcpy(&out.face[p0], &enc.face[p0], (p1 - p0) * sizeof(uint32_t));
-  std::memcpy(&out.edge[p0], &enc.edge[p0], p1 - p0);
+  if (WithEncoding) {
+    std::memcpy(&out.face[p0], &enc.face[p0], (p1 - p0) * sizeof(uint32_t));
+    std::memcpy(&out.edge[p0], &enc.edge[p0], p1 - p0);
+  }
   return good;
 }
 
@@ -92,7 +123,8 @@ struct Pick {
   size_t layer;
 };
 
-Slices assemble(const std::vector<Pick>& pick, std::vector<double> planes, const Progress& progress) {
+Slices assemble(const std::vector<Pick>& pick, std::vector<double> planes, bool with_encoding,
+                const Progress& progress) {
   const size_t L = pick.size();
   Slices out;
   out.layer_z = std::move(planes);
@@ -111,38 +143,48 @@ Slices assemble(const std::vector<Pick>& pick, std::vector<double> planes, const
   }
   const size_t P = point_begin[L];
   out.xyz.resize(3 * P);
-  out.face.resize(P);
-  out.edge.resize(P);
-  out.t.resize(P);
+  if (with_encoding) {
+    out.face.resize(P);
+    out.edge.resize(P);
+    out.t.resize(P);
+  }
   for_each_layer(L, progress, [&](size_t k) {
     const Slices& s = *pick[k].from;
     const size_t p0 = first_point(s, pick[k].layer), n = end_point(s, pick[k].layer) - p0, q = point_begin[k];
     std::memcpy(&out.xyz[3 * q], &s.xyz[3 * p0], 3 * n * sizeof(double));
-    std::memcpy(&out.face[q], &s.face[p0], n * sizeof(uint32_t));
-    std::memcpy(&out.edge[q], &s.edge[p0], n);
-    std::memcpy(&out.t[q], &s.t[p0], n * sizeof(double));
+    if (with_encoding) {
+      std::memcpy(&out.face[q], &s.face[p0], n * sizeof(uint32_t));
+      std::memcpy(&out.edge[q], &s.edge[p0], n);
+      std::memcpy(&out.t[q], &s.t[p0], n * sizeof(double));
+    }
   });
   return out;
 }
 
-Slices transfer_exact(const Slices& enc, const Mesh& target, TransferStats& st, const Progress& progress) {
+template <class Ends>
+Slices transfer_exact(const Slices& enc, const Ends& ends, const Mesh& target, bool with_encoding, TransferStats& st,
+                      const Progress& progress) {
   std::vector<double> planes = target_planes(enc, target);
   const size_t L = planes.size(), Le = std::min(L, enc.layers());
-  // The certificate's second half first, since it is cheap (O(edges + layers)): the target must
-  // have exactly as many straddling edges as the layer has points, or the layer is re-sliced
-  // without being transferred at all.
-  const std::vector<uint64_t> counts = straddling_edge_counts(target, edge_links(target), planes);
+  // The certificate's second half first, since it is cheap (O(faces + layers)): the target must
+  // have exactly as many straddling edges as the layer has points (counted through its faces,
+  // see straddling_faces.h), or the layer is re-sliced without being transferred at all.
+  const std::vector<uint64_t> counts = straddling_face_counts(target, planes);
   std::vector<uint8_t> ok(L, 0);
   for (size_t k = 0; k < Le; ++k) {
     ok[k] = counts[k] == end_point(enc, k) - first_point(enc, k);
     for (size_t c = enc.layer_begin[k]; c < enc.layer_begin[k + 1]; ++c) ok[k] &= !enc.contour_open[c];
   }
   Slices moved = same_layout(enc);
-  moved.face.resize(enc.points());
-  moved.edge.resize(enc.points());
-  moved.t.resize(enc.points());
+  if (with_encoding) {
+    moved.face.resize(enc.points());
+    moved.edge.resize(enc.points());
+    moved.t.resize(enc.points());
+  }
   for_each_layer(Le, progress, [&](size_t k) {
-    if (ok[k]) ok[k] = transfer_layer(enc, target, k, moved);
+    if (ok[k])
+      ok[k] = with_encoding ? transfer_layer<true>(enc, ends, target, k, moved)
+                            : transfer_layer<false>(enc, ends, target, k, moved);
   });
 
   std::vector<size_t> redo;
@@ -160,62 +202,99 @@ Slices transfer_exact(const Slices& enc, const Mesh& target, TransferStats& st, 
   // top of slicing, so slice every layer instead (the result is the same by construction).
   if (2 * redo.size() > L) {
     st.resliced_layers = L;
-    return slice_planes(target, std::move(planes), progress);
+    Slices all = slice_planes(target, std::move(planes), progress);
+    if (!with_encoding) drop_encoding(all);
+    return all;
   }
   st.resliced_layers = redo.size();
   st.transferred_layers = L - redo.size();
   Slices fresh = slice_planes(target, std::move(redo_planes), progress);
   std::vector<Pick> pick(L);
   for (size_t k = 0, r = 0; k < L; ++k) pick[k] = r < redo.size() && redo[r] == k ? Pick{&fresh, r++} : Pick{&moved, k};
-  return assemble(pick, std::move(planes), progress);
+  return assemble(pick, std::move(planes), with_encoding, progress);
 }
 
-Slices transfer_barycentric(const Slices& enc, const Mesh& target, TransferStats& st, const Progress& progress) {
+template <class Ends>
+Slices transfer_barycentric(const Slices& enc, const Ends& ends, const Mesh& target, bool with_encoding,
+                            TransferStats& st, const Progress& progress) {
   Slices out = same_layout(enc);
   const double* V = target.V.data();
-  const uint32_t* F = target.F.data();
   std::vector<double> deviation(enc.layers(), 0);
   for_each_layer(enc.layers(), progress, [&](size_t k) {
     double worst = 0;
     for (size_t p = first_point(enc, k); p < end_point(enc, k); ++p) {
-      const size_t f = enc.face[p], j = enc.edge[p];
-      const double* a = V + 3 * size_t(F[3 * f + j]);
-      const double* b = V + 3 * size_t(F[3 * f + (j + 1) % 3]);
+      uint32_t ia, ib;
+      ends(p, ia, ib);
+      const double* a = V + 3 * size_t(ia);
+      const double* b = V + 3 * size_t(ib);
       const double t = enc.t[p];
       for (int d = 0; d < 3; ++d) out.xyz[3 * p + d] = (1 - t) * a[d] + t * b[d];
       worst = std::max(worst, std::abs(out.xyz[3 * p + 2] - enc.layer_z[k]));
     }
     deviation[k] = worst;
   });
-  out.face = enc.face;
-  out.edge = enc.edge;
-  out.t = enc.t;
+  if (with_encoding) {  // the method's reuse keeps the area coordinates as they are
+    out.face = enc.face;
+    out.edge = enc.edge;
+    out.t = enc.t;
+  }
   st.transferred_layers = enc.layers();
   st.max_plane_deviation = deviation.empty() ? 0 : *std::max_element(deviation.begin(), deviation.end());
   return out;
 }
 
-}  // namespace
-
-Slices transfer_contours(const Slices& encoding, const Mesh& target, TransferMode mode, TransferStats* stats,
-                         const Progress& progress) {
-  validate_mesh(target);
+void check_family(const Slices& encoding, const Mesh& mesh) {
+  validate_mesh(mesh);
   if (!encoding.has_encoding()) throw Error("transfer needs an encoding (face and area coordinates per point)");
-  const Fingerprint fp = mesh_fingerprint(target);
+  const Fingerprint fp = mesh_fingerprint(mesh);
   if (fp != encoding.fingerprint)
     throw Error("the target mesh's faces differ from those of the mesh the encoding was made from (encoding: " +
                 describe(encoding.fingerprint) + "; target: " + describe(fp) +
                 "); a cross-parameterization map is needed for a target with other connectivity");
+}
+
+template <class Ends>
+Slices transfer(const Slices& encoding, const Ends& ends, const Mesh& target, const TransferOptions& options,
+                TransferStats* stats, const Progress& progress) {
   report_progress(progress, 0, "transferring");
   TransferStats st;
-  Slices out = mode == TransferMode::Barycentric ? transfer_barycentric(encoding, target, st, progress)
-                                                  : transfer_exact(encoding, target, st, progress);
+  Slices out = options.mode == TransferMode::Barycentric
+                   ? transfer_barycentric(encoding, ends, target, options.encoding, st, progress)
+                   : transfer_exact(encoding, ends, target, options.encoding, st, progress);
   out.z_start = encoding.z_start;
   out.thickness = encoding.thickness;
-  out.fingerprint = fp;
+  out.fingerprint = encoding.fingerprint;
   report_progress(progress, 1, "transferring");
   if (stats) *stats = st;
   return out;
+}
+
+}  // namespace
+
+Slices transfer_contours(const Slices& encoding, const Mesh& target, const TransferOptions& options,
+                         TransferStats* stats, const Progress& progress) {
+  check_family(encoding, target);
+  return transfer(encoding, EndsFromFaces{encoding.edge.data(), encoding.face.data(), target.F.data()}, target,
+                  options, stats, progress);
+}
+
+Buffer<uint32_t> encoded_edge_ends(const Slices& encoding, const Mesh& mesh) {
+  check_family(encoding, mesh);
+  const EndsFromFaces from_faces{encoding.edge.data(), encoding.face.data(), mesh.F.data()};
+  Buffer<uint32_t> ends(2 * encoding.points());
+  const long long P = static_cast<long long>(encoding.points());
+#pragma omp parallel for schedule(static)
+  for (long long p = 0; p < P; ++p) from_faces(size_t(p), ends[2 * p], ends[2 * p + 1]);
+  return ends;
+}
+
+Slices transfer_contours(const Slices& encoding, const Buffer<uint32_t>& edge_ends, const Mesh& target,
+                         const TransferOptions& options, TransferStats* stats, const Progress& progress) {
+  check_family(encoding, target);
+  if (edge_ends.size() != 2 * encoding.points())
+    throw Error("edge ends were computed for another encoding (" + std::to_string(edge_ends.size() / 2) +
+                " points, the encoding has " + std::to_string(encoding.points()) + ")");
+  return transfer(encoding, EndsFromPairs{edge_ends.data()}, target, options, stats, progress);
 }
 
 }  // namespace slicereuse

@@ -24,6 +24,21 @@ Slices slice(const Mesh& m, double h) {
   return slice_layers(m, o);
 }
 
+// Transfer without the target's encoding gives the same contours, and no encoding; transfer
+// through precomputed edge ends gives the same contours and encoding.
+void expect_same_points_without_encoding(const Slices& source, const Mesh& member, const Slices& full) {
+  const Slices bare = transfer_contours(source, member, TransferOptions(TransferMode::Exact, false));
+  EXPECT_TRUE(bare.face.empty() && bare.edge.empty() && bare.t.empty());
+  EXPECT_EQ(bare.layer_begin, full.layer_begin);
+  EXPECT_EQ(bare.contour_begin, full.contour_begin);
+  EXPECT_TRUE(bare.xyz == full.xyz);
+  const Slices prepared = transfer_contours(source, encoded_edge_ends(source, member), member, TransferMode::Exact);
+  EXPECT_EQ(prepared.layer_begin, full.layer_begin);
+  EXPECT_EQ(prepared.contour_begin, full.contour_begin);
+  EXPECT_TRUE(prepared.xyz == full.xyz && prepared.face == full.face && prepared.edge == full.edge &&
+              prepared.t == full.t);
+}
+
 struct FamilyCase {
   std::string shape;
   bool z_change;
@@ -58,6 +73,7 @@ TEST_P(TransferFamily, ExactTransferEqualsDirectSlicing) {
     EXPECT_EQ(moved.fingerprint, source.fingerprint);
     EXPECT_EQ(moved.points(), direct.points()) << "member " << i;
     test::expect_same_sections(moved, direct);
+    expect_same_points_without_encoding(source, member, moved);
   }
   if (GetParam().z_change) {
     EXPECT_GT(resliced, 0u);
@@ -127,6 +143,10 @@ TEST(TransferContours, RefusesAMeshWithOtherFaces) {
   Slices contours_only = source;
   contours_only.face.clear();
   EXPECT_THROW(transfer_contours(contours_only, base, TransferMode::Exact), Error);
+  Buffer<uint32_t> ends = encoded_edge_ends(source, base);
+  EXPECT_THROW(encoded_edge_ends(source, other), Error);
+  ends.pop_back();
+  EXPECT_THROW(transfer_contours(source, ends, base, TransferMode::Exact), Error);
 }
 
 TEST(TransferContours, LocalZEditReslicesOnlyTheLayersItTouches) {
@@ -158,4 +178,5 @@ TEST(TransferContours, LocalZEditReslicesOnlyTheLayersItTouches) {
   EXPECT_LT(stats.resliced_layers, 30u);
   EXPECT_EQ(stats.transferred_layers + stats.resliced_layers, direct.layers());
   test::expect_same_sections(moved, direct);
+  expect_same_points_without_encoding(source, member, moved);
 }

@@ -15,7 +15,9 @@
 // source's layers as they are; points may leave the plane when the target differs in z
 // (max_plane_deviation reports by how much).
 //
-// Output: Slices with xyz and the target's own encoding, so the target can be a source later.
+// Output: Slices with xyz and, when `encoding` is true, the target's own encoding, so the target
+// can be a source later. Without it, transfer writes 24 instead of 37 bytes per point; it is
+// memory-bound, so that is what it costs.
 #include "slicereuse/mesh.h"
 #include "slicereuse/progress.h"
 #include "slicereuse/slices.h"
@@ -24,6 +26,13 @@ namespace slicereuse {
 
 enum class TransferMode { Exact = 0, Barycentric = 1 };
 
+struct TransferOptions {
+  TransferMode mode;
+  bool encoding;  // also compute the target's encoding (face, edge, t per point)
+  TransferOptions(TransferMode m = TransferMode::Exact, bool with_encoding = true)
+      : mode(m), encoding(with_encoding) {}
+};
+
 struct TransferStats {
   size_t transferred_layers = 0;
   size_t resliced_layers = 0;
@@ -31,7 +40,19 @@ struct TransferStats {
 };
 
 // Throws Error when target's fingerprint differs from encoding.fingerprint.
-Slices transfer_contours(const Slices& encoding, const Mesh& target, TransferMode mode,
+Slices transfer_contours(const Slices& encoding, const Mesh& target, const TransferOptions& options,
                          TransferStats* stats = nullptr, const Progress& progress = {});
+
+// encoded_edge_ends: for every encoded point, the ids of its edge's two vertices (corner j,
+// then corner j+1 of its face), 2 per point, from the encoding and the faces of any member of
+// the family. Transfer is bound by looking each face up; a pipeline that transfers one encoding
+// to many members computes these once and passes them to every transfer below.
+// Throws Error when mesh's fingerprint differs from encoding.fingerprint.
+Buffer<uint32_t> encoded_edge_ends(const Slices& encoding, const Mesh& mesh);
+
+// The same transfer, reading edge_ends (from encoded_edge_ends) instead of the faces.
+Slices transfer_contours(const Slices& encoding, const Buffer<uint32_t>& edge_ends, const Mesh& target,
+                         const TransferOptions& options, TransferStats* stats = nullptr,
+                         const Progress& progress = {});
 
 }  // namespace slicereuse
