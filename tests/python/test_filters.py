@@ -148,3 +148,29 @@ def test_interpreter_survives_errors(pymeshlab, sliced):
 def test_no_current_mesh(pymeshlab):
     with pytest.raises(pymeshlab.PyMeshLabException):
         pymeshlab.MeshSet().apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS)
+
+
+def test_truncated_or_corrupted_encoding_is_refused(pymeshlab, sliced):
+    ms, source, target, _, tmp, _ = sliced
+    ms.set_current_mesh(source)
+    ms.apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS, file_format=1,
+                    contour_file="", encoding_file=str(tmp / "s.srb"))
+    data = (tmp / "s.srb").read_bytes()
+    (tmp / "cut.srb").write_bytes(data[: len(data) // 2])
+    flipped = bytearray(data)
+    flipped[len(data) - 100] ^= 0x40  # inside the last section (t): caught by its checksum
+    (tmp / "flip.srb").write_bytes(bytes(flipped))
+    text = (tmp / "s.enc").read_text().splitlines(keepends=True)
+    (tmp / "cut.enc").write_text("".join(text[: len(text) // 2]))
+    for bad, message in (("cut.srb", "cut.srb"), ("flip.srb", "checksum"), ("cut.enc", "cut.enc")):
+        _raises(pymeshlab, ms, "transfer_slicing_to_mesh", message, encoding_file=str(tmp / bad),
+                target_mesh=target, contour_file=str(tmp / "x.ctr"))
+    assert not (tmp / "x.ctr").exists()
+
+
+def test_unwritable_transfer_output_leaves_nothing(pymeshlab, sliced):
+    ms, _, target, _, tmp, _ = sliced
+    _raises(pymeshlab, ms, "transfer_slicing_to_mesh", "target_encoding_file",
+            encoding_file=str(tmp / "s.enc"), target_mesh=target, contour_file=str(tmp / "t.ctr"),
+            target_encoding_file=str(tmp / "no" / "dir" / "t.enc"))
+    assert not (tmp / "t.ctr").exists()
