@@ -1,3 +1,4 @@
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -14,7 +15,6 @@
 
 #include <omp.h>
 
-#include "slicereuse/atomic_file.h"
 #include "slicereuse/buffer.h"
 #include "slicereuse/error.h"
 #include "slicereuse/mask_png.h"
@@ -65,6 +65,23 @@ void encode_layer(const Slices& s, size_t k, const PrinterProfile& p, int bits,
   image.resize(size_t(p.width_px) * size_t(p.height_px));
   rasterize_layer(s, k, p, image.data());
   encode_mask_png(image.data(), p.width_px, p.height_px, bits, png);
+}
+
+void write_file(const std::string& path, const std::vector<uint8_t>& data) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) throw Error("cannot create '" + path + "': " + std::strerror(errno));
+  size_t done = 0;
+  while (done < data.size()) {
+    const ssize_t n = ::write(fd, data.data() + done, data.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int e = errno;
+      ::close(fd);
+      throw Error("cannot write '" + path + "': " + std::strerror(n < 0 ? e : ENOSPC));
+    }
+    done += size_t(n);
+  }
+  if (::close(fd) != 0) throw Error("cannot write '" + path + "': " + std::strerror(errno));
 }
 
 // A fresh folder next to the target that collects the images; removed with its content unless
@@ -123,9 +140,8 @@ void export_folder(const Slices& s, const PrinterProfile& p, std::string folder,
       [&](size_t k) {
         thread_local std::vector<uint8_t> png;
         encode_layer(s, k, p, p.antialiasing ? 8 : 1, png);
-        AtomicFile file(staging.path() + "/" + mask_layer_file_name(FOLDER_PREFIX, k));
-        file.write(png.data(), png.size());
-        file.commit();
+        // Plain writes: the staging folder as a whole is what appears atomically.
+        write_file(staging.path() + "/" + mask_layer_file_name(FOLDER_PREFIX, k), png);
       },
       progress, PHASE);
   // Last chance to cancel: once committed, the export is done and no longer reports.

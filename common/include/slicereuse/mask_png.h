@@ -1,16 +1,17 @@
 #pragma once
-// PNG encoding and decoding of mask images in memory, through libpng.
+// PNG encoding and decoding of mask images in memory.
 //
 // encode_mask_png: width x height bytes (row-major, one grey channel) -> a PNG file's bytes in
 // out (replaced), greyscale with bits = 1 (a pixel is white when its byte is >= 128) or 8.
-// No row filter and zlib's run-length strategy at level 1: the fastest and smallest setting
-// measured on mostly black masks.
+// No row filter; the image data is deflated by RunDeflater (deflate_runs.h), which does what
+// zlib's run-length strategy does on masks in a fraction of the time: the 8-bit PNGs that
+// .sl1 archives need made zlib the bottleneck of mask export.
 // decode_mask_png: a PNG file's bytes -> 8-bit grey pixels (other depths and colour types are
 // converted by libpng's simplified reader); name (a path or archive:entry) only appears in
 // error messages.
 // Both are thread-safe and throw Error on failure.
 //
-// Why libpng and not OpenImageIO: OpenImageIO drags some 270 shared libraries into the host
+// Decoding is libpng's. Why not OpenImageIO: it drags some 270 shared libraries into the host
 // process, and inside pymeshlab its libcurl clashes with the older libnghttp2 bundled in the
 // wheel, so pymeshlab.load_plugin failed; OpenImageIO 2.4 also cannot write 1-bit PNGs.
 #include <cstddef>

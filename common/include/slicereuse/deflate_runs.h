@@ -1,0 +1,32 @@
+#pragma once
+// RunDeflater: a zlib stream (RFC 1950/1951) of literals and distance-1 matches, i.e. what
+// zlib's Z_RLE strategy emits, written directly: no sliding window, runs found 8 bytes at a
+// time, and one deflate block whose Huffman codes are built for the image's own symbols. Mask
+// images are long runs of 0 and 255, so a 1024x768 8-bit mask compresses to zlib's size in a
+// fraction of its time. Any inflater reads the result.
+//
+// Use: RunDeflater d(out); d.add(bytes, n) as often as needed; d.finish(). The stream is
+// appended to out.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace slicereuse {
+
+class RunDeflater {
+ public:
+  explicit RunDeflater(std::vector<uint8_t>& out);
+  void add(const uint8_t* data, size_t n);
+  void finish();
+
+ private:
+  void repeats();  // records the pending repeats of the last literal
+
+  std::vector<uint8_t>& out_;
+  std::vector<uint16_t> symbols_;  // literal byte, or 256 + match length (3..258)
+  int last_ = -1;                  // last byte recorded, or -1 before the first
+  size_t pending_ = 0;             // bytes equal to last_ seen since it was recorded
+  uint32_t adler_ = 1;
+};
+
+}  // namespace slicereuse

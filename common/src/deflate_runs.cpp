@@ -1,0 +1,242 @@
+#include "slicereuse/deflate_runs.h"
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <functional>
+#include <queue>
+
+namespace slicereuse {
+namespace {
+
+constexpr unsigned kEndOfBlock = 256;
+constexpr unsigned kLengthBase[29] = {3,  4,  5,  6,  7,  8,  9,  10, 11,  13,  15,  17,  19,  23, 27,
+                                      31, 35, 43, 51, 59, 67, 83, 99, 115, 131, 163, 195, 227, 258};
+constexpr unsigned kLengthExtra[29] = {0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2,
+                                       2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0};
+// The order in which the code-length code's lengths are sent (RFC 1951 3.2.7).
+constexpr unsigned kCodeLengthOrder[19] = {16, 17, 18, 0, 8, 7, 9, 6, 10, 5, 11, 4, 12, 3, 13, 2, 14, 1, 15};
+
+// Length symbol (257..285) of a match length, and its extra bits.
+struct LengthCode {
+  uint16_t symbol;
+  uint8_t extra_bits;
+  uint16_t extra;
+};
+
+const std::array<LengthCode, 259>& length_codes() {
+  static const std::array<LengthCode, 259> table = [] {
+    std::array<LengthCode, 259> t{};
+    for (unsigned len = 3; len <= 258; ++len) {
+      unsigned i = 28;
+      while (kLengthBase[i] > len) --i;
+      t[len] = {uint16_t(257 + i), uint8_t(kLengthExtra[i]), uint16_t(len - kLengthBase[i])};
+    }
+    return t;
+  }();
+  return table;
+}
+
+// Huffman code lengths for the frequencies, none longer than limit: a Huffman tree, rebuilt on
+// halved frequencies while it is too deep. Symbols of frequency 0 get no code.
+std::vector<uint8_t> code_lengths(std::vector<uint64_t> freq, unsigned limit) {
+  const size_t n = freq.size();
+  std::vector<uint8_t> length(n, 0);
+  for (;;) {
+    std::vector<int> parent;
+    using Node = std::pair<uint64_t, int>;
+    std::priority_queue<Node, std::vector<Node>, std::greater<Node>> heap;
+    std::vector<int> leaf(n, -1);
+    for (size_t s = 0; s < n; ++s)
+      if (freq[s]) {
+        leaf[s] = int(parent.size());
+        parent.push_back(-1);
+        heap.push({freq[s], leaf[s]});
+      }
+    while (heap.size() > 1) {
+      const Node a = heap.top();
+      heap.pop();
+      const Node b = heap.top();
+      heap.pop();
+      const int joined = int(parent.size());
+      parent.push_back(-1);
+      parent[a.second] = parent[b.second] = joined;
+      heap.push({a.first + b.first, joined});
+    }
+    unsigned deepest = 0;
+    for (size_t s = 0; s < n; ++s) {
+      unsigned depth = 0;
+      if (leaf[s] >= 0)
+        for (int x = leaf[s]; parent[x] >= 0; x = parent[x]) ++depth;
+      length[s] = uint8_t(depth);
+      deepest = std::max(deepest, depth);
+    }
+    if (deepest <= limit) return length;
+    for (uint64_t& f : freq)
+      if (f) f = (f + 1) / 2;
+  }
+}
+
+// Canonical codes (RFC 1951 3.2.2), bit-reversed because deflate sends Huffman codes most
+// significant bit first into an LSB-first stream.
+std::vector<uint16_t> canonical_codes(const std::vector<uint8_t>& length) {
+  unsigned count[16] = {0}, next[16] = {0};
+  for (uint8_t l : length) ++count[l];
+  count[0] = 0;
+  for (unsigned bits = 1, code = 0; bits < 16; ++bits) next[bits] = code = (code + count[bits - 1]) << 1;
+  std::vector<uint16_t> codes(length.size(), 0);
+  for (size_t s = 0; s < length.size(); ++s)
+    if (length[s]) {
+      const unsigned code = next[length[s]]++;
+      unsigned r = 0;
+      for (unsigned i = 0; i < length[s]; ++i) r |= ((code >> i) & 1u) << (length[s] - 1 - i);
+      codes[s] = uint16_t(r);
+    }
+  return codes;
+}
+
+class BitWriter {
+ public:
+  explicit BitWriter(std::vector<uint8_t>& out) : out_(out) {}
+  void put(uint64_t value, unsigned count) {
+    buffer_ |= value << used_;
+    used_ += count;
+    while (used_ >= 8) {
+      out_.push_back(uint8_t(buffer_));
+      buffer_ >>= 8;
+      used_ -= 8;
+    }
+  }
+  void flush() {
+    if (used_ > 0) put(0, 8 - used_);
+  }
+
+ private:
+  std::vector<uint8_t>& out_;
+  uint64_t buffer_ = 0;
+  unsigned used_ = 0;
+};
+
+// One code length run, as the code-length alphabet sends it: symbol 0..18 and its extra bits.
+struct LengthRun {
+  uint8_t symbol, extra;
+};
+
+// The code lengths as code-length symbols: 16 repeats the previous length 3..6 times, 17 and
+// 18 repeat zero 3..10 and 11..138 times.
+std::vector<LengthRun> length_runs(const std::vector<uint8_t>& lengths) {
+  std::vector<LengthRun> runs;
+  for (size_t i = 0; i < lengths.size();) {
+    size_t j = i;
+    while (j < lengths.size() && lengths[j] == lengths[i]) ++j;
+    size_t n = j - i;
+    if (lengths[i] == 0) {
+      for (; n >= 11; n -= std::min<size_t>(n, 138)) runs.push_back({18, uint8_t(std::min<size_t>(n, 138) - 11)});
+      if (n >= 3) {
+        runs.push_back({17, uint8_t(n - 3)});
+        n = 0;
+      }
+      for (; n > 0; --n) runs.push_back({0, 0});
+    } else {
+      runs.push_back({lengths[i], 0});
+      for (--n; n >= 3; n -= std::min<size_t>(n, 6)) runs.push_back({16, uint8_t(std::min<size_t>(n, 6) - 3)});
+      for (; n > 0; --n) runs.push_back({lengths[i], 0});
+    }
+    i = j;
+  }
+  return runs;
+}
+
+}  // namespace
+
+RunDeflater::RunDeflater(std::vector<uint8_t>& out) : out_(out) {}
+
+void RunDeflater::repeats() {
+  while (pending_ >= 3) {
+    const size_t n = std::min<size_t>(pending_, 258);
+    symbols_.push_back(uint16_t(256 + n));
+    pending_ -= n;
+  }
+  for (; pending_ > 0; --pending_) symbols_.push_back(uint16_t(last_));
+}
+
+void RunDeflater::add(const uint8_t* data, size_t n) {
+  adler_ = uint32_t(adler32(adler_, data, uInt(n)));
+  size_t i = 0;
+  while (i < n) {
+    if (data[i] == last_) {
+      // Extend the run a word at a time while all 8 bytes match.
+      const uint64_t pattern = 0x0101010101010101ULL * uint8_t(last_);
+      size_t j = i;
+      uint64_t word;
+      while (j + 8 <= n && (std::memcpy(&word, data + j, 8), word == pattern)) j += 8;
+      while (j < n && data[j] == last_) ++j;
+      pending_ += j - i;
+      i = j;
+    } else {
+      repeats();
+      symbols_.push_back(data[i]);
+      last_ = data[i++];
+    }
+  }
+}
+
+void RunDeflater::finish() {
+  repeats();
+  const auto& lengths_of = length_codes();
+  std::vector<uint64_t> freq(286, 0);
+  for (uint16_t s : symbols_) ++freq[s < 256 ? s : lengths_of[s - 256].symbol];
+  freq[kEndOfBlock] = 1;
+  freq[0] |= 1;  // at least two codes, so the code is complete for every inflater
+  const std::vector<uint8_t> lit_length = code_lengths(freq, 15);
+  const std::vector<uint16_t> lit_code = canonical_codes(lit_length);
+  size_t hlit = 286;
+  while (hlit > 257 && lit_length[hlit - 1] == 0) --hlit;
+  // Every match is at distance 1 (distance code 0); code 1 is unused but makes the code complete.
+  const std::vector<uint8_t> dist_length = {1, 1};
+
+  std::vector<uint8_t> all(lit_length.begin(), lit_length.begin() + hlit);
+  all.insert(all.end(), dist_length.begin(), dist_length.end());
+  const std::vector<LengthRun> runs = length_runs(all);
+  std::vector<uint64_t> run_freq(19, 0);
+  for (const LengthRun& r : runs) ++run_freq[r.symbol];
+  run_freq[0] |= 1;
+  run_freq[18] |= 1;
+  const std::vector<uint8_t> run_length = code_lengths(run_freq, 7);
+  const std::vector<uint16_t> run_code = canonical_codes(run_length);
+  size_t hclen = 19;
+  while (hclen > 4 && run_length[kCodeLengthOrder[hclen - 1]] == 0) --hclen;
+
+  out_.push_back(0x78);  // deflate, 32 KiB window
+  out_.push_back(0x01);  // fastest; (0x78 << 8 | 0x01) is a multiple of 31
+  BitWriter w(out_);
+  w.put(0b101, 3);  // final block, dynamic Huffman codes
+  w.put(hlit - 257, 5);
+  w.put(dist_length.size() - 1, 5);
+  w.put(hclen - 4, 4);
+  for (size_t i = 0; i < hclen; ++i) w.put(run_length[kCodeLengthOrder[i]], 3);
+  for (const LengthRun& r : runs) {
+    w.put(run_code[r.symbol], run_length[r.symbol]);
+    if (r.symbol == 16) w.put(r.extra, 2);
+    if (r.symbol == 17) w.put(r.extra, 3);
+    if (r.symbol == 18) w.put(r.extra, 7);
+  }
+  for (uint16_t s : symbols_) {
+    if (s < 256) {
+      w.put(lit_code[s], lit_length[s]);
+    } else {
+      const LengthCode& lc = lengths_of[s - 256];
+      w.put(lit_code[lc.symbol], lit_length[lc.symbol]);
+      w.put(lc.extra, lc.extra_bits);
+      w.put(0, 1);  // distance code 0: distance 1
+    }
+  }
+  w.put(lit_code[kEndOfBlock], lit_length[kEndOfBlock]);
+  w.flush();
+  for (int shift = 24; shift >= 0; shift -= 8) out_.push_back(uint8_t(adler_ >> shift));
+  symbols_.clear();
+}
+
+}  // namespace slicereuse

@@ -1,0 +1,81 @@
+// RunDeflater's streams must inflate, with zlib's own inflater, to exactly the input.
+#include <gtest/gtest.h>
+#include <zlib.h>
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include "slicereuse/deflate_runs.h"
+
+using namespace slicereuse;
+
+namespace {
+
+std::vector<uint8_t> inflate_all(const std::vector<uint8_t>& z, size_t size) {
+  std::vector<uint8_t> out(size + 1);
+  uLongf n = uLongf(out.size());
+  EXPECT_EQ(uncompress(out.data(), &n, z.data(), uLong(z.size())), Z_OK);
+  out.resize(n);
+  return out;
+}
+
+// Deflates data in pieces of the given size, so runs cross add() calls.
+std::vector<uint8_t> deflate_in_pieces(const std::vector<uint8_t>& data, size_t piece) {
+  std::vector<uint8_t> z;
+  RunDeflater d(z);
+  for (size_t i = 0; i < data.size(); i += piece) d.add(data.data() + i, std::min(piece, data.size() - i));
+  d.finish();
+  return z;
+}
+
+}  // namespace
+
+TEST(RunDeflater, RoundTripsRunsOfEveryLength) {
+  std::vector<uint8_t> data;
+  // Runs of 1..600 bytes: every match length and the 1- and 2-byte leftovers after 258s.
+  for (size_t n = 1; n <= 600; ++n) data.insert(data.end(), n, uint8_t(n % 2 ? 255 : n % 251));
+  for (size_t piece : {size_t(1), size_t(7), size_t(1025), data.size()})
+    EXPECT_EQ(inflate_all(deflate_in_pieces(data, piece), data.size()), data) << "piece " << piece;
+}
+
+TEST(RunDeflater, RoundTripsRandomAndEmptyInput) {
+  std::mt19937 rng(5);
+  std::vector<uint8_t> data(100000);
+  for (auto& b : data) b = uint8_t(rng());
+  EXPECT_EQ(inflate_all(deflate_in_pieces(data, 4096), data.size()), data);
+  EXPECT_TRUE(inflate_all(deflate_in_pieces({}, 1), 0).empty());
+}
+
+TEST(RunDeflater, LimitsCodeLengthsOnSkewedFrequencies) {
+  // Byte k appears 2^k times: a plain Huffman tree would be 18 deep, deflate allows 15.
+  std::vector<uint8_t> data;
+  for (int k = 0; k < 18; ++k) data.insert(data.end(), size_t(1) << k, uint8_t(k));
+  std::shuffle(data.begin(), data.end(), std::mt19937(3));
+  EXPECT_EQ(inflate_all(deflate_in_pieces(data, 1000), data.size()), data);
+}
+
+TEST(RunDeflater, CompressesAMaskLikeZlibsRunLengthStrategy) {
+  // 768 rows of 1025 bytes: filter byte, black, a white span, black.
+  std::vector<uint8_t> data;
+  for (int r = 0; r < 768; ++r) {
+    data.push_back(0);
+    data.insert(data.end(), 300 + r / 4, 0);
+    data.insert(data.end(), 400, 255);
+    data.insert(data.end(), 1024 - 700 - r / 4, 0);
+  }
+  const std::vector<uint8_t> z = deflate_in_pieces(data, 1025);
+  EXPECT_EQ(inflate_all(z, data.size()), data);
+  uLongf bound = compressBound(uLong(data.size()));
+  std::vector<uint8_t> zz(bound);
+  z_stream s{};
+  deflateInit2(&s, 1, Z_DEFLATED, 15, 8, Z_RLE);
+  s.next_in = data.data();
+  s.avail_in = uInt(data.size());
+  s.next_out = zz.data();
+  s.avail_out = uInt(bound);
+  ASSERT_EQ(deflate(&s, Z_FINISH), Z_STREAM_END);
+  const size_t zlib_size = s.total_out;
+  deflateEnd(&s);
+  EXPECT_LE(z.size(), zlib_size + zlib_size / 10);  // within 10 % of zlib
+}
