@@ -55,9 +55,10 @@ struct Slices {
   bool has_encoding() const { return face.size() == points() && edge.size() == points() && t.size() == points(); }
 };
 
-// Throws Error naming the first inconsistency: offset arrays not starting at 0, not monotone or
-// not ending at the array sizes, array lengths that disagree, an edge > 2, t outside (0, 1],
-// a face id >= fingerprint.faces, or non-finite numbers.
+// Throws Error naming the first inconsistency: a thickness that is not positive, offset arrays
+// not starting at 0, not increasing (every contour has at least one point) or not ending at the
+// array sizes, array lengths that disagree, an open flag other than 0 or 1, an edge > 2, t
+// outside (0, 1], a face id >= fingerprint.faces, or non-finite numbers.
 void validate_slices(const Slices& s);
 
 }  // namespace slicereuse
