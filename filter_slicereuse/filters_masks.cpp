@@ -61,8 +61,15 @@ Result run_export_masks(const ParamValues& values, Host& host) {
   host.log(format("Export Mask Images: %zu layers of %dx%d pixels to %s, %zu open contours ignored, %.3f s",
                   stats.layers, profile.width_px, profile.height_px, output_path.c_str(),
                   stats.ignored_open_contours, seconds));
+  if (stats.outside_display)
+    host.log(format("Export Mask Images: warning: the part (x %.2f to %.2f mm, y %.2f to %.2f mm, offset %g, %g mm) "
+                    "does not fit the %.2f x %.2f mm display; its masks are cut off at the edges",
+                    stats.min_x, stats.max_x, stats.min_y, stats.max_y, profile.offset_x_mm, profile.offset_y_mm,
+                    1e-3 * profile.width_px * profile.pixel_size_x_um,
+                    1e-3 * profile.height_px * profile.pixel_size_y_um));
   return {{"layers", int64_t(stats.layers)},
           {"ignored_open_contours", int64_t(stats.ignored_open_contours)},
+          {"outside_display", int64_t(stats.outside_display)},
           {"seconds", seconds}};
 }
 

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <chrono>
 #include <cstring>
 #include <filesystem>
@@ -178,6 +179,34 @@ class BatchEncoder {
 
 }  // namespace
 
+namespace {
+
+// The display covers |x + offset_x| <= width * pixel / 2 around the model origin (likewise y).
+void measure_extent(const Slices& s, const PrinterProfile& p, MaskExportStats& stats) {
+  double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
+  const long long C = static_cast<long long>(s.contours());
+#pragma omp parallel for reduction(min : lo_x, lo_y) reduction(max : hi_x, hi_y) schedule(dynamic, 256)
+  for (long long c = 0; c < C; ++c) {
+    if (s.contour_open[c]) continue;
+    for (size_t i = s.contour_begin[c]; i < s.contour_begin[c + 1]; ++i) {
+      lo_x = std::min(lo_x, s.xyz[3 * i]);
+      hi_x = std::max(hi_x, s.xyz[3 * i]);
+      lo_y = std::min(lo_y, s.xyz[3 * i + 1]);
+      hi_y = std::max(hi_y, s.xyz[3 * i + 1]);
+    }
+  }
+  if (lo_x > hi_x) return;  // no closed contour: nothing is drawn
+  stats.min_x = lo_x;
+  stats.max_x = hi_x;
+  stats.min_y = lo_y;
+  stats.max_y = hi_y;
+  const double half_w = 0.5e-3 * p.width_px * p.pixel_size_x_um, half_h = 0.5e-3 * p.height_px * p.pixel_size_y_um;
+  stats.outside_display = lo_x + p.offset_x_mm < -half_w || hi_x + p.offset_x_mm > half_w ||
+                          lo_y + p.offset_y_mm < -half_h || hi_y + p.offset_y_mm > half_h;
+}
+
+}  // namespace
+
 MaskExportStats export_masks(const Slices& s, const PrinterProfile& profile,
                              const std::string& output_path, const Progress& progress) {
   const auto start = std::chrono::steady_clock::now();
@@ -198,6 +227,7 @@ MaskExportStats export_masks(const Slices& s, const PrinterProfile& profile,
   MaskExportStats stats;
   stats.layers = s.layers();
   stats.ignored_open_contours = s.open_contours();
+  measure_extent(s, profile, stats);
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return stats;
 }

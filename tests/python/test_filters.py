@@ -71,7 +71,8 @@ def test_masks_and_compare_results(sliced):
     m = ms.apply_filter("export_mask_images", contour_file=str(tmp / "s.ctr"),
                         output_path=str(tmp / "masks"), width_px=256, height_px=192,
                         pixel_size_x_um=300, pixel_size_y_um=300)
-    assert set(m) == {"layers", "ignored_open_contours", "seconds"}
+    assert set(m) == {"layers", "ignored_open_contours", "outside_display", "seconds"}
+    assert m["outside_display"] == 0
     assert m["layers"] == r["layers"] and m["ignored_open_contours"] == 0
     assert len(list((tmp / "masks").glob("*.png"))) == r["layers"]
     c = ms.apply_filter("compare_mask_stacks", stack_a=str(tmp / "masks"), stack_b=str(tmp / "masks"),

@@ -474,3 +474,20 @@ TEST_F(MaskFiles, FailedOrCancelledExportLeavesNothing) {
   std::ofstream(dir + "/file") << "x";
   EXPECT_THROW(export_masks(s, small_display(), dir + "/file"), Error);
 }
+
+TEST_F(MaskFiles, ReportsAPartThatLeavesTheDisplay) {
+  // A 10 mm square on layer 0 of a 20 x 20 mm display: it fits, until the offset pushes it out.
+  const Slices s = make_slices({{rect(-5, -5, 5, 5)}, {rect(-5, -5, 5, 5)}});
+  PrinterProfile p = small_display();
+  MaskExportStats st = export_masks(s, p, dir + "/fits");
+  EXPECT_FALSE(st.outside_display);
+  EXPECT_EQ(st.min_x, -5.0);
+  EXPECT_EQ(st.max_x, 5.0);
+  EXPECT_EQ(st.min_y, -5.0);
+  EXPECT_EQ(st.max_y, 5.0);
+  p.offset_x_mm = 5;  // right edge exactly at the display edge: still inside
+  EXPECT_FALSE(export_masks(s, p, dir + "/edge").outside_display);
+  p.offset_x_mm = 0;
+  p.offset_y_mm = -5.5;
+  EXPECT_TRUE(export_masks(s, p, dir + "/cut").outside_display);
+}

@@ -34,6 +34,10 @@ size_t rasterize_layer(const Slices& s, size_t k, const PrinterProfile& profile,
 struct MaskExportStats {
   size_t layers = 0;
   size_t ignored_open_contours = 0;
+  // The closed contours' extent in mm, model coordinates, and whether it leaves the display
+  // (the masks are then cut off at the display's edges).
+  double min_x = 0, max_x = 0, min_y = 0, max_y = 0;
+  bool outside_display = false;
   double seconds = 0;
 };
 
