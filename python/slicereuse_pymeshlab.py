@@ -8,7 +8,9 @@
 
 The plugin is build/2025/plugins/libfilter_slicereuse.so, or $SLICEREUSE_PLUGIN. Filters
 loaded late are not MeshSet methods: call them through ms.apply_filter(name, **params); the
-result is a dict. Errors raise pymeshlab.PyMeshLabException with the filter's message.
+result is a dict. Errors raise pymeshlab.PyMeshLabException with the filter's message. After
+catching one, keep that MeshSet alive (or run a filter on it that succeeds) before loading meshes
+into another: pymeshlab 2025.7.post1 otherwise logs into the freed MeshSet (see README).
 """
 import json
 import os

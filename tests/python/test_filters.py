@@ -94,7 +94,15 @@ def test_preview_layer_is_an_edge_mesh_and_not_current(sliced):
     assert preview.edge_number() == preview.vertex_number()  # closed loops only
 
 
+# pymeshlab 2025.7.post1 bug (reproduced with built-in filters alone, under valgrind): after a
+# filter raises, pymeshlab keeps logging into that MeshSet's log until a filter succeeds again;
+# once that MeshSet is destroyed, loading a mesh into another one writes into freed memory
+# (seen as std::bad_alloc in later tests). MeshSets that saw an error are kept alive here.
+_FAILED_MESH_SETS = []
+
+
 def _raises(pymeshlab, ms, filter_name, message, **params):
+    _FAILED_MESH_SETS.append(ms)
     with pytest.raises(pymeshlab.PyMeshLabException) as e:
         ms.apply_filter(filter_name, **params)
     assert message in str(e.value), str(e.value)
@@ -147,8 +155,10 @@ def test_interpreter_survives_errors(pymeshlab, sliced):
 
 
 def test_no_current_mesh(pymeshlab):
+    ms = pymeshlab.MeshSet()
+    _FAILED_MESH_SETS.append(ms)
     with pytest.raises(pymeshlab.PyMeshLabException):
-        pymeshlab.MeshSet().apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS)
+        ms.apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS)
 
 
 def test_truncated_or_corrupted_encoding_is_refused(pymeshlab, sliced):
