@@ -44,6 +44,15 @@ void drop_encoding(Slices& s) {
   s.t = {};
 }
 
+Slices slice_all(const Mesh& target, std::vector<double> planes, bool with_encoding, TransferStats& st,
+                 const Progress& progress) {
+  st.resliced_layers = planes.size();
+  st.transferred_layers = 0;
+  Slices all = slice_planes(target, std::move(planes), progress);
+  if (!with_encoding) drop_encoding(all);
+  return all;
+}
+
 // Slices with enc's layers and contours, and room for their points.
 Slices same_layout(const Slices& enc) {
   Slices out;
@@ -171,10 +180,15 @@ Slices transfer_exact(const Slices& enc, const Ends& ends, const Mesh& target, b
   // see straddling_faces.h), or the layer is re-sliced without being transferred at all.
   const std::vector<uint64_t> counts = straddling_face_counts(target, planes);
   std::vector<uint8_t> ok(L, 0);
+  size_t candidates = 0;
   for (size_t k = 0; k < Le; ++k) {
     ok[k] = counts[k] == end_point(enc, k) - first_point(enc, k);
     for (size_t c = enc.layer_begin[k]; c < enc.layer_begin[k + 1]; ++c) ok[k] &= !enc.contour_open[c];
+    candidates += ok[k];
   }
+  // A member that changed in z can fail most layers; transferring the rest and splicing would
+  // then cost more than slicing every layer (the result is the same by construction).
+  if (2 * candidates < L) return slice_all(target, std::move(planes), with_encoding, st, progress);
   Slices moved = same_layout(enc);
   if (with_encoding) {
     moved.face.resize(enc.points());
@@ -198,14 +212,7 @@ Slices transfer_exact(const Slices& enc, const Ends& ends, const Mesh& target, b
     st.transferred_layers = L;
     return moved;
   }
-  // A member that changed in z can fail most layers; splicing would then cost a full copy on
-  // top of slicing, so slice every layer instead (the result is the same by construction).
-  if (2 * redo.size() > L) {
-    st.resliced_layers = L;
-    Slices all = slice_planes(target, std::move(planes), progress);
-    if (!with_encoding) drop_encoding(all);
-    return all;
-  }
+  if (2 * redo.size() > L) return slice_all(target, std::move(planes), with_encoding, st, progress);
   st.resliced_layers = redo.size();
   st.transferred_layers = L - redo.size();
   Slices fresh = slice_planes(target, std::move(redo_planes), progress);
