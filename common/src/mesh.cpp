@@ -1,11 +1,21 @@
 #include "slicereuse/mesh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "slicereuse/error.h"
 
 namespace slicereuse {
+
+ZRange z_range(const Mesh& mesh) {
+  ZRange r{mesh.V[2], mesh.V[2]};
+  for (size_t i = 2; i < mesh.V.size(); i += 3) {
+    r.min = std::min(r.min, mesh.V[i]);
+    r.max = std::max(r.max, mesh.V[i]);
+  }
+  return r;
+}
 
 void validate_mesh(const Mesh& mesh) {
   if (mesh.V.size() % 3 != 0) throw Error("mesh vertex array length is not a multiple of 3");

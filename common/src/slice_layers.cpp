@@ -145,13 +145,9 @@ FaceRange face_range(const Mesh& mesh, size_t f, const std::vector<double>& laye
 
 Slices slice_layers(const Mesh& mesh, const SliceOptions& options, const Progress& progress) {
   validate_mesh(mesh);
-  double zmin = mesh.V[2], zmax = mesh.V[2];
-  for (size_t i = 2; i < mesh.V.size(); i += 3) {
-    zmin = std::min(zmin, mesh.V[i]);
-    zmax = std::max(zmax, mesh.V[i]);
-  }
-  const double z_start = std::isnan(options.z_start) ? zmin : options.z_start;
-  Slices out = slice_planes(mesh, layer_planes(z_start, options.thickness, zmax), progress);
+  const ZRange z = z_range(mesh);
+  const double z_start = std::isnan(options.z_start) ? z.min : options.z_start;
+  Slices out = slice_planes(mesh, layer_planes(z_start, options.thickness, z.max), progress);
   out.z_start = z_start;
   out.thickness = options.thickness;
   return out;

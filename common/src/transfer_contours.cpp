@@ -69,9 +69,7 @@ Slices same_layout(const Slices& enc) {
 // shorter one no empty ones.
 std::vector<double> target_planes(const Slices& enc, const Mesh& target) {
   if (!(enc.thickness > 0)) return enc.layer_z;
-  double zmax = target.V[2];
-  for (size_t i = 2; i < target.V.size(); i += 3) zmax = std::max(zmax, target.V[i]);
-  std::vector<double> planes = layer_planes(enc.z_start, enc.thickness, zmax);
+  std::vector<double> planes = layer_planes(enc.z_start, enc.thickness, z_range(target).max);
   std::copy_n(enc.layer_z.begin(), std::min(planes.size(), enc.layers()), planes.begin());
   return planes;
 }

@@ -18,15 +18,6 @@ using namespace slicereuse::test;
 
 namespace {
 
-struct Range {
-  double lo, hi;
-};
-Range z_range(const Mesh& m) {
-  Range r{m.V[2], m.V[2]};
-  for (size_t i = 2; i < m.V.size(); i += 3) r.lo = std::min(r.lo, m.V[i]), r.hi = std::max(r.hi, m.V[i]);
-  return r;
-}
-
 // Smallest cosine between a face's normal in `m` and in `base`: positive means no face flipped.
 double min_normal_cosine(const Mesh& base, const Mesh& m) {
   double worst = 1;
@@ -152,9 +143,9 @@ TEST_P(FamilyShape, MembersAreClosedManifoldsSharingFaces) {
     o.z_change = z_change;
     const Mesh base = make_family_base(o);
     EXPECT_NEAR(double(base.faces()), 4000.0, 4000 * 0.05);
-    const Range zb = z_range(base);
-    EXPECT_EQ(zb.lo, 0.0);
-    EXPECT_EQ(zb.hi, 14.484);
+    const ZRange zb = z_range(base);
+    EXPECT_EQ(zb.min, 0.0);
+    EXPECT_EQ(zb.max, 14.484);
     const long euler = 2 - 2 * family_shape_genus(o.shape);
     for (int i = 0; i < 4; ++i) {
       SCOPED_TRACE(o.shape + " member " + std::to_string(i) + (z_change ? " z-change" : ""));
@@ -167,10 +158,10 @@ TEST_P(FamilyShape, MembersAreClosedManifoldsSharingFaces) {
       EXPECT_GT(signed_volume(m), 0);
       EXPECT_GT(min_normal_cosine(base, m), 0);
       EXPECT_EQ(self_intersections(m), 0u);
-      const Range z = z_range(m);
-      EXPECT_EQ(z.lo, 0.0);
+      const ZRange z = z_range(m);
+      EXPECT_EQ(z.min, 0.0);
       if (!z_change) {
-        EXPECT_EQ(z.hi, zb.hi);
+        EXPECT_EQ(z.max, zb.max);
         for (size_t v = 2; v < m.V.size(); v += 3) ASSERT_EQ(m.V[v], base.V[v]);
       }
       if (i == 0) {
@@ -181,7 +172,7 @@ TEST_P(FamilyShape, MembersAreClosedManifoldsSharingFaces) {
         EXPECT_NEAR(signed_volume(m), signed_volume(base), 0.35 * signed_volume(base));
       }
       if (i > 0 && z_change) {
-        EXPECT_NE(z.hi, zb.hi);
+        EXPECT_NE(z.max, zb.max);
       }
     }
   }

@@ -16,6 +16,12 @@ struct Mesh {
   size_t faces() const { return F.size() / 3; }
 };
 
+// The lowest and highest vertex z; the mesh must have a vertex.
+struct ZRange {
+  double min, max;
+};
+ZRange z_range(const Mesh& mesh);
+
 // Throws Error when the mesh has no faces, V or F has a length not divisible by 3, an index is
 // out of range, or a coordinate is not finite.
 void validate_mesh(const Mesh& mesh);
