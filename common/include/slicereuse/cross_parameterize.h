@@ -1,0 +1,51 @@
+#pragma once
+// cross_parameterize: a map between two meshes of one product family that differ in
+// connectivity (other vertex count, faces, order), with the method's in-plane constraint: a
+// source vertex at height h maps onto the target at height h.
+//
+// Input: source and target meshes and options (landmark pairs, in_plane).
+// Output: the SurfaceMap (one target point per source vertex), a quality report, and a patch id
+// per vertex of both meshes (the same id marks corresponding regions, for colouring).
+// Throws Error with a message that names the problem for input it cannot map (see the .cpp
+// header comment for the approach and its limits).
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "slicereuse/mesh.h"
+#include "slicereuse/progress.h"
+#include "slicereuse/surface_map.h"
+
+namespace slicereuse {
+
+struct CrossParamOptions {
+  bool in_plane = true;
+  // Corresponding points, source_landmarks[i] <-> target_landmarks[i] (equal lengths; may be
+  // empty: then the correspondence is found automatically or refused with a clear message).
+  std::vector<std::array<double, 3>> source_landmarks;
+  std::vector<std::array<double, 3>> target_landmarks;
+};
+
+struct CrossParamQuality {
+  uint64_t flipped_triangles = 0;  // source triangles whose image is folded over; 0 expected
+  double max_height_error = 0;     // max |z(image) - z(source vertex)| (mm)
+  double rms_height_error = 0;
+  double area_distortion = 0;      // mean |log(image area / source area)| over triangles
+  double angle_distortion = 0;     // mean |image angle - source angle| over corners (degrees)
+  uint64_t patches = 0;
+  int genus = 0;                   // of the source (equal to the target's, or refused)
+  double seconds = 0;
+};
+
+struct CrossParamResult {
+  SurfaceMap map;
+  CrossParamQuality quality;
+  std::vector<uint32_t> source_patch;  // per source vertex
+  std::vector<uint32_t> target_patch;  // per target vertex; same id = corresponding patch
+};
+
+CrossParamResult cross_parameterize(const Mesh& source, const Mesh& target, const CrossParamOptions& options,
+                                    const Progress& progress = {});
+
+}  // namespace slicereuse
