@@ -227,6 +227,11 @@ void add_entry(zip_t* za, const std::string& name, zip_source_t* src, bool store
 }  // namespace
 
 void write_sl1(const std::string& path, const Sl1Job& job, const LayerPng& layer_png) {
+  const std::time_t now = std::time(nullptr);
+  // Declared before the archive: zip_discard (on any error) calls layer_cb to free each layer
+  // source, so the entries must outlive the archive.
+  Layers layers{&layer_png, now, nullptr, {}};
+  std::vector<LayerEntry> entries(job.layers);
   AtomicFile out(path);
   Target target{out.stream(), {}};
   ZipError error;
@@ -238,15 +243,12 @@ void write_sl1(const std::string& path, const Sl1Job& job, const LayerPng& layer
   }
   std::unique_ptr<zip_t, void (*)(zip_t*)> archive(za, zip_discard);
 
-  const std::time_t now = std::time(nullptr);
   const std::string name = job_name(path);
   const std::string config = config_ini(job, name, now), slicer = prusaslicer_ini(job);
   add_entry(za, "config.ini", zip_source_buffer(za, config.data(), config.size(), 0), false, path);
   add_entry(za, "prusaslicer.ini", zip_source_buffer(za, slicer.data(), slicer.size(), 0), false,
             path);
 
-  Layers layers{&layer_png, now, nullptr, {}};
-  std::vector<LayerEntry> entries(job.layers);
   for (size_t k = 0; k < job.layers; ++k) {
     entries[k].layers = &layers;
     entries[k].k = k;
