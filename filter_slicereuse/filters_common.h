@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "filter_api.h"
+#include "slicereuse/format.h"
 
 namespace slicereuse::plugin {
 
@@ -41,8 +42,5 @@ class StagedOutputs {
 void check_outputs(const std::vector<std::pair<const char*, std::string>>& named_paths);
 
 double seconds_since(std::chrono::steady_clock::time_point start);
-
-// printf-style formatting for log lines.
-std::string format(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
 
 }  // namespace slicereuse::plugin

@@ -1,5 +1,4 @@
 // run_filter's dispatch and the helpers shared by the filter implementations.
-#include <cstdarg>
 #include <cstdio>
 #include <filesystem>
 #include <system_error>
@@ -66,18 +65,6 @@ void check_outputs(const std::vector<std::pair<const char*, std::string>>& named
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-std::string format(const char* fmt, ...) {
-  va_list args, copy;
-  va_start(args, fmt);
-  va_copy(copy, args);
-  const int n = std::vsnprintf(nullptr, 0, fmt, copy);
-  va_end(copy);
-  std::string s(n > 0 ? size_t(n) : 0, '\0');
-  if (n > 0) std::vsnprintf(s.data(), s.size() + 1, fmt, args);
-  va_end(args);
-  return s;
 }
 
 }  // namespace slicereuse::plugin

@@ -2,25 +2,24 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
 
 #include "slicereuse/error.h"
+#include "slicereuse/format.h"
 
 namespace slicereuse {
 
 std::vector<double> layer_planes(double z_start, double thickness, double zmax) {
   if (!(thickness > 0) || !std::isfinite(thickness))
-    throw Error("layer thickness must be a positive number, got " + std::to_string(thickness));
+    throw Error(format("layer thickness must be a positive number, got %g", thickness));
   if (!std::isfinite(z_start) || !std::isfinite(zmax))
     throw Error("slicing range is not finite");
   if (!(z_start < zmax))
-    throw Error("no layers: z_start " + std::to_string(z_start) +
-                " is not below the top of the mesh at z = " + std::to_string(zmax));
+    throw Error(format("no layers: z_start %g mm is not below the top of the mesh at z = %g mm", z_start, zmax));
   const double estimate = std::ceil((zmax - z_start) / thickness);
   if (!(estimate <= double(kMaxLayers)))
-    throw Error("layer thickness " + std::to_string(thickness) + " gives " +
-                std::to_string(estimate) + " layers, more than the limit of " +
-                std::to_string(kMaxLayers) + " (check the units: thickness is in mm)");
+    throw Error(format("a layer thickness of %g mm gives %.4g layers over the part's %g mm, more than the "
+                       "limit of %zu (check the units: thickness is in mm)",
+                       thickness, estimate, zmax - z_start, kMaxLayers));
   size_t n = size_t(estimate);
   // The rounded quotient can be one off either way; the definition is the slab bottom test.
   while (n > 0 && z_start + double(n - 1) * thickness >= zmax) --n;
