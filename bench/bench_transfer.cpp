@@ -63,7 +63,7 @@ int main(int argc, char** argv) {
               "then contours only through the edge ends; barycentric. speed-up: direct / each exact column\n");
   std::printf("%-6s %9s %8s %7s %7s %7s %7s %7s %7s %7s %7s\n", "member", "points", "resliced", "direct", "exact",
               "ends", "contour", "barycen", "exact", "ends", "contour");
-  for (int z_change = 0; z_change < 2; ++z_change) {
+  for (test::ZChange z_change : {test::ZChange::None, test::ZChange::Band, test::ZChange::Everywhere}) {
     args.family.z_change = z_change;
     for (int i = 1; i < args.members; ++i) {
       const Mesh member = test::make_family_member(base, args.family, i);
@@ -89,7 +89,8 @@ int main(int argc, char** argv) {
         return 1;
       }
       std::printf("%-6s %9zu %8zu %7.3f %7.3f %7.3f %7.3f %7.3f %6.1fx %6.1fx %6.1fx\n",
-                  ((z_change ? "z" : "xy") + std::to_string(i)).c_str(), exact.points, stats.resliced_layers,
+                  (std::string(z_change == test::ZChange::None ? "xy" : z_change == test::ZChange::Band ? "band" : "z") +
+                   std::to_string(i)).c_str(), exact.points, stats.resliced_layers,
                   direct.seconds, exact.seconds, prepared.seconds, contours.seconds, bary.seconds,
                   direct.seconds / exact.seconds, direct.seconds / prepared.seconds,
                   direct.seconds / contours.seconds);

@@ -1,15 +1,18 @@
 #pragma once
 // The host-independent face of the slicereuse filters: what each filter is called, which
-// parameters it takes, and what it does. Written once; a shim per MeshLab API generation
-// (shim_2020.cpp, shim_2025.cpp) turns FilterSpec into that generation's declarations and
-// RichParameters, implements Host over its MeshDocument, and turns Error into its error path.
+// parameters it takes, which meshes it needs, and what it does. Written once; host_adapter.h
+// turns FilterSpec into MeshLab declarations and RichParameters, implements Host over a
+// MeshDocument and turns Error into the host's error path, for both MeshLab API generations
+// (their differences are in host_meshlab_2020.h / host_meshlab_2025.h).
 // No Qt and no MeshLab headers here.
+#include <charconv>
 #include <cstdint>
 #include <map>
 #include <string>
 #include <variant>
 #include <vector>
 
+#include "slicereuse/error.h"
 #include "slicereuse/mesh.h"
 #include "slicereuse/progress.h"
 
@@ -30,37 +33,66 @@ struct ParamSpec {
 
 enum class FilterId { SliceWithEncoding, TransferSlicing, ExportMasks, CompareMasks };
 
+// Which meshes a filter works on (MeshLab's arity): none (files only), the current mesh, or the
+// meshes its Mesh parameters name.
+enum class Arity { None, CurrentMesh, MeshParameters };
+
+// The menus a filter appears in (bits; MeshLab's FilterClass has one value per menu).
+enum FilterClass : unsigned { kLayerClass = 1, kMeasureClass = 2 };
+
 struct FilterSpec {
   FilterId id;
   std::string name;         // menu name, e.g. "Slice Mesh with Encoding"
   std::string python_name;  // e.g. "slice_mesh_with_encoding"
   std::string description;  // HTML, shown in the dialog and in pymeshlab's doc
-  bool needs_current_mesh;  // false: runs on files only (masks, compare)
+  Arity arity;
+  unsigned filter_class;    // FilterClass bits
+  bool needs_faces;         // precondition: the current mesh must have faces
   std::vector<ParamSpec> params;
 };
 
 const std::vector<FilterSpec>& filter_specs();
-const FilterSpec& filter_spec(FilterId id);
+const FilterSpec* find_filter_spec(int id);  // nullptr if no filter has this id
 
-// Parameter values as the shim read them: numbers (Float/Int/Enum/Bool/Mesh index) and texts.
+// Parameter values as the host adapter read them: numbers (Float/Int/Enum/Bool, and Mesh as
+// the host's mesh reference: list index in 2020, mesh id in 2025) and texts.
+// Inline, like float_as_typed, so another plugin can use the adapter without this plugin's code.
 struct ParamValues {
   std::map<std::string, double> numbers;
   std::map<std::string, std::string> texts;
-  double number(const std::string& name) const;      // throws Error if missing
-  const std::string& text(const std::string& name) const;
+  double number(const std::string& name) const {  // throws Error if missing
+    auto it = numbers.find(name);
+    if (it == numbers.end()) throw Error("missing numeric parameter '" + name + "'");
+    return it->second;
+  }
+  const std::string& text(const std::string& name) const {
+    auto it = texts.find(name);
+    if (it == texts.end()) throw Error("missing text parameter '" + name + "'");
+    return it->second;
+  }
 };
 
 // Both MeshLab generations keep Float parameters as float, so 0.1 typed by the user arrives as
 // 0.100000001490116. The shortest decimal that rounds to that float is what the user typed;
-// shims read Float parameters through this, so both hosts slice on the planes the user meant.
-double float_as_typed(float value);
+// the adapter reads Float parameters through this, so both hosts slice on the planes the user
+// meant.
+inline double float_as_typed(float value) {
+  char buf[32];
+  const auto end = std::to_chars(buf, buf + sizeof buf, value).ptr;
+  double d = value;
+  std::from_chars(buf, end, d);
+  return d;
+}
 
-// What a filter needs from the host; implemented by each shim.
+// What a filter needs from the host; implemented once over MeshLab's MeshDocument by
+// DocumentHost in host_adapter.h. To add a method: declare it here, implement it in
+// DocumentHost (the MeshDocument calls are the same in both generations; where they differ,
+// add a function to both traits headers, host_meshlab_2020.h and host_meshlab_2025.h).
 class Host {
  public:
   virtual ~Host() = default;
   virtual Mesh current_mesh() = 0;                   // throws Error if there is none
-  virtual Mesh mesh_at(int index) = 0;               // a Mesh parameter's value
+  virtual Mesh mesh_at(int ref) = 0;                 // a Mesh parameter's value; Error if none
   // Adds a new layer showing polylines: points xyz (3n), segments as point index pairs.
   virtual void add_polyline_layer(const std::string& name, const std::vector<double>& xyz,
                                   const std::vector<uint32_t>& segments) = 0;

@@ -1,6 +1,4 @@
-// The four filters' names, descriptions and parameters (see filter_api.h), plus ParamValues.
-#include <charconv>
-
+// The four filters' names, descriptions, meshes they need, and parameters (see filter_api.h).
 #include "filter_api.h"
 #include "slicereuse/error.h"
 
@@ -61,6 +59,8 @@ FilterSpec slice_spec() {
                    ".srb; see docs/formats.md). Both appear together or not at all. Optionally "
                    "adds a few layers' contours as a new edge-mesh layer to look at.</p>") +
                    kReference,
+               Arity::CurrentMesh,
+               kLayerClass,
                true,
                {}};
   f.params = {
@@ -103,6 +103,8 @@ FilterSpec transfer_spec() {
                    "<p>Writes the target's contour file and its own encoding, so it can be a "
                    "source later. Both appear together or not at all.</p>") +
                    kReference,
+               Arity::MeshParameters,
+               kLayerClass,
                true,
                {}};
   f.params = {
@@ -141,6 +143,8 @@ FilterSpec masks_spec() {
                    "0 is the top of the image (largest y). Pixel sizes are in micrometres, "
                    "offsets in mm. The current mesh is not used.</p>") +
                    kReference,
+               Arity::None,
+               kLayerClass,
                false,
                {}};
   f.params = {
@@ -181,6 +185,8 @@ FilterSpec compare_spec() {
                    "one CSV row per layer. The stacks must have the same number of layers and "
                    "image size. The current mesh is not used.</p>") +
                    kReference,
+               Arity::None,
+               kLayerClass | kMeasureClass,
                false,
                {}};
   f.params = {
@@ -203,30 +209,10 @@ const std::vector<FilterSpec>& filter_specs() {
   return specs;
 }
 
-const FilterSpec& filter_spec(FilterId id) {
+const FilterSpec* find_filter_spec(int id) {
   for (const FilterSpec& f : filter_specs())
-    if (f.id == id) return f;
-  throw Error("unknown filter id " + std::to_string(int(id)));
-}
-
-double ParamValues::number(const std::string& name) const {
-  auto it = numbers.find(name);
-  if (it == numbers.end()) throw Error("missing numeric parameter '" + name + "'");
-  return it->second;
-}
-
-const std::string& ParamValues::text(const std::string& name) const {
-  auto it = texts.find(name);
-  if (it == texts.end()) throw Error("missing text parameter '" + name + "'");
-  return it->second;
-}
-
-double float_as_typed(float value) {
-  char buf[32];
-  const auto end = std::to_chars(buf, buf + sizeof buf, value).ptr;
-  double d = value;
-  std::from_chars(buf, end, d);
-  return d;
+    if (int(f.id) == id) return &f;
+  return nullptr;
 }
 
 }  // namespace slicereuse::plugin

@@ -1,6 +1,6 @@
 #pragma once
 // Conversions between a vcg triangle mesh (MeshLab's CMeshO, float in 2020.09, double in
-// 2025.07) and slicereuse::Mesh, shared by the shims. Header-only and vcg-only, so it compiles
+// 2025.07) and slicereuse::Mesh, used by host_adapter.h. Header-only and vcg-only, so it compiles
 // against either generation's vcglib; include it after the host's MeshLab headers.
 //
 // mesh_from_vcg: live vertices and faces in storage order, deleted ones skipped and indices

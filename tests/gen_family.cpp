@@ -1,6 +1,8 @@
 // gen_family: writes a mass-customization family (see support/family.h) as PLY files.
-//   gen_family --shape {arch,ear,handle,box,sphere,torus} --faces N --members M [--z-change]
-//              --height MM --seed S --out DIR
+//   gen_family --shape {arch,ear,handle,box,sphere,torus} --faces N --members M
+//              [--z-change | --z-band] --height MM --seed S --out DIR
+// --z-change: z changes everywhere (ZChange::Everywhere); --z-band: only within one band of
+// heights (ZChange::Band).
 // writes DIR/member_000.ply (the base) ... and prints "path vertices faces" per file.
 #include <charconv>
 #include <cstdio>
@@ -34,8 +36,8 @@ int main(int argc, char** argv) {
     std::string out;
     for (int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
-      if (a == "--z-change") {
-        o.z_change = true;
+      if (a == "--z-change" || a == "--z-band") {
+        o.z_change = a == "--z-change" ? test::ZChange::Everywhere : test::ZChange::Band;
         continue;
       }
       if (i + 1 >= argc) throw Error(a + ": missing value");

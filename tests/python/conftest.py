@@ -3,6 +3,7 @@
 Run: scripts/python -m pytest tests/python
 Needs the 2025 plugin (build/2025, or $SLICEREUSE_PLUGIN) and the family generator gen_family
 ($SLICEREUSE_GEN_FAMILY, else build/2020/tests/gen_family, else any build/*/tests/gen_family).
+A missing gen_family is an error, not a skip: scripts/build builds it.
 """
 import os
 import subprocess
@@ -35,23 +36,27 @@ def pymeshlab():
     return sr.load()
 
 
+Z_CHANGE_FLAGS = {None: [], "band": ["--z-band"], "everywhere": ["--z-change"]}
+
+
 @pytest.fixture(scope="session")
 def make_family(tmp_path_factory):
-    """make_family(shape, members, z_change=False, faces=3000, seed=1) -> [member paths]."""
+    """make_family(shape, members, z_change=None, faces=3000, seed=1) -> [member paths].
+    z_change: None (members differ in x-y only), "band" (z also changes within one band of
+    heights) or "everywhere" (z changes at every height); see tests/support/family.h."""
     binary = _gen_family_binary()
     if binary is None:
-        pytest.skip("gen_family not built: cmake --build build/2020 --target gen_family "
+        pytest.fail("gen_family not built: cmake --build build/2020 --target gen_family "
                     "(or set SLICEREUSE_GEN_FAMILY)")
     cache = {}
 
-    def make(shape, members, z_change=False, faces=3000, seed=1):
+    def make(shape, members, z_change=None, faces=3000, seed=1):
         key = (shape, members, z_change, faces, seed)
         if key not in cache:
-            out = tmp_path_factory.mktemp(f"{shape}{'_z' if z_change else ''}")
+            out = tmp_path_factory.mktemp(f"{shape}_{z_change or 'xy'}")
             cmd = [str(binary), "--shape", shape, "--faces", str(faces), "--members", str(members),
                    "--height", str(HEIGHT), "--seed", str(seed), "--out", str(out)]
-            if z_change:
-                cmd.append("--z-change")
+            cmd += Z_CHANGE_FLAGS[z_change]
             subprocess.run(cmd, check=True, capture_output=True, text=True)
             cache[key] = [out / f"member_{m:03d}.ply" for m in range(members)]
         return cache[key]

@@ -13,20 +13,32 @@ KEYS = {"mesh", "layers", "points", "resliced_layers", "transfer_seconds", "dire
         "transfer_total_seconds", "direct_total_seconds", "min_similarity"}
 
 
-@pytest.mark.parametrize("z_change", [False, True], ids=["xy", "z"])
-@pytest.mark.parametrize("shape", SHAPES)
+CASES = [(shape, z) for z in (None, "band") for shape in SHAPES] + [("arch", "everywhere")]
+
+
+@pytest.mark.parametrize("shape, z_change", CASES, ids=[f"{s}-{z or 'xy'}" for s, z in CASES])
 def test_transfer_equals_direct_slicing(make_family, tmp_path, shape, z_change):
+    """Transferred members equal direct slicing (same points, S = 1), and the layer counts show
+    the path taken: x-y members transfer every layer; a z change within one band of heights
+    re-slices that band's layers and transfers most; a z change everywhere fails most layers'
+    certificate, so the transfer falls back to slicing every layer."""
     members = make_family(shape, 3, z_change=z_change)
     result = sr.family(members[0], members[1:], THICKNESS, tmp_path)
     assert result["source"] == str(members[0])
     assert [t["mesh"] for t in result["targets"]] == [str(m) for m in members[1:]]
     for t in result["targets"]:
         assert t["points"] == t["direct_points"] > 0, t
-        assert t["layers"] > 0
+        # x-y and band members keep the base's height: 8 mm at 0.1 mm.
+        assert t["layers"] == (80 if z_change != "everywhere" else pytest.approx(80, abs=3)), t
         assert t["min_similarity"] == 1.0, t
-        if not z_change:
+        transferred = t["layers"] - t["resliced_layers"]
+        if z_change is None:
             # x-y deformations keep every vertex on its side of every plane.
             assert t["resliced_layers"] == 0, t
+        elif z_change == "band":
+            assert t["resliced_layers"] > 0 and transferred > 2 * t["resliced_layers"], t
+        else:
+            assert transferred == 0, t
 
 
 def test_cli_prints_one_json_object(make_family, tmp_path):

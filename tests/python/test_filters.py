@@ -37,6 +37,17 @@ def test_slice_result(sliced):
         assert all(p[2] == z for _, pts in contours for p in pts)
 
 
+def _same_points(a, b):
+    """Two text contour files have the same planes and, per layer, the same points (loops may
+    start elsewhere and come in another order)."""
+    _, layers_a = read_text_contours(a)
+    _, layers_b = read_text_contours(b)
+    assert len(layers_a) == len(layers_b)
+    for (za, ca), (zb, cb) in zip(layers_a, layers_b):
+        assert za == zb
+        assert sorted(p for _, pts in ca for p in pts) == sorted(p for _, pts in cb for p in pts)
+
+
 def test_transfer_result_equals_direct(sliced):
     ms, _, target, _, tmp, _ = sliced
     t = ms.apply_filter("transfer_slicing_to_mesh", encoding_file=str(tmp / "s.enc"),
@@ -45,41 +56,97 @@ def test_transfer_result_equals_direct(sliced):
     assert set(t) == {"points", "layers", "transferred_layers", "resliced_layers",
                       "max_plane_deviation", "transfer_seconds", "seconds"}
     assert 0 <= t["transfer_seconds"] <= t["seconds"]
-    assert t["transferred_layers"] + t["resliced_layers"] == t["layers"] == 80
+    # Member 1 differs from member 0 in x-y only: every layer is certified and transferred.
+    assert (t["layers"], t["transferred_layers"], t["resliced_layers"]) == (80, 80, 0)
     assert t["max_plane_deviation"] == 0.0
     ms.set_current_mesh(target)
     d = ms.apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS,
                         contour_file=str(tmp / "d.ctr"))
     assert d["points"] == t["points"] and d["layers"] == t["layers"]
-    _, transferred = read_text_contours(tmp / "t.ctr")
-    _, direct = read_text_contours(tmp / "d.ctr")
-    for (zt, ct), (zd, cd) in zip(transferred, direct):
-        assert zt == zd
-        # Same loops up to order and start point: compare point sets.
-        assert sorted(p for _, pts in ct for p in pts) == sorted(p for _, pts in cd for p in pts)
+    _same_points(tmp / "t.ctr", tmp / "d.ctr")
 
 
-def test_barycentric_mode_reports_deviation(sliced):
+def test_transfer_to_band_member_mixes_transfer_and_reslicing(pymeshlab, make_family, tmp_path):
+    """A member changed in z within one band of heights: the band's layers are re-sliced, the
+    rest transferred, and the result equals slicing the member directly (points; masks S = 1)."""
+    m0, m1 = make_family("arch", 2, z_change="band")
+    ms = pymeshlab.MeshSet()
+    ms.load_new_mesh(str(m0))
+    ms.apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS, contour_file="",
+                    encoding_file=str(tmp_path / "s.enc"))
+    ms.load_new_mesh(str(m1))
+    target = ms.current_mesh_id()
+    t = ms.apply_filter("transfer_slicing_to_mesh", encoding_file=str(tmp_path / "s.enc"),
+                        target_mesh=target, contour_file=str(tmp_path / "t.ctr"))
+    assert t["layers"] == t["transferred_layers"] + t["resliced_layers"] == 80
+    assert t["resliced_layers"] > 0 and t["transferred_layers"] > 2 * t["resliced_layers"], t
+    d = ms.apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS,
+                        contour_file=str(tmp_path / "d.ctr"), encoding_file="")
+    assert d["points"] == t["points"]
+    _same_points(tmp_path / "t.ctr", tmp_path / "d.ctr")
+    for name in ("t", "d"):
+        ms.apply_filter("export_mask_images", contour_file=str(tmp_path / f"{name}.ctr"),
+                        output_path=str(tmp_path / f"masks_{name}"))
+    c = ms.apply_filter("compare_mask_stacks", stack_a=str(tmp_path / "masks_t"),
+                        stack_b=str(tmp_path / "masks_d"))
+    assert (c["layers"], c["min_similarity"], c["differing_pixels"]) == (80, 1.0, 0)
+
+
+def test_barycentric_mode_reports_deviation(pymeshlab, sliced, make_family):
+    # x-y member: the area coordinates keep every point on its plane (up to rounding).
     ms, _, target, _, tmp, _ = sliced
     t = ms.apply_filter("transfer_slicing_to_mesh", encoding_file=str(tmp / "s.enc"),
                         target_mesh=target, mode="barycentric", contour_file=str(tmp / "b.ctr"))
-    assert t["points"] > 0 and t["max_plane_deviation"] >= 0.0
+    assert t["points"] > 0 and t["max_plane_deviation"] < 1e-9
+    _, layers = read_text_contours(tmp / "b.ctr")
+    assert max(abs(p[2] - z) for z, cs in layers for _, pts in cs for p in pts) < 1e-9
+    # Band member: points leave their planes inside the band, by the reported amount.
+    m0, m1 = make_family("arch", 2, z_change="band")
+    ms = pymeshlab.MeshSet()
+    ms.load_new_mesh(str(m0))
+    ms.apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS, contour_file="",
+                    encoding_file=str(tmp / "band.enc"))
+    ms.load_new_mesh(str(m1))
+    t = ms.apply_filter("transfer_slicing_to_mesh", encoding_file=str(tmp / "band.enc"),
+                        target_mesh=ms.current_mesh_id(), mode="barycentric",
+                        contour_file=str(tmp / "band.ctr"))
+    _, layers = read_text_contours(tmp / "band.ctr")
+    worst = max(abs(p[2] - z) for z, cs in layers for _, pts in cs for p in pts)
+    assert t["max_plane_deviation"] > 1e-3
+    assert worst == pytest.approx(t["max_plane_deviation"], abs=1e-12)  # the file has 17 digits
 
 
 def test_masks_and_compare_results(sliced):
-    ms, _, _, r, tmp, _ = sliced
+    ms, source, target, r, tmp, _ = sliced
+    profile = dict(width_px=256, height_px=192, pixel_size_x_um=300, pixel_size_y_um=300)
     m = ms.apply_filter("export_mask_images", contour_file=str(tmp / "s.ctr"),
-                        output_path=str(tmp / "masks"), width_px=256, height_px=192,
-                        pixel_size_x_um=300, pixel_size_y_um=300)
+                        output_path=str(tmp / "masks"), **profile)
     assert set(m) == {"layers", "ignored_open_contours", "outside_display", "seconds"}
     assert m["outside_display"] == 0
     assert m["layers"] == r["layers"] and m["ignored_open_contours"] == 0
     assert len(list((tmp / "masks").glob("*.png"))) == r["layers"]
-    c = ms.apply_filter("compare_mask_stacks", stack_a=str(tmp / "masks"), stack_b=str(tmp / "masks"),
+    # An independently produced stack of the same member: sliced again to a binary file and
+    # written as an .sl1 archive; every mask equal.
+    ms.set_current_mesh(source)
+    ms.apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS, file_format=1,
+                    contour_file=str(tmp / "again.srb"), encoding_file="")
+    ms.apply_filter("export_mask_images", contour_file=str(tmp / "again.srb"),
+                    output_path=str(tmp / "again.sl1"), **profile)
+    c = ms.apply_filter("compare_mask_stacks", stack_a=str(tmp / "masks"), stack_b=str(tmp / "again.sl1"),
                         report_file=str(tmp / "compare.csv"))
     assert set(c) == {"layers", "min_similarity", "worst_layer", "differing_pixels", "seconds"}
     assert c["layers"] == r["layers"] and c["min_similarity"] == 1.0 and c["differing_pixels"] == 0
-    assert (tmp / "compare.csv").is_file()
+    rows = (tmp / "compare.csv").read_text().splitlines()
+    assert rows[0] == "layer,similarity,differing_pixels" and len(rows) == 1 + r["layers"]
+    # Member 1's masks differ: the comparison sees it.
+    ms.set_current_mesh(target)
+    ms.apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS,
+                    contour_file=str(tmp / "m1.ctr"), encoding_file="")
+    ms.apply_filter("export_mask_images", contour_file=str(tmp / "m1.ctr"),
+                    output_path=str(tmp / "masks_m1"), **profile)
+    c = ms.apply_filter("compare_mask_stacks", stack_a=str(tmp / "masks"), stack_b=str(tmp / "masks_m1"))
+    assert c["min_similarity"] < 1.0 and c["differing_pixels"] > 0
+    assert 0 <= c["worst_layer"] < r["layers"]
 
 
 def test_preview_layer_is_an_edge_mesh_and_not_current(sliced):

@@ -13,9 +13,16 @@
 //
 // Members: x-y deformed as smooth functions of z (scale, shear, bend, twist, Gaussian bumps),
 // each a bijection of every plane z = const, so no member self-intersects and z is untouched:
-// every member has the base's z range. With z_change, z is then remapped monotonically per
-// (x, y) column (z scaled by up to 3 %, local bumps of up to 3 % of the height that vanish at
-// the bottom and top), so slice topology changes between members; z min stays 0.
+// every member has the base's z range. Then z is remapped monotonically per (x, y) column, so
+// slice topology changes between members; z min stays 0:
+//   ZChange::Everywhere  z scaled by up to 3 %, local bumps of up to 3 % of the height that
+//                        vanish at the bottom and top: nearly every layer moves (the transfer
+//                        re-slices all layers at once).
+//   ZChange::Band        a local edit: within one band of heights (a fifth of the height,
+//                        somewhere between 20 % and 80 %) z moves by up to 2 % of the height,
+//                        smoothly in (x, y) and vanishing at the band's ends; outside the band
+//                        z is untouched, so most layers stay certifiable and only the band's
+//                        are re-sliced.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -24,12 +31,14 @@
 
 namespace slicereuse::test {
 
+enum class ZChange { None, Everywhere, Band };
+
 struct FamilyOptions {
   std::string shape = "arch";  // one of family_shapes()
   size_t faces = 20000;        // target face count; the base has it within a few per cent
   double height = 14.484;      // mm; the base spans z in [0, height] exactly
   uint64_t seed = 1;           // member parameters depend only on (seed, member index)
-  bool z_change = false;
+  ZChange z_change = ZChange::None;
 };
 
 // The accepted shape names, in the order listed above.

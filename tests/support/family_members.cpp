@@ -1,5 +1,5 @@
 // Family members (see family.h): the base's vertices moved by seeded smooth deformations that
-// keep every plane z = const mapped bijectively onto itself (and, with z_change, every vertical
+// keep every plane z = const mapped bijectively onto itself (and, with a z change, every vertical
 // column monotonically onto itself), so members stay free of self-intersections.
 #include <algorithm>
 #include <cmath>
@@ -67,9 +67,11 @@ Mesh make_family_member(const Mesh& base, const FamilyOptions& o, int index) {
   }
   // Vertical change: z scaled by 1 + zscale plus bumps of height dz * 4u(1-u) (u = relative
   // height), vanishing at bottom and top; d z'/dz >= 0.97 - 3 * 0.12 > 0.
-  double zscale = 0;
+  // Band: bumps of height dz * sin^2(pi v) within u in [band_lo, band_lo + 0.2] (v relative to
+  // the band), zero outside; d z'/dz >= 1 - 0.02 * pi / 0.2 > 0.68.
+  double zscale = 0, band_lo = 0;
   std::vector<ZBump> zbumps;
-  if (o.z_change) {
+  if (o.z_change == ZChange::Everywhere) {
     zscale = rng.uniform(-0.03, 0.03);
     zbumps.resize(1 + rng.next() % 3);
     for (ZBump& b : zbumps) {
@@ -77,6 +79,12 @@ Mesh make_family_member(const Mesh& base, const FamilyOptions& o, int index) {
       const double sigma = rng.uniform(0.15, 0.3) * D;
       b = {c[0], c[1], 1 / (2 * sigma * sigma), rng.uniform(-0.03, 0.03) * H};
     }
+  } else if (o.z_change == ZChange::Band) {
+    band_lo = rng.uniform(0.2, 0.6);
+    const double* c = random_vertex();
+    const double sigma = rng.uniform(0.3, 0.5) * D;
+    const double dz = rng.uniform(0.01, 0.02) * H;
+    zbumps.push_back({c[0], c[1], 1 / (2 * sigma * sigma), rng.next() % 2 ? dz : -dz});
   }
 
   double* V = mesh.V.data();
@@ -96,10 +104,16 @@ Mesh make_family_member(const Mesh& base, const FamilyOptions& o, int index) {
     }
     V[3 * i] = x;
     V[3 * i + 1] = y;
-    if (o.z_change) {
+    if (o.z_change != ZChange::None) {
+      // Profile of the bumps along the column: zero at the ends of the part (or band).
+      const double v = (u - band_lo) / 0.2;
+      const double profile = o.z_change == ZChange::Everywhere ? 4 * u * (1 - u)
+                              : v > 0 && v < 1                 ? std::pow(std::sin(kPi * v), 2)
+                                                               : 0;
+      if (profile == 0 && zscale == 0) continue;  // z untouched, bit for bit
       double z = (p[2] - z0) * (1 + zscale);
       for (const ZBump& b : zbumps)
-        z += b.dz * std::exp(-((x - b.cx) * (x - b.cx) + (y - b.cy) * (y - b.cy)) * b.inv_two_sigma2) * 4 * u * (1 - u);
+        z += b.dz * std::exp(-((x - b.cx) * (x - b.cx) + (y - b.cy) * (y - b.cy)) * b.inv_two_sigma2) * profile;
       V[3 * i + 2] = z0 + z;
     }
   }

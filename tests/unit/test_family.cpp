@@ -133,8 +133,14 @@ size_t section_loops(const Mesh& m, double z) {
 
 class FamilyShape : public ::testing::TestWithParam<std::string> {};
 
+namespace {
+const char* z_change_name(ZChange z) {
+  return z == ZChange::None ? "" : z == ZChange::Everywhere ? " z-change" : " z-band";
+}
+}  // namespace
+
 TEST_P(FamilyShape, MembersAreClosedManifoldsSharingFaces) {
-  for (bool z_change : {false, true}) {
+  for (ZChange z_change : {ZChange::None, ZChange::Everywhere, ZChange::Band}) {
     FamilyOptions o;
     o.shape = GetParam();
     o.faces = 4000;
@@ -148,7 +154,7 @@ TEST_P(FamilyShape, MembersAreClosedManifoldsSharingFaces) {
     EXPECT_EQ(zb.max, 14.484);
     const long euler = 2 - 2 * family_shape_genus(o.shape);
     for (int i = 0; i < 4; ++i) {
-      SCOPED_TRACE(o.shape + " member " + std::to_string(i) + (z_change ? " z-change" : ""));
+      SCOPED_TRACE(o.shape + " member " + std::to_string(i) + z_change_name(z_change));
       const Mesh m = make_family_member(base, o, i);
       ASSERT_EQ(m.F, base.F);
       ASSERT_EQ(m.V.size(), base.V.size());
@@ -160,9 +166,26 @@ TEST_P(FamilyShape, MembersAreClosedManifoldsSharingFaces) {
       EXPECT_EQ(self_intersections(m), 0u);
       const ZRange z = z_range(m);
       EXPECT_EQ(z.min, 0.0);
-      if (!z_change) {
+      if (z_change == ZChange::None) {
         EXPECT_EQ(z.max, zb.max);
         for (size_t v = 2; v < m.V.size(); v += 3) ASSERT_EQ(m.V[v], base.V[v]);
+      }
+      if (z_change == ZChange::Band) {
+        // z moves inside one band of a fifth of the height within [0.2, 0.8] of it, and only
+        // there: below 20 % and above 80 % every vertex keeps its z bit for bit.
+        EXPECT_EQ(z.max, zb.max);
+        double lo = zb.max, hi = 0;
+        for (size_t v = 2; v < m.V.size(); v += 3) {
+          if (m.V[v] == base.V[v]) continue;
+          lo = std::min(lo, base.V[v]);
+          hi = std::max(hi, base.V[v]);
+        }
+        if (i > 0) {
+          EXPECT_GT(lo, 0.2 * zb.max);
+          EXPECT_LT(hi, 0.8 * zb.max);
+          EXPECT_LE(lo, hi);  // some vertex moved
+          EXPECT_LE(hi - lo, 0.2 * zb.max);
+        }
       }
       if (i == 0) {
         EXPECT_EQ(m.V, base.V);
@@ -171,7 +194,7 @@ TEST_P(FamilyShape, MembersAreClosedManifoldsSharingFaces) {
         EXPECT_NE(m.V, base.V);
         EXPECT_NEAR(signed_volume(m), signed_volume(base), 0.35 * signed_volume(base));
       }
-      if (i > 0 && z_change) {
+      if (i > 0 && z_change == ZChange::Everywhere) {
         EXPECT_NE(z.max, zb.max);
       }
     }
@@ -196,16 +219,16 @@ TEST(Family, BaseVolumesOfBoxAndSphereMatchAnalytic) {
 TEST(Family, SectionsHaveTheIntendedLoops) {
   // Arch: wall ring (outer + hole), then the hollow's tooth-ridged roof splits the hole into 15,
   // then the solid crown is one loop, then 15 separate tooth tips. Ear: closed tip, then hollow.
-  // Handle: one loop at the ends, the two legs in between. z_change moves the transitions, so
-  // only heights well inside a band are checked for it.
+  // Handle: one loop at the ends, the two legs in between. A z change moves the transitions, so
+  // only heights well inside a band are checked with one.
   const struct { const char* shape; double z; size_t loops; bool z_change_too; } cases[] = {
       {"arch", 0.40, 2, true},   {"arch", 0.83, 16, false}, {"arch", 0.89, 1, true},
       {"arch", 0.96, 15, false}, {"ear", 0.05, 1, true},    {"ear", 0.5, 2, true},
       {"handle", 0.5, 2, true},  {"handle", 0.97, 1, true}, {"box", 0.5, 1, true},
       {"sphere", 0.5, 1, true},  {"torus", 0.5, 2, true}};
   for (const auto& c : cases) {
-    for (bool z_change : {false, true}) {
-      if (z_change && !c.z_change_too) continue;
+    for (ZChange z_change : {ZChange::None, ZChange::Everywhere, ZChange::Band}) {
+      if (z_change != ZChange::None && !c.z_change_too) continue;
       FamilyOptions o;
       o.shape = c.shape;
       o.faces = 6000;
@@ -214,7 +237,7 @@ TEST(Family, SectionsHaveTheIntendedLoops) {
       const Mesh base = make_family_base(o);
       for (int i = 0; i < 3; ++i)
         EXPECT_EQ(section_loops(make_family_member(base, o, i), c.z * 10), c.loops)
-            << c.shape << " z " << c.z << " member " << i << (z_change ? " z-change" : "");
+            << c.shape << " z " << c.z << " member " << i << z_change_name(z_change);
     }
   }
 }
@@ -232,7 +255,7 @@ TEST(Family, DeterministicInSeed) {
   FamilyOptions o;
   o.shape = "ear";
   o.faces = 3000;
-  o.z_change = true;
+  o.z_change = ZChange::Everywhere;
   const Mesh base = make_family_base(o);
   EXPECT_EQ(make_family_member(base, o, 2).V, make_family_member(base, o, 2).V);
   EXPECT_NE(make_family_member(base, o, 2).V, make_family_member(base, o, 3).V);
