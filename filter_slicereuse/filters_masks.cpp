@@ -27,12 +27,6 @@ double finite(const ParamValues& values, const char* name) {
   return v;
 }
 
-// A folder given as "out/masks/" is checked like "out/masks": its parent must be writable.
-std::string without_trailing_slash(std::string path) {
-  while (path.size() > 1 && path.back() == '/') path.pop_back();
-  return path;
-}
-
 }  // namespace
 
 Result run_export_masks(const ParamValues& values, Host& host) {
@@ -49,7 +43,7 @@ Result run_export_masks(const ParamValues& values, Host& host) {
   profile.antialiasing = values.number("antialiasing") != 0;
   const std::string& contour_file = values.text("contour_file");
   if (contour_file.empty()) throw Error("contour_file is empty: choose a contour file");
-  const std::string output_path = without_trailing_slash(values.text("output_path"));
+  const std::string& output_path = values.text("output_path");
   if (output_path.empty()) throw Error("output_path is empty: choose a folder or a .sl1 file");
   check_outputs({{"output_path", output_path}});
 
