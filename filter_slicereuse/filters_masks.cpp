@@ -4,14 +4,16 @@
 #include "filters_common.h"
 #include "slicereuse/error.h"
 #include "slicereuse/masks.h"
+#include "slicereuse/printer_profile.h"
 #include "slicereuse/slice_files.h"
 
 namespace slicereuse::plugin {
 namespace {
 
-int positive_int(const ParamValues& values, const char* name) {
+int display_pixels(const ParamValues& values, const char* name) {
   const double v = values.number(name);
-  if (!(v >= 1 && v <= 1e6)) throw Error(format("%s must be between 1 and 1000000 pixels (got %g)", name, v));
+  if (!(v >= 1 && v <= kMaxDisplayPixels))
+    throw Error(format("%s must be between 1 and %d pixels (got %g)", name, kMaxDisplayPixels, v));
   return int(v);
 }
 
@@ -32,8 +34,8 @@ double finite(const ParamValues& values, const char* name) {
 Result run_export_masks(const ParamValues& values, Host& host) {
   const auto start = std::chrono::steady_clock::now();
   PrinterProfile profile;
-  profile.width_px = positive_int(values, "width_px");
-  profile.height_px = positive_int(values, "height_px");
+  profile.width_px = display_pixels(values, "width_px");
+  profile.height_px = display_pixels(values, "height_px");
   profile.pixel_size_x_um = positive(values, "pixel_size_x_um");
   profile.pixel_size_y_um = positive(values, "pixel_size_y_um");
   profile.offset_x_mm = finite(values, "offset_x_mm");

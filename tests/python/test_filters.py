@@ -183,6 +183,13 @@ def test_thickness_must_be_positive(pymeshlab, sliced, thickness):
     assert not (tmp / "x.ctr").exists()
 
 
+def test_display_size_limit_is_the_core_one(pymeshlab, sliced):
+    ms, _, _, _, tmp, _ = sliced
+    _raises(pymeshlab, ms, "export_mask_images", "width_px must be between 1 and 65535 pixels (got 65536)",
+            contour_file=str(tmp / "s.ctr"), output_path=str(tmp / "m"), width_px=65536)
+    assert not (tmp / "m").exists()
+
+
 def test_encoding_of_another_mesh_is_refused(pymeshlab, sliced, make_family):
     ms, _, _, _, tmp, _ = sliced
     ms.load_new_mesh(str(make_family("torus", 2)[1]))
