@@ -14,21 +14,15 @@
 
 #include "slicereuse/atomic_file.h"
 #include "slicereuse/error.h"
+#include "temp_folder.h"
 
 using namespace slicereuse;
 namespace fs = std::filesystem;
 
 namespace {
 
-class AtomicOutputs : public ::testing::Test {
+class AtomicOutputs : public test::TempFolderTest {
  protected:
-  void SetUp() override {
-    char name[] = "/tmp/slicereuse-test-atomic-XXXXXX";
-    ASSERT_NE(::mkdtemp(name), nullptr);
-    dir = name;
-  }
-  void TearDown() override { fs::remove_all(dir); }
-  std::string path(const std::string& name) const { return dir + "/" + name; }
   // Every entry of dir (and below), sorted: what a reader of the folder would see.
   std::vector<std::string> listing() const {
     std::vector<std::string> names;
@@ -36,7 +30,6 @@ class AtomicOutputs : public ::testing::Test {
     std::sort(names.begin(), names.end());
     return names;
   }
-  std::string dir;
 };
 
 void spit(const std::string& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
