@@ -145,6 +145,10 @@ errors)
   edit slice.mlx neg.mlx 's/name="layer_thickness" value="0.1"/name="layer_thickness" value="-0.2"/'
   must_fail log2.txt "layer_thickness must be greater than 0" -i "$m0" -s neg.mlx
   no_outputs
+  # A parameter of the wrong type in a hand-written script: named, no assertion reached.
+  edit slice.mlx wrongtype.mlx 's/type="RichFloat" name="layer_thickness" value="0.1"/type="RichInt" name="layer_thickness" value="1"/'
+  must_fail log_type.txt "parameter 'layer_thickness' must be a number, but it is a RichInt" -i "$m0" -s wrongtype.mlx
+  no_outputs
   edit slice.mlx nodir.mlx 's#out/slice\.enc#missing_dir/slice.enc#'
   must_fail log3.txt "encoding_file: cannot write" -i "$m0" -s nodir.mlx
   no_outputs
