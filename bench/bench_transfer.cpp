@@ -72,16 +72,16 @@ int main(int argc, char** argv) {
       TransferStats stats;
       const Timing direct = time_runs(args.runs, [&] { return slice_layers(member, same_plate); });
       const Timing exact = time_runs(args.runs, [&] {
-        return transfer_contours(source, member, TransferMode::Exact, &stats);
+        return transfer_contours(source, member, TransferOptions(TransferMode::Exact), &stats);
       });
       const Timing prepared = time_runs(args.runs, [&] {
-        return transfer_contours(source, ends, member, TransferMode::Exact);
+        return transfer_contours(source, ends, member, TransferOptions(TransferMode::Exact));
       });
       const Timing contours = time_runs(args.runs, [&] {
         return transfer_contours(source, ends, member, TransferOptions(TransferMode::Exact, false));
       });
       const Timing bary = time_runs(args.runs, [&] {
-        return transfer_contours(source, ends, member, TransferMode::Barycentric);
+        return transfer_contours(source, ends, member, TransferOptions(TransferMode::Barycentric));
       });
       if (exact.points != direct.points || prepared.points != direct.points || contours.points != direct.points) {
         std::fprintf(stderr, "member %d: transfer gave %zu points, direct slicing %zu\n", i, exact.points,

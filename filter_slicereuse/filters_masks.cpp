@@ -4,14 +4,16 @@
 #include "filters_common.h"
 #include "slicereuse/error.h"
 #include "slicereuse/masks.h"
+#include "slicereuse/printer_profile.h"
 #include "slicereuse/slice_files.h"
 
 namespace slicereuse::plugin {
 namespace {
 
-int positive_int(const ParamValues& values, const char* name) {
+int display_pixels(const ParamValues& values, const char* name) {
   const double v = values.number(name);
-  if (!(v >= 1 && v <= 1e6)) throw Error(format("%s must be between 1 and 1000000 pixels (got %g)", name, v));
+  if (!(v >= 1 && v <= kMaxDisplayPixels))
+    throw Error(format("%s must be between 1 and %d pixels (got %g)", name, kMaxDisplayPixels, v));
   return int(v);
 }
 
@@ -27,19 +29,13 @@ double finite(const ParamValues& values, const char* name) {
   return v;
 }
 
-// A folder given as "out/masks/" is checked like "out/masks": its parent must be writable.
-std::string without_trailing_slash(std::string path) {
-  while (path.size() > 1 && path.back() == '/') path.pop_back();
-  return path;
-}
-
 }  // namespace
 
 Result run_export_masks(const ParamValues& values, Host& host) {
   const auto start = std::chrono::steady_clock::now();
   PrinterProfile profile;
-  profile.width_px = positive_int(values, "width_px");
-  profile.height_px = positive_int(values, "height_px");
+  profile.width_px = display_pixels(values, "width_px");
+  profile.height_px = display_pixels(values, "height_px");
   profile.pixel_size_x_um = positive(values, "pixel_size_x_um");
   profile.pixel_size_y_um = positive(values, "pixel_size_y_um");
   profile.offset_x_mm = finite(values, "offset_x_mm");
@@ -49,7 +45,7 @@ Result run_export_masks(const ParamValues& values, Host& host) {
   profile.antialiasing = values.number("antialiasing") != 0;
   const std::string& contour_file = values.text("contour_file");
   if (contour_file.empty()) throw Error("contour_file is empty: choose a contour file");
-  const std::string output_path = without_trailing_slash(values.text("output_path"));
+  const std::string& output_path = values.text("output_path");
   if (output_path.empty()) throw Error("output_path is empty: choose a folder or a .sl1 file");
   check_outputs({{"output_path", output_path}});
 

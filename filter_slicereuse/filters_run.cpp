@@ -1,7 +1,6 @@
 // run_filter's dispatch and the helpers shared by the filter implementations.
 #include <cstdio>
 #include <filesystem>
-#include <system_error>
 
 #include "filters_common.h"
 #include "slicereuse/atomic_file.h"
@@ -24,25 +23,6 @@ Progress sub_progress(const Progress& progress, double from, double to) {
   return [progress, from, to](double f, const char* phase) {
     return progress(from + (to - from) * f, phase);
   };
-}
-
-StagedOutputs::~StagedOutputs() {
-  for (const auto& [staging, final_path] : files_) std::remove(staging.c_str());
-}
-
-std::string StagedOutputs::stage(const std::string& final_path) {
-  files_.emplace_back(final_path + ".partial", final_path);
-  return files_.back().first;
-}
-
-void StagedOutputs::commit() {
-  for (auto& [staging, final_path] : files_) {
-    if (std::rename(staging.c_str(), final_path.c_str()) != 0)
-      throw Error("cannot rename " + staging + " to " + final_path + ": " +
-                  std::error_code(errno, std::generic_category()).message());
-    staging.clear();
-  }
-  files_.clear();
 }
 
 void check_outputs(const std::vector<std::pair<const char*, std::string>>& named_paths) {

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "filters_common.h"
+#include "slicereuse/atomic_file.h"
 #include "slicereuse/error.h"
 #include "slicereuse/slice_files.h"
 #include "slicereuse/slice_layers.h"
@@ -70,9 +71,9 @@ Result run_slice(const ParamValues& values, Host& host) {
   const double slicing_seconds = seconds_since(slicing_start);
   StagedOutputs outputs;
   if (!contour_file.empty())
-    write_contour_file(outputs.stage(contour_file), s, file_format, sub_progress(progress, 0.6, 0.8));
+    write_contour_file(outputs.file(contour_file), s, file_format, sub_progress(progress, 0.6, 0.8));
   if (!encoding_file.empty())
-    write_encoding_file(outputs.stage(encoding_file), s, file_format, sub_progress(progress, 0.8, 1));
+    write_encoding_file(outputs.file(encoding_file), s, file_format, sub_progress(progress, 0.8, 1));
   outputs.commit();
 
   if (preview >= 1) {

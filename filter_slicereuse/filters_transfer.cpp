@@ -1,5 +1,6 @@
 // "Transfer Slicing to Mesh": a source encoding applied to a family member with the same faces.
 #include "filters_common.h"
+#include "slicereuse/atomic_file.h"
 #include "slicereuse/error.h"
 #include "slicereuse/slice_files.h"
 #include "slicereuse/transfer_contours.h"
@@ -42,10 +43,10 @@ Result run_transfer(const ParamValues& values, Host& host) {
   const double transfer_seconds = seconds_since(transfer_start);
   StagedOutputs outputs;
   if (!contour_file.empty())
-    write_contour_file(outputs.stage(contour_file), s, format_for(contour_file),
+    write_contour_file(outputs.file(contour_file), s, format_for(contour_file),
                        sub_progress(progress, 0.6, 0.8));
   if (!target_encoding_file.empty())
-    write_encoding_file(outputs.stage(target_encoding_file), s, format_for(target_encoding_file),
+    write_encoding_file(outputs.file(target_encoding_file), s, format_for(target_encoding_file),
                         sub_progress(progress, 0.8, 1));
   outputs.commit();
 

@@ -1,13 +1,14 @@
 #include "slicereuse/atomic_file.h"
 
+#include <dirent.h>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
-#include <vector>
 
 #include "slicereuse/error.h"
 
@@ -16,18 +17,20 @@ namespace {
 
 std::string why() { return std::strerror(errno); }
 
+// "out/masks/" names the folder "out/masks": its parent is "out", its staged twin a sibling.
+std::string without_trailing_slash(std::string path) {
+  while (path.size() > 1 && path.back() == '/') path.pop_back();
+  return path;
+}
+
 std::string folder_of(const std::string& path) {
   const size_t slash = path.find_last_of('/');
   if (slash == std::string::npos) return ".";
   return slash == 0 ? "/" : path.substr(0, slash);
 }
 
-// mkstemp creates files with mode 0600; a saved file should get the mode any other program's
-// output would get (0666 minus umask), or keep the mode of the file it replaces. umask() itself
-// cannot be read without setting it, which would race with other threads.
-mode_t final_mode(const std::string& path) {
-  struct stat st;
-  if (::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) return st.st_mode & 07777;
+mode_t umask_of_process() {
+  // umask() itself cannot be read without setting it, which would race with other threads.
   mode_t mask = 022;
   std::ifstream status("/proc/self/status");
   std::string line;
@@ -37,38 +40,104 @@ mode_t final_mode(const std::string& path) {
       break;
     }
   }
-  return 0666 & ~mask;
+  return mask;
+}
+
+// mkstemp creates files with mode 0600 and mkdtemp folders with 0700; an output should get the
+// mode any other program's output would get, or keep the mode of the file it replaces.
+mode_t final_mode(const std::string& path, bool folder) {
+  struct stat st;
+  if (!folder && ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) return st.st_mode & 07777;
+  return (folder ? 0777 : 0666) & ~umask_of_process();
+}
+
+std::vector<char> template_for(const std::string& path) {
+  std::vector<char> name(path.begin(), path.end());
+  const char suffix[] = ".tmp-XXXXXX";
+  name.insert(name.end(), suffix, suffix + sizeof suffix);
+  return name;
+}
+
+void remove_staged(const std::string& staged, bool folder) {
+  if (folder) {
+    std::error_code ec;
+    std::filesystem::remove_all(staged, ec);
+  } else {
+    ::unlink(staged.c_str());
+  }
+}
+
+// Moves every entry of folder `from` into folder `to` (replacing entries of the same name),
+// then removes the emptied `from`.
+void merge_folder(const std::string& from, const std::string& to) {
+  DIR* dir = ::opendir(from.c_str());
+  if (dir == nullptr) throw Error("cannot read folder '" + from + "': " + why());
+  std::vector<std::string> names;
+  while (const dirent* e = ::readdir(dir))
+    if (std::strcmp(e->d_name, ".") != 0 && std::strcmp(e->d_name, "..") != 0) names.push_back(e->d_name);
+  ::closedir(dir);
+  for (const std::string& name : names) {
+    const std::string a = from + "/" + name, b = to + "/" + name;
+    if (::rename(a.c_str(), b.c_str()) != 0) throw Error("cannot move '" + a + "' to '" + b + "': " + why());
+  }
+  ::rmdir(from.c_str());
 }
 
 }  // namespace
 
-AtomicFile::AtomicFile(const std::string& path) : path_(path) {
-  std::vector<char> name(path.begin(), path.end());
-  const char suffix[] = ".tmp-XXXXXX";
-  name.insert(name.end(), suffix, suffix + sizeof suffix);
+StagedOutputs::~StagedOutputs() {
+  for (const Output& o : outputs_)
+    if (!o.staged.empty()) remove_staged(o.staged, o.is_folder);  // empty: already in place
+}
+
+std::string StagedOutputs::file(const std::string& final_path) {
+  std::vector<char> name = template_for(final_path);
   const int fd = ::mkstemp(name.data());
-  if (fd < 0) throw Error("cannot create a temporary file next to '" + path + "': " + why());
-  temp_ = name.data();
-  ::fchmod(fd, final_mode(path));
-  file_ = ::fdopen(fd, "w+b");  // readable too, for writers (libzip) that read back
-  if (!file_) {
-    const std::string reason = why();
-    ::close(fd);
-    ::unlink(temp_.c_str());
-    throw Error("cannot open temporary file '" + temp_ + "': " + reason);
+  if (fd < 0) throw Error("cannot create a temporary file next to '" + final_path + "': " + why());
+  ::fchmod(fd, final_mode(final_path, false));
+  ::close(fd);
+  outputs_.push_back({name.data(), final_path, false});
+  return outputs_.back().staged;
+}
+
+std::string StagedOutputs::folder(const std::string& path) {
+  const std::string final_path = without_trailing_slash(path);
+  struct stat st;
+  if (::stat(final_path.c_str(), &st) == 0 && !S_ISDIR(st.st_mode))
+    throw Error("cannot write '" + final_path + "': it exists and is not a folder");
+  std::vector<char> name = template_for(final_path);
+  if (::mkdtemp(name.data()) == nullptr)
+    throw Error("cannot create a folder next to '" + final_path + "': " + why());
+  ::chmod(name.data(), final_mode(final_path, true));
+  outputs_.push_back({name.data(), final_path, true});
+  return outputs_.back().staged;
+}
+
+void StagedOutputs::commit() {
+  for (Output& o : outputs_) {
+    if (::rename(o.staged.c_str(), o.final_path.c_str()) != 0) {
+      if (!o.is_folder || (errno != ENOTEMPTY && errno != EEXIST))
+        throw Error("cannot rename '" + o.staged + "' to '" + o.final_path + "': " + why());
+      merge_folder(o.staged, o.final_path);
+    }
+    o.staged.clear();
   }
+  outputs_.clear();
+}
+
+AtomicFile::AtomicFile(const std::string& path) : path_(path) {
+  const std::string staged = staged_.file(path);
+  file_ = std::fopen(staged.c_str(), "wb");
+  if (file_ == nullptr) throw Error("cannot open temporary file '" + staged + "': " + why());
 }
 
 AtomicFile::~AtomicFile() {
   if (file_) std::fclose(file_);
-  // temp_ is cleared once renamed into place; otherwise the partial output must not survive.
-  if (!temp_.empty()) ::unlink(temp_.c_str());
 }
 
 void AtomicFile::write(const void* data, size_t n) {
   if (!file_) throw Error("cannot write '" + path_ + "': file already closed");
-  if (n && std::fwrite(data, 1, n, file_) != n)
-    throw Error("cannot write '" + path_ + "': " + why());
+  if (n && std::fwrite(data, 1, n, file_) != n) throw Error("cannot write '" + path_ + "': " + why());
 }
 
 void AtomicFile::commit() {
@@ -79,14 +148,12 @@ void AtomicFile::commit() {
   const std::string flush_error = flushed ? std::string() : why();
   if (std::fclose(f) != 0 || !flushed)
     throw Error("cannot write '" + path_ + "': " + (flushed ? why() : flush_error));
-  if (::rename(temp_.c_str(), path_.c_str()) != 0)
-    throw Error("cannot rename '" + temp_ + "' to '" + path_ + "': " + why());
-  temp_.clear();
+  staged_.commit();
 }
 
 void check_writable(const std::string& path) {
   if (path.empty()) throw Error("no output path given");
-  const std::string folder = folder_of(path);
+  const std::string folder = folder_of(without_trailing_slash(path));
   struct stat st;
   if (::stat(folder.c_str(), &st) != 0)
     throw Error("cannot write '" + path + "': folder '" + folder + "': " + why());

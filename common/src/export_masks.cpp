@@ -9,13 +9,13 @@
 #include <cmath>
 #include <chrono>
 #include <cstring>
-#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
 
 #include <omp.h>
 
+#include "slicereuse/atomic_file.h"
 #include "slicereuse/buffer.h"
 #include "slicereuse/error.h"
 #include "slicereuse/mask_png.h"
@@ -27,8 +27,6 @@
 
 namespace slicereuse {
 namespace {
-
-namespace fs = std::filesystem;
 
 // Folder output names its images layer00000.png, layer00001.png, ...
 const char* const FOLDER_PREFIX = "layer";
@@ -85,69 +83,29 @@ void write_file(const std::string& path, const std::vector<uint8_t>& data) {
   if (::close(fd) != 0) throw Error("cannot write '" + path + "': " + std::strerror(errno));
 }
 
-// A fresh folder next to the target that collects the images; removed with its content unless
-// commit() moved them into place, so a failed or cancelled export leaves the target untouched.
-class StagingFolder {
- public:
-  explicit StagingFolder(const std::string& target) : target_(target) {
-    std::error_code ec;
-    if (fs::exists(target, ec) && !fs::is_directory(target, ec))
-      throw Error("cannot write masks to '" + target + "': it exists and is not a folder");
-    for (int attempt = 0;; ++attempt) {
-      path_ = target + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(attempt);
-      if (::mkdir(path_.c_str(), 0777) == 0) break;
-      if (errno != EEXIST || attempt > 100)
-        throw Error("cannot create a folder next to '" + target + "': " + std::strerror(errno));
-    }
-  }
-  ~StagingFolder() {
-    if (path_.empty()) return;
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  const std::string& path() const { return path_; }
-
-  // A missing or empty target is replaced in one rename. Into an existing folder the images
-  // are renamed one by one, and images of a former, longer export are removed.
-  void commit(size_t layers) {
-    if (::rename(path_.c_str(), target_.c_str()) == 0) {
-      path_.clear();
-      return;
-    }
-    if (errno != ENOTEMPTY && errno != EEXIST)
-      throw Error("cannot move '" + path_ + "' to '" + target_ + "': " + std::strerror(errno));
-    for (size_t k = 0; k < layers; ++k) {
-      const std::string name = mask_layer_file_name(FOLDER_PREFIX, k);
-      const std::string from = path_ + "/" + name, to = target_ + "/" + name;
-      if (::rename(from.c_str(), to.c_str()) != 0)
-        throw Error("cannot move '" + from + "' to '" + to + "': " + std::strerror(errno));
-    }
-    for (size_t k = layers;; ++k) {
-      const std::string stale = target_ + "/" + mask_layer_file_name(FOLDER_PREFIX, k);
-      if (::unlink(stale.c_str()) != 0) break;
-    }
-  }
-
- private:
-  std::string target_, path_;
-};
-
-void export_folder(const Slices& s, const PrinterProfile& p, std::string folder,
+// The images are written into a staged folder that replaces the target (or moves its images
+// into an existing target) only when all are written; images of a former, longer export there
+// are removed then.
+void export_folder(const Slices& s, const PrinterProfile& p, const std::string& folder,
                    const Progress& progress) {
-  while (folder.size() > 1 && folder.back() == '/') folder.pop_back();
-  StagingFolder staging(folder);
+  StagedOutputs outputs;
+  const std::string staged = outputs.folder(folder);
   parallel_blocks(
       s.layers(),
       [&](size_t k) {
         thread_local std::vector<uint8_t> png;
         encode_layer(s, k, p, p.antialiasing ? 8 : 1, png);
-        // Plain writes: the staging folder as a whole is what appears atomically.
-        write_file(staging.path() + "/" + mask_layer_file_name(FOLDER_PREFIX, k), png);
+        // Plain writes: the staged folder as a whole is what appears atomically.
+        write_file(staged + "/" + mask_layer_file_name(FOLDER_PREFIX, k), png);
       },
       progress, PHASE);
   // Last chance to cancel: once committed, the export is done and no longer reports.
   report_progress(progress, 1, PHASE);
-  staging.commit(s.layers());
+  outputs.commit();
+  for (size_t k = s.layers();; ++k) {
+    const std::string stale = folder + "/" + mask_layer_file_name(FOLDER_PREFIX, k);
+    if (::unlink(stale.c_str()) != 0) break;
+  }
 }
 
 // Encodes layers in parallel batches as write_sl1 asks for them in order, holding one batch.

@@ -3,10 +3,8 @@
 #include <zip.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <cstring>
 #include <ctime>
 #include <exception>
@@ -89,62 +87,11 @@ std::string prusaslicer_ini(const Sl1Job& j) {
          "sla_print_settings_id = slicereuse\n";
 }
 
-// libzip writes the archive through this source into the AtomicFile's stream. Finishing
-// (rename into place) is left to AtomicFile::commit after zip_close succeeded.
 struct ZipError {
   zip_error_t e;
   ZipError() { zip_error_init(&e); }
   ~ZipError() { zip_error_fini(&e); }
 };
-
-struct Target {
-  FILE* file;
-  ZipError error;
-};
-
-zip_int64_t target_cb(void* ud, void* data, zip_uint64_t len, zip_source_cmd_t cmd) {
-  Target& t = *static_cast<Target*>(ud);
-  switch (cmd) {
-    case ZIP_SOURCE_SUPPORTS:
-      return ZIP_SOURCE_SUPPORTS_WRITABLE;
-    case ZIP_SOURCE_STAT:  // no archive yet: libzip then creates a new one
-      zip_error_set(&t.error.e, ZIP_ER_READ, ENOENT);
-      return -1;
-    case ZIP_SOURCE_ERROR:
-      return zip_error_to_data(&t.error.e, data, len);
-    case ZIP_SOURCE_WRITE:
-      if (std::fwrite(data, 1, len, t.file) != len) {
-        zip_error_set(&t.error.e, ZIP_ER_WRITE, errno);
-        return -1;
-      }
-      return zip_int64_t(len);
-    case ZIP_SOURCE_SEEK_WRITE: {
-      auto* a = ZIP_SOURCE_GET_ARGS(zip_source_args_seek_t, data, len, &t.error.e);
-      if (!a) return -1;
-      if (fseeko(t.file, off_t(a->offset), a->whence) != 0) {
-        zip_error_set(&t.error.e, ZIP_ER_SEEK, errno);
-        return -1;
-      }
-      return 0;
-    }
-    case ZIP_SOURCE_TELL_WRITE: {
-      const off_t at = ftello(t.file);
-      if (at < 0) zip_error_set(&t.error.e, ZIP_ER_TELL, errno);
-      return at;
-    }
-    case ZIP_SOURCE_BEGIN_WRITE:
-    case ZIP_SOURCE_COMMIT_WRITE:
-    case ZIP_SOURCE_ROLLBACK_WRITE:
-    case ZIP_SOURCE_REMOVE:
-    case ZIP_SOURCE_OPEN:
-    case ZIP_SOURCE_CLOSE:
-    case ZIP_SOURCE_FREE:
-      return 0;
-    default:
-      zip_error_set(&t.error.e, ZIP_ER_OPNOTSUPP, 0);
-      return -1;
-  }
-}
 
 // One layer entry: its bytes are asked for only when libzip reaches it on close.
 struct Layers {
@@ -232,14 +179,16 @@ void write_sl1(const std::string& path, const Sl1Job& job, const LayerPng& layer
   // source, so the entries must outlive the archive.
   Layers layers{&layer_png, now, nullptr, {}};
   std::vector<LayerEntry> entries(job.layers);
-  AtomicFile out(path);
-  Target target{out.stream(), {}};
-  ZipError error;
-  zip_source_t* src = zip_source_function_create(target_cb, &target, &error.e);
-  zip_t* za = src ? zip_open_from_source(src, ZIP_CREATE | ZIP_TRUNCATE, &error.e) : nullptr;
+  // libzip writes the archive on zip_close to a temporary file next to the staged one and
+  // renames it onto it; the staged file then replaces path.
+  StagedOutputs outputs;
+  const std::string staged = outputs.file(path);
+  int error = 0;
+  zip_t* za = zip_open(staged.c_str(), ZIP_TRUNCATE, &error);
   if (!za) {
-    if (src) zip_source_free(src);
-    throw Error("cannot write '" + path + "': " + zip_error_strerror(&error.e));
+    ZipError e;
+    zip_error_init_with_code(&e.e, error);
+    throw Error("cannot write '" + path + "': " + zip_error_strerror(&e.e));
   }
   std::unique_ptr<zip_t, void (*)(zip_t*)> archive(za, zip_discard);
 
@@ -260,7 +209,7 @@ void write_sl1(const std::string& path, const Sl1Job& job, const LayerPng& layer
     throw Error("cannot write '" + path + "': " + zip_strerror(za));
   }
   archive.release();
-  out.commit();
+  outputs.commit();
 }
 
 }  // namespace slicereuse

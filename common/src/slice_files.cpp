@@ -6,7 +6,7 @@
 #include <cstring>
 #include <memory>
 
-#include "slice_files_detail.h"
+#include "slice_files_binary_layout.h"
 #include "slicereuse/error.h"
 
 namespace slicereuse {

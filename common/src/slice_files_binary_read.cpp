@@ -1,4 +1,4 @@
-// Binary (.srb) reader. Every count and section entry is checked against the file size before
+// Binary (.srb) reader (layout: slice_files_binary_layout.h). Every count and section entry is checked against the file size before
 // anything is allocated, so a hostile header cannot make us allocate more than the file holds;
 // then each section is read straight into its array and checked against its checksum.
 #include <xxhash.h>
@@ -7,20 +7,11 @@
 #include <cerrno>
 #include <cstring>
 
-#include "slice_files_detail.h"
+#include "slice_files_binary_layout.h"
 #include "slicereuse/error.h"
 
 namespace slicereuse::detail {
 namespace {
-
-constexpr uint64_t kPieceBytes = uint64_t(64) << 20;
-
-template <class T>
-T get(const unsigned char* h, size_t at) {
-  T v;
-  std::memcpy(&v, h + at, sizeof v);
-  return v;
-}
 
 std::string num(uint64_t v) { return std::to_string(v); }
 
@@ -47,11 +38,11 @@ Slices read_binary(const std::string& path, FILE* f, uint64_t size, FileKind kin
   read(head.data(), head.size(), "the header");
   if (std::memcmp(head.data(), kBinaryMagic, sizeof kBinaryMagic) != 0)
     fail("not a slicereuse binary file (bad magic number)");
-  const uint32_t version = get<uint32_t>(head.data(), 8);
+  const uint32_t version = get<uint32_t>(head.data() + kVersionAt);
   if (version != kFormatVersion)
     fail("format version " + num(version) + " is not supported (this build reads version " +
          num(kFormatVersion) + ")");
-  const uint32_t file_kind = get<uint32_t>(head.data(), 12);
+  const uint32_t file_kind = get<uint32_t>(head.data() + kKindAt);
   if (file_kind != uint32_t(FileKind::Contours) && file_kind != uint32_t(FileKind::Encoding))
     fail("unknown file kind " + num(file_kind) + " (1 = contours, 2 = encoding)");
   if (file_kind != uint32_t(kind))
@@ -59,7 +50,7 @@ Slices read_binary(const std::string& path, FILE* f, uint64_t size, FileKind kin
          kind_noun(kind));
 
   const std::vector<uint32_t> ids = section_ids(kind);
-  const uint32_t n_sections = get<uint32_t>(head.data(), 72);
+  const uint32_t n_sections = get<uint32_t>(head.data() + kSectionCountAt);
   if (n_sections != ids.size())
     fail("the header lists " + num(n_sections) + " sections, " + kind_noun(kind) + " has " +
          num(ids.size()));
@@ -70,17 +61,17 @@ Slices read_binary(const std::string& path, FILE* f, uint64_t size, FileKind kin
          num(header_bytes));
   head.resize(header_bytes);
   read(head.data() + kFixedHeaderBytes, header_bytes - kFixedHeaderBytes, "the section table");
-  if (XXH3_64bits(head.data(), table_end) != get<uint64_t>(head.data(), table_end))
+  if (XXH3_64bits(head.data(), table_end) != get<uint64_t>(head.data() + table_end))
     fail("header checksum mismatch: the header or section table is corrupted");
-  if (get<uint32_t>(head.data(), 76) != 0) fail("reserved header field is not 0");
+  if (get<uint32_t>(head.data() + kReservedAt) != 0) fail("reserved header field is not 0");
 
   Slices s;
-  s.thickness = get<double>(head.data(), 16);
-  s.z_start = get<double>(head.data(), 24);
-  const uint64_t L = get<uint64_t>(head.data(), 32), C = get<uint64_t>(head.data(), 40),
-                 P = get<uint64_t>(head.data(), 48);
+  s.thickness = get<double>(head.data() + kThicknessAt);
+  s.z_start = get<double>(head.data() + kZStartAt);
+  const uint64_t L = get<uint64_t>(head.data() + kLayersAt), C = get<uint64_t>(head.data() + kContoursAt),
+                 P = get<uint64_t>(head.data() + kPointsAt);
   if (kind == FileKind::Encoding)
-    s.fingerprint = {get<uint64_t>(head.data(), 56), get<uint64_t>(head.data(), 64)};
+    s.fingerprint = {get<uint64_t>(head.data() + kFingerprintFacesAt), get<uint64_t>(head.data() + kFingerprintHashAt)};
   // Each layer, contour and point takes at least one byte of the file: this bounds every
   // allocation below by the file size, and keeps the size arithmetic far from overflow.
   if (L >= size || C >= size || P >= size)
@@ -92,9 +83,10 @@ Slices read_binary(const std::string& path, FILE* f, uint64_t size, FileKind kin
   for (size_t i = 0; i < ids.size(); ++i) {
     const unsigned char* e = head.data() + kFixedHeaderBytes + kSectionEntryBytes * i;
     Entry& t = table[i];
-    t = {get<uint32_t>(e, 0), get<uint64_t>(e, 8), get<uint64_t>(e, 16), get<uint64_t>(e, 24)};
+    t = {get<uint32_t>(e + kIdAt), get<uint64_t>(e + kOffsetAt), get<uint64_t>(e + kBytesAt),
+         get<uint64_t>(e + kChecksumAt)};
     const std::string name = "section " + num(i) + " (" + section_name(ids[i]) + ")";
-    if (t.id != ids[i] || get<uint32_t>(e, 4) != 0)
+    if (t.id != ids[i] || get<uint32_t>(e + kPaddingAt) != 0)
       fail(name + " has id " + num(t.id) + ", expected " + num(ids[i]));
     if (t.offset != align8(end))
       fail(name + " starts at byte " + num(t.offset) + ", expected " + num(align8(end)));
@@ -119,19 +111,6 @@ Slices read_binary(const std::string& path, FILE* f, uint64_t size, FileKind kin
     s.edge.resize(P);
     s.t.resize(P);
   }
-  auto destination = [&](uint32_t id) -> unsigned char* {
-    switch (id) {
-      case kLayerZ: return reinterpret_cast<unsigned char*>(s.layer_z.data());
-      case kLayerBegin: return reinterpret_cast<unsigned char*>(s.layer_begin.data());
-      case kContourBegin: return reinterpret_cast<unsigned char*>(s.contour_begin.data());
-      case kContourOpen: return s.contour_open.data();
-      case kXyz: return reinterpret_cast<unsigned char*>(s.xyz.data());
-      case kFace: return reinterpret_cast<unsigned char*>(s.face.data());
-      case kEdge: return s.edge.data();
-      default: return reinterpret_cast<unsigned char*>(s.t.data());
-    }
-  };
-
   uint64_t at = header_bytes, done = 0;
   const uint64_t total = size - header_bytes;
   for (const Entry& t : table) {
@@ -140,7 +119,7 @@ Slices read_binary(const std::string& path, FILE* f, uint64_t size, FileKind kin
     read(padding, t.offset - at, "the padding");
     if (std::any_of(padding, padding + 8, [](unsigned char b) { return b != 0; }))
       fail("nonzero padding before " + name + ": the file is corrupted");
-    unsigned char* dst = destination(t.id);
+    unsigned char* dst = section_data(s, t.id);
     for (uint64_t piece = 0; piece < t.bytes; piece += kPieceBytes) {
       const uint64_t n = std::min(kPieceBytes, t.bytes - piece);
       read(dst + piece, n, name.c_str());

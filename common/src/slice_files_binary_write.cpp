@@ -1,73 +1,14 @@
-// Binary (.srb) layout helpers and writer. The arrays are written as they are in memory, one
-// fwrite per section, so writing runs at disk speed.
+// Binary (.srb) writer (layout: slice_files_binary_layout.h). The arrays are written as they
+// are in memory, one fwrite per section, so writing runs at disk speed.
 #include <xxhash.h>
 
 #include <algorithm>
 #include <cstring>
 
-#include "slice_files_detail.h"
+#include "slice_files_binary_layout.h"
 #include "slicereuse/atomic_file.h"
 
 namespace slicereuse::detail {
-
-const char* section_name(uint32_t id) {
-  switch (id) {
-    case kLayerZ: return "layer_z";
-    case kLayerBegin: return "layer_begin";
-    case kContourBegin: return "contour_begin";
-    case kContourOpen: return "contour_open";
-    case kXyz: return "xyz";
-    case kFace: return "face";
-    case kEdge: return "edge";
-    case kT: return "t";
-    default: return "unknown";
-  }
-}
-
-std::vector<uint32_t> section_ids(FileKind kind) {
-  if (kind == FileKind::Contours) return {kLayerZ, kLayerBegin, kContourBegin, kContourOpen, kXyz};
-  return {kLayerZ, kLayerBegin, kContourBegin, kContourOpen, kFace, kEdge, kT};
-}
-
-uint64_t section_bytes(uint32_t id, uint64_t layers, uint64_t contours, uint64_t points) {
-  switch (id) {
-    case kLayerZ: return 8 * layers;
-    case kLayerBegin: return 8 * (layers + 1);
-    case kContourBegin: return 8 * (contours + 1);
-    case kContourOpen: return contours;
-    case kXyz: return 24 * points;
-    case kFace: return 4 * points;
-    case kEdge: return points;
-    case kT: return 8 * points;
-    default: return 0;
-  }
-}
-
-namespace {
-
-// Large sections are written in pieces so progress (and cancellation) stays responsive.
-constexpr uint64_t kPieceBytes = uint64_t(64) << 20;
-
-template <class T>
-void put(std::vector<unsigned char>& h, size_t at, T v) {
-  std::memcpy(h.data() + at, &v, sizeof v);
-}
-
-const void* section_data(const Slices& s, uint32_t id) {
-  switch (id) {
-    case kLayerZ: return s.layer_z.data();
-    case kLayerBegin: return s.layer_begin.data();
-    case kContourBegin: return s.contour_begin.data();
-    case kContourOpen: return s.contour_open.data();
-    case kXyz: return s.xyz.data();
-    case kFace: return s.face.data();
-    case kEdge: return s.edge.data();
-    case kT: return s.t.data();
-    default: return nullptr;
-  }
-}
-
-}  // namespace
 
 void write_binary(const std::string& path, const Slices& s, FileKind kind,
                   const Progress& progress) {
@@ -75,39 +16,40 @@ void write_binary(const std::string& path, const Slices& s, FileKind kind,
   const uint64_t L = s.layers(), C = s.contours(), P = s.points();
   const size_t table_end = kFixedHeaderBytes + kSectionEntryBytes * ids.size();
   std::vector<unsigned char> head(table_end + 8, 0);
-  std::memcpy(head.data(), kBinaryMagic, sizeof kBinaryMagic);
-  put<uint32_t>(head, 8, kFormatVersion);
-  put<uint32_t>(head, 12, uint32_t(kind));
-  put<double>(head, 16, s.thickness);
-  put<double>(head, 24, s.z_start);
-  put<uint64_t>(head, 32, L);
-  put<uint64_t>(head, 40, C);
-  put<uint64_t>(head, 48, P);
+  unsigned char* h = head.data();
+  std::memcpy(h, kBinaryMagic, sizeof kBinaryMagic);
+  put<uint32_t>(h + kVersionAt, kFormatVersion);
+  put<uint32_t>(h + kKindAt, uint32_t(kind));
+  put<double>(h + kThicknessAt, s.thickness);
+  put<double>(h + kZStartAt, s.z_start);
+  put<uint64_t>(h + kLayersAt, L);
+  put<uint64_t>(h + kContoursAt, C);
+  put<uint64_t>(h + kPointsAt, P);
   if (kind == FileKind::Encoding) {
-    put<uint64_t>(head, 56, s.fingerprint.faces);
-    put<uint64_t>(head, 64, s.fingerprint.hash);
+    put<uint64_t>(h + kFingerprintFacesAt, s.fingerprint.faces);
+    put<uint64_t>(h + kFingerprintHashAt, s.fingerprint.hash);
   }
-  put<uint32_t>(head, 72, uint32_t(ids.size()));
+  put<uint32_t>(h + kSectionCountAt, uint32_t(ids.size()));
 
   uint64_t offset = head.size(), total = 0;
   for (size_t i = 0; i < ids.size(); ++i) {
     const uint64_t bytes = section_bytes(ids[i], L, C, P);
-    const size_t at = kFixedHeaderBytes + kSectionEntryBytes * i;
-    put<uint32_t>(head, at, ids[i]);
-    put<uint64_t>(head, at + 8, offset);
-    put<uint64_t>(head, at + 16, bytes);
-    put<uint64_t>(head, at + 24, XXH3_64bits(section_data(s, ids[i]), bytes));
+    unsigned char* e = h + kFixedHeaderBytes + kSectionEntryBytes * i;
+    put<uint32_t>(e + kIdAt, ids[i]);
+    put<uint64_t>(e + kOffsetAt, offset);
+    put<uint64_t>(e + kBytesAt, bytes);
+    put<uint64_t>(e + kChecksumAt, XXH3_64bits(section_data(s, ids[i]), bytes));
     offset = align8(offset + bytes);
     total += bytes;
   }
-  put<uint64_t>(head, table_end, XXH3_64bits(head.data(), table_end));
+  put<uint64_t>(h + table_end, XXH3_64bits(h, table_end));
 
   AtomicFile file(path);
   file.write(head.data(), head.size());
   const char zeros[8] = {};
   uint64_t done = 0;
   for (uint32_t id : ids) {
-    const auto* data = static_cast<const unsigned char*>(section_data(s, id));
+    const unsigned char* data = section_data(s, id);
     const uint64_t bytes = section_bytes(id, L, C, P);
     for (uint64_t at = 0; at < bytes; at += kPieceBytes) {
       const uint64_t n = std::min(kPieceBytes, bytes - at);

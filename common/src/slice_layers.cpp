@@ -141,39 +141,28 @@ FaceRange face_range(const Mesh& mesh, size_t f, const std::vector<double>& laye
           uint32_t(first_plane_above(layer_z, z[hi])), lo, hi};
 }
 
-}  // namespace
-
-Slices slice_layers(const Mesh& mesh, const SliceOptions& options, const Progress& progress) {
-  validate_mesh(mesh);
-  const ZRange z = z_range(mesh);
-  const double z_start = std::isnan(options.z_start) ? z.min : options.z_start;
-  Slices out = slice_planes(mesh, layer_planes(z_start, options.thickness, z.max), progress);
-  out.z_start = z_start;
-  out.thickness = options.thickness;
-  return out;
-}
-
-Slices slice_planes(const Mesh& mesh, std::vector<double> planes, const Progress& progress) {
-  validate_mesh(mesh);
-  if (!std::is_sorted(planes.begin(), planes.end())) throw Error("slice planes must be in increasing order");
-  report_progress(progress, 0, "preparing");
+// Phase 1: the planes every face straddles.
+std::vector<FaceRange> face_ranges(const Mesh& mesh, const std::vector<double>& layer_z) {
   const size_t nf = mesh.faces();
-  Slices out;
-  out.layer_z = std::move(planes);
-  out.fingerprint = mesh_fingerprint(mesh);
-  const size_t L = out.layers();
-
-  const EdgeLinks links = edge_links(mesh);
   std::vector<FaceRange> ranges(nf);
 #pragma omp parallel for schedule(static)
-  for (long long f = 0; f < static_cast<long long>(nf); ++f) ranges[f] = face_range(mesh, size_t(f), out.layer_z);
+  for (long long f = 0; f < static_cast<long long>(nf); ++f) ranges[f] = face_range(mesh, size_t(f), layer_z);
+  return ranges;
+}
 
-  // Exact point count of every layer before any chaining, so each layer writes straight into
-  // its slot of the flat output: one point per straddling face, plus the first point of every
-  // open polyline (a face whose start edge has no neighbour).
+// Phase 2, in one pass over the faces: the exact point count of every layer before any
+// chaining, so each layer writes straight into its slot of the flat output (one point per
+// straddling face, plus the first point of every open polyline: a face whose start edge has no
+// neighbour), and how many faces start straddling at each layer.
+struct LayerCounts {
+  std::vector<uint64_t> point_begin;   // L+1: layer k's points are [point_begin[k], point_begin[k+1])
+  std::vector<uint32_t> bucket_begin;  // L+2: after phase 3, bucket k is [bucket_begin[k], bucket_begin[k+1])
+};
+
+LayerCounts count_layers(const std::vector<FaceRange>& ranges, const EdgeLinks& links, size_t L) {
+  LayerCounts c{std::vector<uint64_t>(L + 1, 0), std::vector<uint32_t>(L + 2, 0)};
   std::vector<int64_t> diff(L + 1, 0);
-  std::vector<uint32_t> bucket_begin(L + 2, 0);
-  for (size_t f = 0; f < nf; ++f) {
+  for (size_t f = 0; f < ranges.size(); ++f) {
     const FaceRange& r = ranges[f];
     if (r.k0 < r.km) {
       const int64_t n = 1 + (links.links[3 * f + (r.lo + 2) % 3] == kUnlinked);
@@ -185,44 +174,53 @@ Slices slice_planes(const Mesh& mesh, std::vector<double> planes, const Progress
       diff[r.km] += n;
       diff[r.k1] -= n;
     }
-    if (r.k0 < r.k1) ++bucket_begin[r.k0 + 1];
+    if (r.k0 < r.k1) ++c.bucket_begin[r.k0 + 1];
   }
-  std::vector<uint64_t> point_begin(L + 1, 0);
   for (size_t k = 0, running = 0; k < L; ++k) {
     running += diff[k];
-    point_begin[k + 1] = point_begin[k] + running;
+    c.point_begin[k + 1] = c.point_begin[k] + running;
   }
-  const size_t P = point_begin[L];
-  out.xyz.resize(3 * P);
-  out.face.resize(P);
-  out.edge.resize(P);
-  out.t.resize(P);
+  return c;
+}
 
-  // Faces bucketed by the first layer they straddle: the sweep adds bucket k at layer k.
+// Phase 3: faces bucketed by the first layer they straddle (the sweep adds bucket k at layer k);
+// turns bucket_begin from counts into offsets.
+std::vector<uint32_t> bucket_faces(const std::vector<FaceRange>& ranges, std::vector<uint32_t>& bucket_begin) {
+  const size_t L = bucket_begin.size() - 2;
   for (size_t k = 0; k <= L; ++k) bucket_begin[k + 1] += bucket_begin[k];
   std::vector<uint32_t> bucket(bucket_begin[L]);
-  {
-    std::vector<uint32_t> cursor(bucket_begin.begin(), bucket_begin.end() - 1);
-    for (size_t f = 0; f < nf; ++f)
-      if (ranges[f].k0 < ranges[f].k1) bucket[cursor[ranges[f].k0]++] = uint32_t(f);
-  }
+  std::vector<uint32_t> cursor(bucket_begin.begin(), bucket_begin.end() - 1);
+  for (size_t f = 0; f < ranges.size(); ++f)
+    if (ranges[f].k0 < ranges[f].k1) bucket[cursor[ranges[f].k0]++] = uint32_t(f);
+  return bucket;
+}
 
-  // Active faces at the start of each block of layers, so blocks can run independently.
-  const size_t nb = (L + kLayersPerBlock - 1) / kLayersPerBlock;
+// Phase 4: the active faces at the start of each block of layers, so blocks can run
+// independently.
+std::vector<std::vector<ActiveFace>> active_at_block_starts(const std::vector<FaceRange>& ranges,
+                                                            const std::vector<uint32_t>& bucket,
+                                                            const std::vector<uint32_t>& bucket_begin, size_t nb) {
   std::vector<std::vector<ActiveFace>> block_start(nb);
-  {
-    std::vector<ActiveFace> active;
-    for (size_t b = 0; b < nb; ++b) {
-      const size_t b0 = b * kLayersPerBlock;
-      if (b > 0)
-        for (uint32_t i = bucket_begin[b0 - kLayersPerBlock]; i < bucket_begin[b0]; ++i)
-          active.push_back({bucket[i], ranges[bucket[i]].k1});
-      active.erase(std::remove_if(active.begin(), active.end(), [&](const ActiveFace& a) { return a.k1 <= b0; }),
-                   active.end());
-      block_start[b] = active;
-    }
+  std::vector<ActiveFace> active;
+  for (size_t b = 0; b < nb; ++b) {
+    const size_t b0 = b * kLayersPerBlock;
+    if (b > 0)
+      for (uint32_t i = bucket_begin[b0 - kLayersPerBlock]; i < bucket_begin[b0]; ++i)
+        active.push_back({bucket[i], ranges[bucket[i]].k1});
+    active.erase(std::remove_if(active.begin(), active.end(), [&](const ActiveFace& a) { return a.k1 <= b0; }),
+                 active.end());
+    block_start[b] = active;
   }
+  return block_start;
+}
 
+// Phase 5: every block of layers swept and chained, in parallel, straight into out's points
+// (sized by phase 2); returns each block's contour list.
+std::vector<BlockContours> sweep_blocks(const Mesh& mesh, const EdgeLinks& links, const std::vector<FaceRange>& ranges,
+                                        const LayerCounts& counts, const std::vector<uint32_t>& bucket,
+                                        std::vector<std::vector<ActiveFace>> block_start, Slices& out,
+                                        const Progress& progress) {
+  const size_t L = out.layers(), nb = block_start.size();
   const bool has_unlinked = links.unlinked > 0;
   const LayerSlicer slicer(mesh, links.links, ranges, out.layer_z, out);
   std::vector<BlockContours> blocks(nb);
@@ -231,20 +229,24 @@ Slices slice_planes(const Mesh& mesh, std::vector<double> planes, const Progress
       nb,
       [&](size_t b) {
         std::vector<uint32_t>& stamp = stamps[omp_get_thread_num()];
-        if (stamp.empty()) stamp.assign(nf, 0);
+        if (stamp.empty()) stamp.assign(mesh.faces(), 0);
         std::vector<ActiveFace> active = std::move(block_start[b]);
         const size_t b0 = b * kLayersPerBlock, b1 = std::min(L, b0 + kLayersPerBlock);
         for (size_t k = b0; k < b1; ++k) {
-          for (uint32_t i = bucket_begin[k]; i < bucket_begin[k + 1]; ++i)
+          for (uint32_t i = counts.bucket_begin[k]; i < counts.bucket_begin[k + 1]; ++i)
             active.push_back({bucket[i], ranges[bucket[i]].k1});
           active.erase(std::remove_if(active.begin(), active.end(), [&](const ActiveFace& a) { return a.k1 <= k; }),
                        active.end());
-          slicer.slice(k, active, has_unlinked, stamp.data(), point_begin[k], point_begin[k + 1], blocks[b]);
+          slicer.slice(k, active, has_unlinked, stamp.data(), counts.point_begin[k], counts.point_begin[k + 1],
+                       blocks[b]);
         }
       },
       progress, "slicing");
+  return blocks;
+}
 
-  // Stitch the blocks' contour lists into the flat arrays, in layer order.
+// Phase 6: the blocks' contour lists stitched into the flat arrays, in layer order.
+void stitch_blocks(const std::vector<BlockContours>& blocks, size_t L, Slices& out) {
   size_t C = 0;
   for (const BlockContours& b : blocks) C += b.lengths.size();
   out.layer_begin.resize(L + 1);
@@ -263,6 +265,44 @@ Slices slice_planes(const Mesh& mesh, std::vector<double> planes, const Progress
       out.contour_open[c] = b.open[i];
     }
   }
+}
+
+}  // namespace
+
+Slices slice_layers(const Mesh& mesh, const SliceOptions& options, const Progress& progress) {
+  validate_mesh(mesh);
+  const ZRange z = z_range(mesh);
+  const double z_start = std::isnan(options.z_start) ? z.min : options.z_start;
+  Slices out = slice_planes(mesh, layer_planes(z_start, options.thickness, z.max), progress);
+  out.z_start = z_start;
+  out.thickness = options.thickness;
+  return out;
+}
+
+Slices slice_planes(const Mesh& mesh, std::vector<double> planes, const Progress& progress) {
+  validate_mesh(mesh);
+  if (!std::is_sorted(planes.begin(), planes.end())) throw Error("slice planes must be in increasing order");
+  report_progress(progress, 0, "preparing");
+  Slices out;
+  out.layer_z = std::move(planes);
+  out.fingerprint = mesh_fingerprint(mesh);
+  const size_t L = out.layers();
+
+  const EdgeLinks links = edge_links(mesh);
+  const std::vector<FaceRange> ranges = face_ranges(mesh, out.layer_z);
+  LayerCounts counts = count_layers(ranges, links, L);
+  const size_t P = counts.point_begin[L];
+  out.xyz.resize(3 * P);
+  out.face.resize(P);
+  out.edge.resize(P);
+  out.t.resize(P);
+  const std::vector<uint32_t> bucket = bucket_faces(ranges, counts.bucket_begin);
+  const size_t nb = (L + kLayersPerBlock - 1) / kLayersPerBlock;
+  std::vector<std::vector<ActiveFace>> block_start = active_at_block_starts(ranges, bucket, counts.bucket_begin, nb);
+
+  const std::vector<BlockContours> blocks =
+      sweep_blocks(mesh, links, ranges, counts, bucket, std::move(block_start), out, progress);
+  stitch_blocks(blocks, L, out);
   report_progress(progress, 1, "slicing");
   return out;
 }

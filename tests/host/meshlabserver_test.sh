@@ -145,14 +145,18 @@ errors)
   edit slice.mlx neg.mlx 's/name="layer_thickness" value="0.1"/name="layer_thickness" value="-0.2"/'
   must_fail log2.txt "layer_thickness must be greater than 0" -i "$m0" -s neg.mlx
   no_outputs
+  # A parameter of the wrong type in a hand-written script: named, no assertion reached.
+  edit slice.mlx wrongtype.mlx 's/type="RichFloat" name="layer_thickness" value="0.1"/type="RichInt" name="layer_thickness" value="1"/'
+  must_fail log_type.txt "parameter 'layer_thickness' must be a number, but it is a RichInt" -i "$m0" -s wrongtype.mlx
+  no_outputs
   edit slice.mlx nodir.mlx 's#out/slice\.enc#missing_dir/slice.enc#'
   must_fail log3.txt "encoding_file: cannot write" -i "$m0" -s nodir.mlx
   no_outputs
-  # The encoding write fails after the contour file was written: neither file may remain.
-  mkdir -p out/slice.enc.partial/blocker
-  must_fail log4.txt "Slice Mesh with Encoding:" -i "$m0" -s "$EXAMPLES/slice.mlx"
-  [ ! -e out/slice.ctr ] && [ ! -e out/slice.enc ] || fail "a failed run left an output file"
-  rm -rf out/slice.enc.partial
+  # The encoding write fails after the contour file was written (its 252-character name is
+  # valid, but its staged twin, name.tmp-XXXXXX, is too long): neither file may remain.
+  long=$(printf 'e%.0s' $(seq 248)).enc
+  edit slice.mlx long.mlx "s#out/slice\.enc#out/$long#"
+  must_fail log4.txt "File name too long" -i "$m0" -s long.mlx
   no_outputs
   # Transfer: unsupported map, target with other faces, missing encoding file.
   ok log5.txt -i "$m0" -s "$EXAMPLES/slice.mlx"

@@ -66,16 +66,22 @@ def test_transfer_result_equals_direct(sliced):
     _same_points(tmp / "t.ctr", tmp / "d.ctr")
 
 
-def test_transfer_to_band_member_mixes_transfer_and_reslicing(pymeshlab, make_family, tmp_path):
-    """A member changed in z within one band of heights: the band's layers are re-sliced, the
-    rest transferred, and the result equals slicing the member directly (points; masks S = 1)."""
+def _band_member_and_encoding(pymeshlab, make_family, encoding):
+    """A MeshSet with members 0 and 1 of an arch family changed in z within one band of
+    heights, member 0 sliced to `encoding`; returns it and member 1's id (current)."""
     m0, m1 = make_family("arch", 2, z_change="band")
     ms = pymeshlab.MeshSet()
     ms.load_new_mesh(str(m0))
     ms.apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS, contour_file="",
-                    encoding_file=str(tmp_path / "s.enc"))
+                    encoding_file=str(encoding))
     ms.load_new_mesh(str(m1))
-    target = ms.current_mesh_id()
+    return ms, ms.current_mesh_id()
+
+
+def test_transfer_to_band_member_mixes_transfer_and_reslicing(pymeshlab, make_family, tmp_path):
+    """A member changed in z within one band of heights: the band's layers are re-sliced, the
+    rest transferred, and the result equals slicing the member directly (points; masks S = 1)."""
+    ms, target = _band_member_and_encoding(pymeshlab, make_family, tmp_path / "s.enc")
     t = ms.apply_filter("transfer_slicing_to_mesh", encoding_file=str(tmp_path / "s.enc"),
                         target_mesh=target, contour_file=str(tmp_path / "t.ctr"))
     assert t["layers"] == t["transferred_layers"] + t["resliced_layers"] == 80
@@ -101,14 +107,9 @@ def test_barycentric_mode_reports_deviation(pymeshlab, sliced, make_family):
     _, layers = read_text_contours(tmp / "b.ctr")
     assert max(abs(p[2] - z) for z, cs in layers for _, pts in cs for p in pts) < 1e-9
     # Band member: points leave their planes inside the band, by the reported amount.
-    m0, m1 = make_family("arch", 2, z_change="band")
-    ms = pymeshlab.MeshSet()
-    ms.load_new_mesh(str(m0))
-    ms.apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS, contour_file="",
-                    encoding_file=str(tmp / "band.enc"))
-    ms.load_new_mesh(str(m1))
+    ms, band = _band_member_and_encoding(pymeshlab, make_family, tmp / "band.enc")
     t = ms.apply_filter("transfer_slicing_to_mesh", encoding_file=str(tmp / "band.enc"),
-                        target_mesh=ms.current_mesh_id(), mode="barycentric",
+                        target_mesh=band, mode="barycentric",
                         contour_file=str(tmp / "band.ctr"))
     _, layers = read_text_contours(tmp / "band.ctr")
     worst = max(abs(p[2] - z) for z, cs in layers for _, pts in cs for p in pts)
@@ -181,6 +182,13 @@ def test_thickness_must_be_positive(pymeshlab, sliced, thickness):
     _raises(pymeshlab, ms, "slice_mesh_with_encoding", "layer_thickness must be greater than 0",
             layer_thickness=thickness, contour_file=str(tmp / "x.ctr"))
     assert not (tmp / "x.ctr").exists()
+
+
+def test_display_size_limit_is_the_core_one(pymeshlab, sliced):
+    ms, _, _, _, tmp, _ = sliced
+    _raises(pymeshlab, ms, "export_mask_images", "width_px must be between 1 and 65535 pixels (got 65536)",
+            contour_file=str(tmp / "s.ctr"), output_path=str(tmp / "m"), width_px=65536)
+    assert not (tmp / "m").exists()
 
 
 def test_encoding_of_another_mesh_is_refused(pymeshlab, sliced, make_family):

@@ -18,6 +18,7 @@
 #include "slicereuse/mask_png.h"
 #include "slicereuse/mask_stack.h"
 #include "slicereuse/masks.h"
+#include "temp_folder.h"
 
 namespace fs = std::filesystem;
 using namespace slicereuse;
@@ -95,21 +96,14 @@ size_t on_pixels(const std::vector<uint8_t>& img) {
   return n;
 }
 
-class MaskFiles : public ::testing::Test {
+class MaskFiles : public test::TempFolderTest {
  protected:
-  void SetUp() override {
-    char tmpl[] = "/tmp/slicereuse_masks_XXXXXX";
-    ASSERT_NE(::mkdtemp(tmpl), nullptr);
-    dir = tmpl;
-  }
-  void TearDown() override { fs::remove_all(dir); }
   std::vector<std::string> listing() const {
     std::vector<std::string> names;
     for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
     std::sort(names.begin(), names.end());
     return names;
   }
-  std::string dir;
 };
 
 // Three layers: a square, a square with a hole, a star.

@@ -19,6 +19,7 @@
 #include "slicereuse/atomic_file.h"
 #include "slicereuse/error.h"
 #include "slicereuse/slice_files.h"
+#include "temp_folder.h"
 
 using namespace slicereuse;
 namespace fs = std::filesystem;
@@ -130,15 +131,8 @@ std::string error_of(const std::function<void()>& f) {
         << "message: " << message_ << "\nexpected to contain: " << substring; \
   } while (0)
 
-class SliceFiles : public ::testing::Test {
+class SliceFiles : public test::TempFolderTest {
  protected:
-  void SetUp() override {
-    char name[] = "/tmp/slicereuse-test-files-XXXXXX";
-    ASSERT_NE(::mkdtemp(name), nullptr);
-    dir = name;
-  }
-  void TearDown() override { fs::remove_all(dir); }
-  std::string path(const std::string& name) const { return dir + "/" + name; }
   std::vector<std::string> leftovers() const {
     std::vector<std::string> found;
     for (const auto& e : fs::directory_iterator(dir))
@@ -146,7 +140,6 @@ class SliceFiles : public ::testing::Test {
         found.push_back(e.path().string());
     return found;
   }
-  std::string dir;
 };
 
 uint64_t u64_at(const std::string& b, size_t at) {

@@ -32,7 +32,8 @@ void expect_same_points_without_encoding(const Slices& source, const Mesh& membe
   EXPECT_EQ(bare.layer_begin, full.layer_begin);
   EXPECT_EQ(bare.contour_begin, full.contour_begin);
   EXPECT_TRUE(bare.xyz == full.xyz);
-  const Slices prepared = transfer_contours(source, encoded_edge_ends(source, member), member, TransferMode::Exact);
+  const Slices prepared =
+      transfer_contours(source, encoded_edge_ends(source, member), member, TransferOptions(TransferMode::Exact));
   EXPECT_EQ(prepared.layer_begin, full.layer_begin);
   EXPECT_EQ(prepared.contour_begin, full.contour_begin);
   EXPECT_TRUE(prepared.xyz == full.xyz && prepared.face == full.face && prepared.edge == full.edge &&
@@ -66,7 +67,7 @@ TEST_P(TransferFamily, ExactTransferEqualsDirectSlicing) {
     SCOPED_TRACE("member " + std::to_string(i));
     const Mesh member = test::make_family_member(base, o, i);
     TransferStats stats;
-    const Slices moved = transfer_contours(source, member, TransferMode::Exact, &stats);
+    const Slices moved = transfer_contours(source, member, TransferOptions(TransferMode::Exact), &stats);
     SliceOptions same_plate;
     same_plate.thickness = source.thickness;
     same_plate.z_start = source.z_start;
@@ -123,8 +124,8 @@ TEST(TransferContours, BarycentricEqualsExactWhenZIsUnchanged) {
   const Mesh member = test::make_family_member(base, o, 2);
   const Slices source = slice(base, 0.05);
   TransferStats st;
-  const Slices bary = transfer_contours(source, member, TransferMode::Barycentric, &st);
-  const Slices exact = transfer_contours(source, member, TransferMode::Exact);
+  const Slices bary = transfer_contours(source, member, TransferOptions(TransferMode::Barycentric), &st);
+  const Slices exact = transfer_contours(source, member, TransferOptions(TransferMode::Exact));
   EXPECT_LT(st.max_plane_deviation, 1e-12);
   ASSERT_EQ(bary.xyz.size(), exact.xyz.size());
   for (size_t i = 0; i < bary.xyz.size(); ++i) ASSERT_NEAR(bary.xyz[i], exact.xyz[i], 1e-12) << i;
@@ -138,7 +139,8 @@ TEST(TransferContours, BarycentricReportsPointsLeavingThePlane) {
   const Mesh base = test::make_family_base(o);
   const Mesh member = test::make_family_member(base, o, 1);
   TransferStats st;
-  const Slices bary = transfer_contours(slice(base, 0.05), member, TransferMode::Barycentric, &st);
+  const Slices bary =
+      transfer_contours(slice(base, 0.05), member, TransferOptions(TransferMode::Barycentric), &st);
   double worst = 0;
   for (size_t k = 0; k < bary.layers(); ++k)
     for (size_t p = bary.contour_begin[bary.layer_begin[k]]; p < bary.contour_begin[bary.layer_begin[k + 1]]; ++p)
@@ -155,21 +157,21 @@ TEST(TransferContours, RefusesAMeshWithOtherFaces) {
   Mesh other = base;
   std::swap(other.F[0], other.F[1]);
   try {
-    transfer_contours(source, other, TransferMode::Exact);
+    transfer_contours(source, other, TransferOptions(TransferMode::Exact));
     FAIL() << "a target with other faces was accepted";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("faces differ"), std::string::npos) << e.what();
   }
   other = base;
   other.F.resize(other.F.size() - 3);
-  EXPECT_THROW(transfer_contours(source, other, TransferMode::Exact), Error);
+  EXPECT_THROW(transfer_contours(source, other, TransferOptions(TransferMode::Exact)), Error);
   Slices contours_only = source;
   contours_only.face.clear();
-  EXPECT_THROW(transfer_contours(contours_only, base, TransferMode::Exact), Error);
+  EXPECT_THROW(transfer_contours(contours_only, base, TransferOptions(TransferMode::Exact)), Error);
   Buffer<uint32_t> ends = encoded_edge_ends(source, base);
   EXPECT_THROW(encoded_edge_ends(source, other), Error);
   ends.pop_back();
-  EXPECT_THROW(transfer_contours(source, ends, base, TransferMode::Exact), Error);
+  EXPECT_THROW(transfer_contours(source, ends, base, TransferOptions(TransferMode::Exact)), Error);
 }
 
 TEST(TransferContours, LocalZEditReslicesOnlyTheLayersItTouches) {
@@ -191,7 +193,7 @@ TEST(TransferContours, LocalZEditReslicesOnlyTheLayersItTouches) {
   member.V[3 * top + 2] += 3.2 * h;
   member.V[3 * mid + 2] += 0.7 * h;
   TransferStats stats;
-  const Slices moved = transfer_contours(source, member, TransferMode::Exact, &stats);
+  const Slices moved = transfer_contours(source, member, TransferOptions(TransferMode::Exact), &stats);
   SliceOptions same_plate;
   same_plate.thickness = h;
   same_plate.z_start = source.z_start;

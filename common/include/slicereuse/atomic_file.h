@@ -1,34 +1,66 @@
 #pragma once
-// AtomicFile: writes a file under a temporary name in the destination folder and renames it
-// into place on commit(). If commit() is never reached (error, cancel, exception) the
-// temporary is removed, so a failed run never leaves a truncated file under the final name.
+// Atomic outputs: the one way slicereuse writes results, so that a failed, cancelled or
+// crashed run never leaves a truncated file, a half-filled folder or a broken archive under a
+// final name (nor replaces an older one).
+//
+// StagedOutputs: outputs that appear together. file(path) / folder(path) reserve a fresh name
+//   next to path (PATH.tmp-XXXXXX, same file system, so renames are atomic) as an empty file or
+//   folder and return it; the caller writes there by any means (stdio, plain writes into the
+//   folder, libzip's zip_open on the staged file); commit() renames every staged output onto its
+//   final path, in the order staged. Destroyed without commit: every staged output is removed.
+//   A staged file gets the mode of the file it replaces, else 0666 minus the umask. A staged
+//   folder replaces a missing or empty folder in one rename; into a folder that has entries, its
+//   entries are renamed one by one (other entries there are kept).
+// AtomicFile: one file written through a stdio stream, a StagedOutputs of one file.
+// check_writable: refuses early an output path whose folder cannot take it.
+// Folder paths may end in '/' ("out/masks/" is the folder "out/masks" in the folder "out").
+// All throw Error naming the path (and the system's reason) on failure.
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace slicereuse {
 
+class StagedOutputs {
+ public:
+  StagedOutputs() = default;
+  StagedOutputs(const StagedOutputs&) = delete;
+  StagedOutputs& operator=(const StagedOutputs&) = delete;
+  ~StagedOutputs();
+
+  std::string file(const std::string& final_path);
+  // Throws Error when final_path exists and is not a folder.
+  std::string folder(const std::string& final_path);
+  void commit();
+
+ private:
+  struct Output {
+    std::string staged, final_path;
+    bool is_folder;
+  };
+  std::vector<Output> outputs_;
+};
+
 class AtomicFile {
  public:
-  // Opens PATH.tmp-XXXXXX next to path; throws Error naming path when it cannot be created.
   explicit AtomicFile(const std::string& path);
   ~AtomicFile();
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
 
-  FILE* stream() { return file_; }
-  const std::string& temp_path() const { return temp_; }
   // Writes n bytes; throws Error naming the path on a short write.
   void write(const void* data, size_t n);
-  // Flushes, closes and renames onto the final path; throws Error on failure.
+  // Flushes, closes and renames onto the final path.
   void commit();
 
  private:
-  std::string path_, temp_;
+  std::string path_;
+  StagedOutputs staged_;
   FILE* file_ = nullptr;
 };
 
-// Throws Error naming path when its folder does not exist or is not writable, so a filter can
-// refuse before spending minutes on work whose result could not be saved.
+// Throws Error naming path when its folder does not exist or is not writable, or path is a
+// folder, so a filter can refuse before spending minutes on work whose result could not be saved.
 void check_writable(const std::string& path);
 
 }  // namespace slicereuse

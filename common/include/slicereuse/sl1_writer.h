@@ -8,9 +8,9 @@
 //
 // The PNG of layer k comes from layer_png(k), called on this thread for k = 0, 1, ..., L-1 in
 // that order while the archive is written (libzip writes on close), so the caller can encode
-// layers in parallel batches and keep only one batch in memory. The archive is written through
-// AtomicFile: on any error, including one thrown by layer_png (rethrown as is, e.g. Cancelled),
-// nothing is left under path.
+// layers in parallel batches and keep only one batch in memory. The archive is staged
+// (StagedOutputs, atomic_file.h): on any error, including one thrown by layer_png (rethrown as
+// is, e.g. Cancelled), nothing is left under path.
 #include <cstddef>
 #include <cstdint>
 #include <functional>

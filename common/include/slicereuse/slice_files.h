@@ -3,7 +3,7 @@
 // (face + area coordinates per point), each as text (.ctr / .enc) or binary (.srb).
 // docs/formats.md specifies both formats byte by byte.
 //
-// Writers are atomic (AtomicFile) and throw Error naming the path on failure.
+// Writers are atomic (AtomicFile, atomic_file.h) and throw Error naming the path on failure.
 // Readers detect the format from the file's first bytes, validate every count against the file
 // size and every section checksum, and throw Error naming the file, the line or section and the
 // problem. A reader fills the structure of Slices (layers, contours) plus xyz (contour file) or

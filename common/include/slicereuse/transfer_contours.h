@@ -26,10 +26,11 @@ namespace slicereuse {
 
 enum class TransferMode { Exact = 0, Barycentric = 1 };
 
+// Explicit, so a bare TransferMode argument does not silently mean "with the encoding".
 struct TransferOptions {
   TransferMode mode;
   bool encoding;  // also compute the target's encoding (face, edge, t per point)
-  TransferOptions(TransferMode m = TransferMode::Exact, bool with_encoding = true)
+  explicit TransferOptions(TransferMode m = TransferMode::Exact, bool with_encoding = true)
       : mode(m), encoding(with_encoding) {}
 };
 
