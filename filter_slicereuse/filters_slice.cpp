@@ -6,6 +6,7 @@
 #include "filters_common.h"
 #include "slicereuse/atomic_file.h"
 #include "slicereuse/error.h"
+#include "slicereuse/mesh_defects.h"
 #include "slicereuse/slice_files.h"
 #include "slicereuse/slice_layers.h"
 
@@ -83,14 +84,32 @@ Result run_slice(const ParamValues& values, Host& host) {
     host.add_polyline_layer("slice preview", xyz, segments);
   }
 
+  const MeshDefects defects = find_mesh_defects(mesh);
   const double seconds = seconds_since(start);
   host.log(format("Slice Mesh with Encoding: %zu layers, %zu contours, %zu points, %zu open contours, "
                   "%.3f s (slicing %.3f s)",
                   s.layers(), s.contours(), s.points(), s.open_contours(), seconds, slicing_seconds));
+  // Say why, where the numbers alone would puzzle: open contours come from the mesh's defects,
+  // no contours from a mesh that lies between two planes.
+  if (!defects.clean())
+    host.log("Slice Mesh with Encoding: the mesh has " + describe_mesh_defects(defects) +
+             (s.open_contours() ? "; open contours end where these are" : ""));
+  if (s.contours() == 0) {
+    const ZRange z = z_range(mesh);
+    host.log(format("Slice Mesh with Encoding: no contours: no slicing plane cuts the mesh, which spans z %g to "
+                    "%g mm (%zu layer(s) of %g mm, cut at their mid-heights, the first at z %g mm); a part "
+                    "thinner than half a layer has none",
+                    z.min, z.max, s.layers(), options.thickness, s.layers() ? s.layer_z[0] : 0.0));
+  }
   return {{"layers", int64_t(s.layers())},
           {"contours", int64_t(s.contours())},
           {"points", int64_t(s.points())},
           {"open_contours", int64_t(s.open_contours())},
+          {"duplicate_faces", int64_t(defects.duplicate_faces)},
+          {"zero_area_faces", int64_t(defects.zero_area_faces)},
+          {"repeated_vertex_faces", int64_t(defects.repeated_vertex_faces)},
+          {"boundary_edges", int64_t(defects.boundary_edges)},
+          {"non_manifold_edges", int64_t(defects.non_manifold_edges)},
           {"z_start", s.z_start},
           {"slicing_seconds", slicing_seconds},
           {"seconds", seconds}};

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "slicereuse/error.h"
+#include "slicereuse/format.h"
 
 namespace slicereuse {
 
@@ -29,9 +30,15 @@ void validate_mesh(const Mesh& mesh) {
       throw Error("face " + std::to_string(i / 3) + " refers to vertex " +
                   std::to_string(mesh.F[i]) + " but the mesh has " + std::to_string(nv) +
                   " vertices");
-  for (size_t i = 0; i < mesh.V.size(); ++i)
-    if (!std::isfinite(mesh.V[i]))
-      throw Error("vertex " + std::to_string(i / 3) + " has a coordinate that is not finite");
+  size_t non_finite = 0, first = 0;
+  for (size_t v = 0; v < nv; ++v)
+    if (!std::isfinite(mesh.V[3 * v]) || !std::isfinite(mesh.V[3 * v + 1]) || !std::isfinite(mesh.V[3 * v + 2]))
+      if (non_finite++ == 0) first = v;
+  // Refused rather than sliced around: the faces they touch would leave holes in the print.
+  if (non_finite != 0)
+    throw Error(format("the mesh has %zu vertices with NaN or infinite coordinates (first: vertex %zu); "
+                       "repair or remove them first",
+                       non_finite, first));
 }
 
 }  // namespace slicereuse

@@ -10,7 +10,9 @@
 #include "slicereuse/edge_point.h"
 #include "slicereuse/error.h"
 #include "slicereuse/fingerprint.h"
+#include "slicereuse/format.h"
 #include "slicereuse/layer_planes.h"
+#include "slicereuse/memory_budget.h"
 #include "slicereuse/parallel_blocks.h"
 
 namespace slicereuse {
@@ -31,6 +33,8 @@ inline uint32_t end_edge(const FaceRange& r, size_t k) { return k < r.km ? r.lo 
 inline uint32_t start_edge(const FaceRange& r, size_t k) { return k < r.km ? (r.lo + 2) % 3 : r.hi; }
 
 constexpr size_t kLayersPerBlock = 32;
+// Output per point: xyz, face, edge, t.
+constexpr size_t kBytesPerPoint = 3 * sizeof(double) + sizeof(uint32_t) + sizeof(uint8_t) + sizeof(double);
 
 struct ActiveFace {
   uint32_t face, k1;
@@ -292,6 +296,8 @@ Slices slice_planes(const Mesh& mesh, std::vector<double> planes, const Progress
   const std::vector<FaceRange> ranges = face_ranges(mesh, out.layer_z);
   LayerCounts counts = count_layers(ranges, links, L);
   const size_t P = counts.point_begin[L];
+  check_memory_for(P * kBytesPerPoint, format("slicing %zu layers into %zu contour points", L, P),
+                   "use a thicker layer, or fewer layers (z_start)");
   out.xyz.resize(3 * P);
   out.face.resize(P);
   out.edge.resize(P);

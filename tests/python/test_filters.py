@@ -2,7 +2,7 @@
 input raising PyMeshLabException with a message that names the problem (never a crash)."""
 import pytest
 
-from conftest import THICKNESS, read_text_contours
+from conftest import FAILED_MESH_SETS, THICKNESS, raises_filter_error as _raises, read_text_contours
 
 
 @pytest.fixture
@@ -21,7 +21,10 @@ def sliced(pymeshlab, make_family, tmp_path):
 def test_slice_result(sliced):
     ms, _, _, r, tmp, _ = sliced
     assert set(r) == {"layers", "contours", "points", "open_contours", "z_start", "slicing_seconds",
-                      "seconds"}
+                      "seconds", "duplicate_faces", "zero_area_faces", "repeated_vertex_faces",
+                      "boundary_edges", "non_manifold_edges"}
+    assert [r[k] for k in ("duplicate_faces", "zero_area_faces", "repeated_vertex_faces",
+                           "boundary_edges", "non_manifold_edges")] == [0, 0, 0, 0, 0]
     assert r["z_start"] == 0.0 and 0 <= r["slicing_seconds"] <= r["seconds"]
     assert all(isinstance(r[k], int) for k in ("layers", "contours", "points", "open_contours"))
     assert isinstance(r["seconds"], float)
@@ -162,20 +165,6 @@ def test_preview_layer_is_an_edge_mesh_and_not_current(sliced):
     assert preview.edge_number() == preview.vertex_number()  # closed loops only
 
 
-# pymeshlab 2025.7.post1 bug (reproduced with built-in filters alone, under valgrind): after a
-# filter raises, pymeshlab keeps logging into that MeshSet's log until a filter succeeds again;
-# once that MeshSet is destroyed, loading a mesh into another one writes into freed memory
-# (seen as std::bad_alloc in later tests). MeshSets that saw an error are kept alive here.
-_FAILED_MESH_SETS = []
-
-
-def _raises(pymeshlab, ms, filter_name, message, **params):
-    _FAILED_MESH_SETS.append(ms)
-    with pytest.raises(pymeshlab.PyMeshLabException) as e:
-        ms.apply_filter(filter_name, **params)
-    assert message in str(e.value), str(e.value)
-
-
 @pytest.mark.parametrize("thickness", [0.0, -0.5])
 def test_thickness_must_be_positive(pymeshlab, sliced, thickness):
     ms, _, _, _, tmp, _ = sliced
@@ -231,7 +220,7 @@ def test_interpreter_survives_errors(pymeshlab, sliced):
 
 def test_no_current_mesh(pymeshlab):
     ms = pymeshlab.MeshSet()
-    _FAILED_MESH_SETS.append(ms)
+    FAILED_MESH_SETS.append(ms)
     with pytest.raises(pymeshlab.PyMeshLabException):
         ms.apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS)
 

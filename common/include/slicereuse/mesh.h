@@ -23,7 +23,7 @@ struct ZRange {
 ZRange z_range(const Mesh& mesh);
 
 // Throws Error when the mesh has no faces, V or F has a length not divisible by 3, an index is
-// out of range, or a coordinate is not finite.
+// out of range, or a coordinate is not finite (naming how many vertices and the first).
 void validate_mesh(const Mesh& mesh);
 
 }  // namespace slicereuse
