@@ -109,7 +109,7 @@ double angle(const double* a, const double* b, const double* c) {  // at a
 }
 
 // Height error, folded triangles, area and angle distortion of the map (image: 3 per vertex).
-void measure(const Mesh& source, const SurfaceMap& map, const SurfaceGrid& grid, const std::vector<double>& image,
+void measure(const Mesh& source, const SurfaceGrid& grid, const std::vector<double>& image,
              CrossParamQuality& q) {
   const size_t nv = source.vertices(), nf = source.faces();
   double max_dz = 0, sum_dz2 = 0;
@@ -132,11 +132,12 @@ void measure(const Mesh& source, const SurfaceMap& map, const SurfaceGrid& grid,
     const double as = cross_area(s, ns), ai = cross_area(m, ni);
     if (as == 0) continue;  // a degenerate source triangle has no orientation to keep
     ++measured;
-    // The target's orientation where the triangle lands: the normals of the faces its corners
-    // map to, summed. The image is folded over when it faces the other way (or has no area).
-    double nt[3] = {0, 0, 0};
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k) nt[k] += tn[3 * size_t(map.face[F[j]]) + k];
+    // The target's orientation where the triangle lands: the normal of the target face
+    // nearest to the image's centroid. The image is folded over when it faces the other way
+    // (or has no area).
+    const double centroid[3] = {(m[0][0] + m[1][0] + m[2][0]) / 3, (m[0][1] + m[1][1] + m[2][1]) / 3,
+                                (m[0][2] + m[1][2] + m[2][2]) / 3};
+    const double* nt = &tn[3 * size_t(grid.nearest_on_surface(centroid, nullptr, -2, kInf).face)];
     if (!(ni[0] * nt[0] + ni[1] * nt[1] + ni[2] * nt[2] > 0)) {
       ++flipped;
       continue;
@@ -235,7 +236,7 @@ CrossParamResult cross_parameterize(const Mesh& source, const Mesh& target, cons
   }
 
   report_progress(progress, 0.8, "measuring");
-  measure(source, map, grid, image, q);
+  measure(source, grid, image, q);
   // Without landmarks nothing but the registration vouches for the correspondence: refuse a
   // result where much of the source found no matching surface or the image folds over.
   const double far_share = double(far) / double(std::max<size_t>(1, nv));

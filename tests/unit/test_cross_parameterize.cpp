@@ -69,3 +69,22 @@ TEST(CrossParameterize, Explore) {
     print(shape, r.quality, max_truth_distance(p, r.map));
   }
 }
+TEST(CrossParameterize, Debug) {
+  const char* shape = std::getenv("SHAPE") ? std::getenv("SHAPE") : "arch";
+  const Pair p = family_pair(shape, 8000, 11000, 1);
+  const CrossParamResult r = cross_parameterize(p.source, p.target, {});
+  std::vector<std::pair<double, size_t>> e;
+  for (size_t i = 0; i < r.map.size(); ++i) {
+    double x[3];
+    map_point(r.map, p.target, i, x);
+    e.push_back({std::hypot(x[0] - p.truth[3 * i], x[1] - p.truth[3 * i + 1], x[2] - p.truth[3 * i + 2]), i});
+  }
+  std::sort(e.rbegin(), e.rend());
+  for (int k = 0; k < 10; ++k) {
+    const size_t i = e[k].second;
+    double x[3];
+    map_point(r.map, p.target, i, x);
+    std::printf("err %.3f v %zu src %.3f %.3f %.3f img %.3f %.3f %.3f truth %.3f %.3f %.3f\n", e[k].first, i, p.source.V[3 * i], p.source.V[3 * i + 1], p.source.V[3 * i + 2], x[0], x[1], x[2], p.truth[3 * i], p.truth[3 * i + 1], p.truth[3 * i + 2]);
+  }
+  std::printf("p50 %.4f p90 %.4f p99 %.4f\n", e[e.size() / 2].first, e[e.size() / 10].first, e[e.size() / 100].first);
+}
