@@ -64,39 +64,16 @@ const void* section_data(const SurfaceMap& m, uint32_t id) {
 }
 
 void write_binary(const std::string& path, const SurfaceMap& m, const Progress& progress) {
-  const size_t table_end = kFixedHeaderBytes + kSectionEntryBytes * 3;
-  std::vector<unsigned char> head(table_end + 8, 0);
-  std::memcpy(head.data(), kBinaryMagic, sizeof kBinaryMagic);
-  put<uint32_t>(head, 8, kFormatVersion);
-  put<uint32_t>(head, 12, kMapKind);
-  put<uint64_t>(head, 16, m.source_vertices);
-  put<uint64_t>(head, 24, m.target_vertices);
-  put<uint64_t>(head, 32, m.source.faces);
-  put<uint64_t>(head, 40, m.source.hash);
-  put<uint64_t>(head, 48, m.target.faces);
-  put<uint64_t>(head, 56, m.target.hash);
-  put<uint32_t>(head, 72, 3);
-  uint64_t offset = head.size();
-  for (int i = 0; i < 3; ++i) {
-    const uint64_t bytes = section_bytes(kSectionIds[i], m.source.faces, m.source_vertices);
-    const size_t at = kFixedHeaderBytes + kSectionEntryBytes * i;
-    put<uint32_t>(head, at, kSectionIds[i]);
-    put<uint64_t>(head, at + 8, offset);
-    put<uint64_t>(head, at + 16, bytes);
-    put<uint64_t>(head, at + 24, XXH3_64bits(section_data(m, kSectionIds[i]), bytes));
-    offset = align8(offset + bytes);
-  }
-  put<uint64_t>(head, table_end, XXH3_64bits(head.data(), table_end));
-  AtomicFile file(path);
-  file.write(head.data(), head.size());
-  const char zeros[8] = {};
-  for (int i = 0; i < 3; ++i) {
-    const uint64_t bytes = section_bytes(kSectionIds[i], m.source.faces, m.source_vertices);
-    file.write(section_data(m, kSectionIds[i]), bytes);
-    file.write(zeros, align8(bytes) - bytes);
-    report_progress(progress, (i + 1) / 3.0, "writing");
-  }
-  file.commit();
+  std::vector<unsigned char> fields(detail::kKindFieldBytes, 0);  // header bytes 16..72
+  put<uint64_t>(fields, 0, m.source_vertices);
+  put<uint64_t>(fields, 8, m.target_vertices);
+  put<uint64_t>(fields, 16, m.source.faces);
+  put<uint64_t>(fields, 24, m.source.hash);
+  put<uint64_t>(fields, 32, m.target.faces);
+  put<uint64_t>(fields, 40, m.target.hash);
+  std::vector<detail::SectionOut> sections;
+  for (uint32_t id : kSectionIds) sections.push_back({id, section_data(m, id), section_bytes(id, m.source.faces, m.source_vertices)});
+  detail::write_container(path, kMapKind, fields.data(), sections, progress);
 }
 
 SurfaceMap read_binary(const std::string& path, FILE* f, uint64_t size) {

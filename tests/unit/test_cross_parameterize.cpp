@@ -18,6 +18,7 @@
 #include "family.h"
 #include "shapes.h"
 #include "slicereuse/cross_parameterize.h"
+#include "error_of.h"
 #include "slicereuse/error.h"
 #include "slicereuse/mesh_topology.h"
 #include "slicereuse/pickpoints_file.h"
@@ -80,15 +81,6 @@ TruthError truth_error(const Pair& p, const SurfaceMap& map) {
   }
   e.rms = std::sqrt(e.rms / double(map.size()));
   return e;
-}
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(no error)";
 }
 
 void write_pp(const std::string& path, const std::vector<std::array<double, 3>>& points) {

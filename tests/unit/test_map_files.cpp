@@ -10,29 +10,16 @@
 #include <string>
 
 #include "family.h"
+#include "error_of.h"
 #include "slicereuse/error.h"
 #include "slicereuse/fingerprint.h"
 #include "slicereuse/map_files.h"
 
 using namespace slicereuse;
+using slicereuse::test::error_of;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
-#define EXPECT_ERROR(expr, substring)                                                                           \
-  do {                                                                                                          \
-    const std::string message_ = error_of([&] { (void)(expr); });                                               \
-    EXPECT_NE(message_.find(substring), std::string::npos) << "message: " << message_ << "\nexpected: " << substring; \
-  } while (0)
 
 // A small valid map from a family mesh onto itself, with irregular barycentric coordinates.
 SurfaceMap sample_map() {
