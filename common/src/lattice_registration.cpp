@@ -168,6 +168,28 @@ DisplacementField register_on_lattice(const std::vector<double>& V, const std::v
 
   std::vector<double> P(V.size());
   RegistrationStats st;
+  // The pair of sample s at the current positions P: the nearest target point facing the same
+  // way within the trust distance, on the level set at the sample's own height when in_plane;
+  // n is the unit normal to pull along and gamma its weight. In the plane, the level set's
+  // normal is the face normal's xy part; on nearly horizontal faces it is unreliable and the
+  // point-to-point term takes over. False when there is no pair.
+  struct Pairing {
+    double q[3], n[3], gamma;
+  };
+  auto pair_sample = [&](size_t s, const std::vector<double>& normal, Pairing& out) {
+    const size_t i = sample[s];
+    const double* p = &P[3 * i];
+    const SurfacePoint q = in_plane ? target.nearest_on_level(p, V[3 * i + 2], &normal[3 * i], min_dot, trust)
+                                    : target.nearest_on_surface(p, &normal[3 * i], min_dot, trust);
+    if (q.face == kNoFace) return false;
+    const double* tn = &target.face_normals()[3 * size_t(q.face)];
+    for (int a = 0; a < 3; ++a) out.q[a] = q.xyz[a], out.n[a] = a == 2 && in_plane ? 0.0 : tn[a];
+    const double len = std::sqrt(dot3(out.n, out.n));
+    out.gamma = in_plane ? std::min(1.0, len / 0.3) : 1.0;
+    if (len > 0)
+      for (double& x : out.n) x /= len;
+    return true;
+  };
   // Stage 1: the polynomial part by exact point-to-plane ICP (a dense system of 9 terms per
   // moved coordinate), the lattice part still zero.
   {
@@ -192,23 +214,18 @@ DisplacementField register_on_lattice(const std::vector<double>& V, const std::v
       double sql = 0, ml = 0;
 #pragma omp for schedule(dynamic, 256) nowait
       for (long long s = 0; s < (long long)ns; ++s) {
+        Pairing pr;
+        if (!pair_sample(size_t(s), normal, pr)) continue;
         const size_t i = sample[s];
         const double* p = &P[3 * i];
-        const SurfacePoint q = in_plane ? target.nearest_on_level(p, V[3 * i + 2], &normal[3 * i], min_dot, trust)
-                                        : target.nearest_on_surface(p, &normal[3 * i], min_dot, trust);
-        if (q.face == kNoFace) continue;
         const double W = area[i] / total_area;
-        const double d[3] = {q.xyz[0] - p[0], q.xyz[1] - p[1], in_plane ? 0.0 : q.xyz[2] - p[2]};
+        const double d[3] = {pr.q[0] - p[0], pr.q[1] - p[1], in_plane ? 0.0 : pr.q[2] - p[2]};
         sql += W * dot3(d, d);
         ml += W;
-        const double* tn = &target.face_normals()[3 * size_t(q.face)];
-        double n[3] = {tn[0], tn[1], in_plane ? 0.0 : tn[2]};
-        const double len = std::sqrt(dot3(n, n));
-        const double gamma = in_plane ? std::min(1.0, len / 0.3) : 1.0;
-        if (len > 0)
-          for (double& x : n) x /= len;
+        const double* n = pr.n;
+        const double gamma = pr.gamma;
         // Residual of the whole polynomial displacement against the original position.
-        const double g[3] = {q.xyz[0] - V[3 * i], q.xyz[1] - V[3 * i + 1], q.xyz[2] - V[3 * i + 2]};
+        const double g[3] = {pr.q[0] - V[3 * i], pr.q[1] - V[3 * i + 1], pr.q[2] - V[3 * i + 2]};
         double b[T];
         field.polynomial_basis(&V[3 * i], b);
         const double S = field.poly_scale();
@@ -273,23 +290,16 @@ DisplacementField register_on_lattice(const std::vector<double>& V, const std::v
       for (long long s = 0; s < (long long)ns; ++s) {
         const size_t i = sample[s];
         const double* p = &P[3 * i];
-        const SurfacePoint q = in_plane ? target.nearest_on_level(p, V[3 * i + 2], &normal[3 * i], min_dot, trust)
-                                        : target.nearest_on_surface(p, &normal[3 * i], min_dot, trust);
         double* g = &goal[3 * s];
         for (int a = 0; a < 3; ++a) g[a] = p[a];
-        if (q.face == kNoFace) continue;
+        Pairing pr;
+        if (!pair_sample(size_t(s), normal, pr)) continue;
         const double W = area[i] / total_area;
-        const double r[3] = {q.xyz[0] - p[0], q.xyz[1] - p[1], in_plane ? 0.0 : q.xyz[2] - p[2]};
+        const double r[3] = {pr.q[0] - p[0], pr.q[1] - p[1], in_plane ? 0.0 : pr.q[2] - p[2]};
         sq += W * dot3(r, r);
         matched += W;
-        const double* tn = &target.face_normals()[3 * size_t(q.face)];
-        double n[3] = {tn[0], tn[1], in_plane ? 0.0 : tn[2]};
-        // In the plane, the level set's normal is the face normal's xy part; on nearly
-        // horizontal faces it is unreliable and the point-to-point term takes over.
-        const double len = std::sqrt(dot3(n, n));
-        const double gamma = in_plane ? std::min(1.0, len / 0.3) : 1.0;
-        if (len > 0)
-          for (double& x : n) x /= len;
+        const double* n = pr.n;
+        const double gamma = pr.gamma;
         const double rn = dot3(n, r);
         for (int a = 0; a < 3; ++a) g[a] += (gamma * n[a] * rn + beta * r[a]) / (gamma + beta);
       }

@@ -11,16 +11,19 @@
 // exact point-to-plane ICP, is (x, y, 1) times (1, z, z^2) per moved coordinate: it carries the
 // smooth scale, shear, rotation, twist and bend between family members, which slide walls along
 // themselves and which the lattice alone would recover only slowly. The lattice part lives on a
-// regular lattice (about 20 cells along the longest side) and is
+// regular lattice (about 2500 nodes over the bounding box) and is
 // interpolated trilinearly, so walls that lie close together move together and the linear
 // system stays small (a few thousand unknowns, independent of the mesh size). In each ICP
 // iteration every sampled source vertex is paired with the nearest target point that faces the
 // same way (normals within 60 degrees): with in_plane, on the target's level set at the vertex's
 // own height, so d has no z component; otherwise anywhere on the surface. Pairs farther than a
-// shrinking trust distance are dropped. The field minimises point-to-plane plus a little
-// point-to-point distance, weighted by vertex area, plus alpha times its bending energy
-// (squared second differences on the lattice, so affine changes cost nothing), solved with
-// Eigen's SimplicialLDLT; alpha decreases from level to level (stiff first, then detailed).
+// shrinking trust distance are dropped. The lattice part minimises the distance to each pair's
+// linearized point-to-plane goal (plus a little point-to-point), weighted by vertex area, plus
+// alpha times its bending energy (squared second differences, so affine changes cost nothing);
+// its matrix is the same for every coordinate and iteration of a level, so Eigen's
+// SimplicialLDLT factorizes it once per level; alpha decreases from level to level (stiff
+// first, then detailed). Unpaired samples hold their place. Cost: 8 polynomial and 12 lattice
+// iterations of nearest-point queries on at most 40000 sampled vertices.
 #include <array>
 #include <cstdint>
 #include <vector>
