@@ -253,11 +253,17 @@ CrossParamResult cross_parameterize(const Mesh& source, const Mesh& target, cons
   // (tight level-set curves, the soft height zone at a ridge top), each corner of a folded
   // triangle is placed again from the mean image of its neighbours (a Laplacian step).
   const size_t nf = source.faces();
-  std::vector<uint8_t> bad(nf);
+  // After the first pass only faces around moved vertices can change: only they are checked.
+  std::vector<uint8_t> bad(nf), moved_vertex(nv, 1);
   for (int pass = 0; pass < 8; ++pass) {
 #pragma omp parallel for schedule(dynamic, 4096)
-    for (long long f = 0; f < (long long)nf; ++f) bad[f] = folded(source, grid, image, size_t(f)) > 0;
-    std::vector<uint8_t> mark(nv, 0);
+    for (long long f = 0; f < (long long)nf; ++f) {
+      const uint32_t* F = &source.F[3 * f];
+      if (moved_vertex[F[0]] || moved_vertex[F[1]] || moved_vertex[F[2]])
+        bad[f] = folded(source, grid, image, size_t(f)) > 0;
+    }
+    std::vector<uint8_t>& mark = moved_vertex;
+    std::fill(mark.begin(), mark.end(), 0);
     std::vector<uint32_t> touched;
     for (size_t f = 0; f < nf; ++f)
       if (bad[f])
