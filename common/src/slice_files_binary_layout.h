@@ -10,9 +10,11 @@
 // Multi-byte fields are little-endian, which is the host order on every platform MeshLab runs on.
 #include <cstdint>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "slice_files_detail.h"
+#include "slicereuse/progress.h"
 #include "slicereuse/slices.h"
 
 namespace slicereuse::detail {
@@ -62,6 +64,18 @@ inline const unsigned char* section_data(const Slices& s, uint32_t id) {
   return section_data(const_cast<Slices&>(s), id);
 }
 inline uint64_t align8(uint64_t n) { return (n + 7) & ~uint64_t(7); }
+
+// Writes a binary container atomically: the fixed header with `kind` and the kind's own header
+// bytes [kThicknessAt, kSectionCountAt) (`fields`), the section table with checksums, then the
+// sections in order. Used by the slice files (kinds 1, 2) and the map files (map_files.cpp, 3).
+constexpr size_t kKindFieldBytes = kSectionCountAt - kThicknessAt;
+struct SectionOut {
+  uint32_t id;
+  const void* data;
+  uint64_t bytes;
+};
+void write_container(const std::string& path, uint32_t kind, const unsigned char fields[kKindFieldBytes],
+                     const std::vector<SectionOut>& sections, const Progress& progress);
 
 // Large sections are read and written in pieces so progress (and cancellation) stays responsive.
 constexpr uint64_t kPieceBytes = uint64_t(64) << 20;

@@ -7,12 +7,14 @@
 #include <limits>
 #include <string>
 
+#include "error_of.h"
 #include "shapes.h"
 #include "slicereuse/error.h"
 #include "slicereuse/mesh_defects.h"
 #include "slicereuse/slice_layers.h"
 
 using namespace slicereuse;
+using test::error_of;
 using test::make_box;
 
 namespace {
@@ -24,15 +26,6 @@ Slices slice(const Mesh& m, double thickness) {
 }
 
 void add_face(Mesh& m, uint32_t a, uint32_t b, uint32_t c) { m.F.insert(m.F.end(), {a, b, c}); }
-
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
 
 }  // namespace
 
@@ -114,11 +107,11 @@ TEST(MeshDefects, NonFiniteVertexIsNamedBySlicing) {
   const MeshDefects d = find_mesh_defects(m);
   EXPECT_EQ(d.non_finite_vertices, 1u);
   EXPECT_EQ(d.first_non_finite_vertex, 5u);
-  EXPECT_NE(message_of([&] { slice(m, 0.1); }).find("vertex 5"), std::string::npos);
+  EXPECT_NE(error_of([&] { slice(m, 0.1); }).find("vertex 5"), std::string::npos);
 }
 
 TEST(MeshDefects, EmptyMeshIsRefusedInWords) {
-  EXPECT_NE(message_of([] { slice(Mesh{}, 0.1); }).find("no faces"), std::string::npos);
+  EXPECT_NE(error_of([] { slice(Mesh{}, 0.1); }).find("no faces"), std::string::npos);
 }
 
 TEST(MeshDefects, SingleTriangleGivesOneOpenPolylinePerLayer) {
@@ -140,7 +133,7 @@ TEST(MeshDefects, MeshInsideOneLayerGivesNoContours) {
 
 TEST(MeshDefects, ExtremeCoordinatesSliceOrAreRefusedWithTheLayerCount) {
   const Mesh m = make_box(-1e6, -1e6, 0, 1e6, 1e6, 1e6);
-  const std::string refused = message_of([&] { slice(m, 0.05); });
+  const std::string refused = error_of([&] { slice(m, 0.05); });
   EXPECT_NE(refused.find("gives 2e+07 layers"), std::string::npos) << refused;
   EXPECT_NE(refused.find("limit of 10000000"), std::string::npos) << refused;
   const Slices s = slice(m, 1000);
@@ -150,7 +143,7 @@ TEST(MeshDefects, ExtremeCoordinatesSliceOrAreRefusedWithTheLayerCount) {
 }
 
 TEST(MeshDefects, TinyThicknessMessagePrintsNumbersAsWritten) {
-  const std::string m = message_of([] { slice(make_box(0, 0, 0, 1, 1, 10), 1e-9); });
+  const std::string m = error_of([] { slice(make_box(0, 0, 0, 1, 1, 10), 1e-9); });
   EXPECT_NE(m.find("1e-09 mm"), std::string::npos) << m;
   EXPECT_EQ(m.find("0.000000"), std::string::npos) << m;
 }

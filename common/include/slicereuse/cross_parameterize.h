@@ -7,7 +7,11 @@
 // Output: the SurfaceMap (one target point per source vertex), a quality report, and a patch id
 // per vertex of both meshes (the same id marks corresponding regions, for colouring).
 // Throws Error with a message that names the problem for input it cannot map (see the .cpp
-// header comment for the approach and its limits).
+// header comment for the approach and its limits): meshes of different genus, connected
+// components or boundary loops (both values named), bad landmarks, or, without landmarks, a
+// pair the registration cannot bring together (the message asks for landmarks).
+// Genus 1 and higher is handled (a handle, a torus): nothing in the approach needs a disc or a
+// sphere, only the same topology on both sides. Open meshes are handled alike.
 #include <array>
 #include <cstdint>
 #include <string>
