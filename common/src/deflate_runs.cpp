@@ -183,6 +183,23 @@ void RunDeflater::add(const uint8_t* data, size_t n) {
   }
 }
 
+void RunDeflater::add_run(uint8_t byte, size_t n) {
+  if (n == 0) return;
+  // Adler-32 over n bytes b: A' = A + n*b, B' = B + n*A + b*n*(n+1)/2, both mod 65521.
+  constexpr uint64_t kMod = 65521;
+  const uint64_t a = adler_ & 0xffff, b = adler_ >> 16, m = n % kMod;
+  const uint64_t triangle = (n % 2 == 0 ? (n / 2 % kMod) * ((n + 1) % kMod) : (n % kMod) * ((n + 1) / 2 % kMod)) % kMod;
+  const uint64_t a2 = (a + m * byte) % kMod, b2 = (b + m * a + byte * triangle) % kMod;
+  adler_ = uint32_t(b2 << 16 | a2);
+  if (byte != last_) {
+    repeats();
+    symbols_.push_back(byte);
+    last_ = byte;
+    --n;
+  }
+  pending_ += n;
+}
+
 void RunDeflater::finish() {
   repeats();
   const auto& lengths_of = length_codes();

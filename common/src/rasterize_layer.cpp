@@ -41,8 +41,10 @@ struct Scratch {
 double clamp(double x, double lo, double hi) { return !(x >= lo) ? lo : (x > hi ? hi : x); }
 
 // Index of the first sample whose centre (i + 1/2) is at or after x, within [0, n].
+// (Clamped to [0, n] after rounding: ceil of the clamped value alone could give -1 or n + 1,
+// one pixel outside the row, for a part that leaves the display.)
 int first_sample_at_or_after(double x, int n) {
-  return int(std::ceil(clamp(x - 0.5, -1.0, double(n) + 1.0)));
+  return std::clamp(int(std::ceil(clamp(x - 0.5, -1.0, double(n) + 1.0))), 0, n);
 }
 
 // Builds the oriented edges of the closed contours of layer k in sample coordinates
@@ -129,14 +131,38 @@ void sweep(Scratch& w, int rows, int cols, Span&& span) {
   }
 }
 
-}  // namespace
-
-size_t rasterize_layer(const Slices& s, size_t k, const PrinterProfile& profile, uint8_t* out) {
+void check_layer(const Slices& s, size_t k, const PrinterProfile& profile) {
   validate_printer_profile(profile);
   if (k >= s.layers())
     throw Error("layer " + std::to_string(k) + " does not exist (" + std::to_string(s.layers()) +
                 " layers)");
   if (!s.has_points()) throw Error("the slices carry no contour points to rasterize");
+}
+
+}  // namespace
+
+size_t rasterize_layer_runs(const Slices& s, size_t k, const PrinterProfile& profile, MaskRuns& out) {
+  check_layer(s, k, profile);
+  if (profile.antialiasing) throw Error("anti-aliased masks have grey levels and cannot be given as runs");
+  thread_local Scratch w;
+  const int H = profile.height_px;
+  out.width = profile.width_px;
+  out.height = H;
+  out.row_begin.assign(size_t(H) + 1, 0);
+  out.columns.clear();
+  const size_t open = build_edges(s, k, profile, 1, w, H);
+  // Rows come in order and runs left to right (see sweep): count per row, then sum up.
+  sweep(w, H, profile.width_px, [&](int r, int a, int b) {
+    ++out.row_begin[size_t(r) + 1];
+    out.columns.push_back(uint16_t(a));
+    out.columns.push_back(uint16_t(b));
+  });
+  for (int r = 0; r < H; ++r) out.row_begin[size_t(r) + 1] += out.row_begin[size_t(r)];
+  return open;
+}
+
+size_t rasterize_layer(const Slices& s, size_t k, const PrinterProfile& profile, uint8_t* out) {
+  check_layer(s, k, profile);
   thread_local Scratch w;
   const int W = profile.width_px, H = profile.height_px;
   std::memset(out, 0, size_t(W) * size_t(H));
