@@ -536,3 +536,17 @@ TEST(RasterizeLayer, APartWiderThanTheDisplayStaysInsideItsRows) {
   EXPECT_EQ(img[69 * 200 + 199], 0);   // the row above the part: dark to its last pixel
   EXPECT_EQ(img[130 * 200], 0);        // the row below: dark from its first pixel
 }
+
+TEST_F(MaskFiles, JobNameEndingInDigitsKeepsItsLayerNumbers) {
+  // member_001.sl1 holds member_00100000.png ... : the layer number is the last five digits.
+  const Slices s = sample_stack();
+  const std::string sl1 = dir + "/member_001.sl1", folder = dir + "/folder";
+  export_masks(s, small_display(), sl1);
+  export_masks(s, small_display(), folder);
+  MaskStack archive(sl1);
+  ASSERT_EQ(archive.layers(), 3u);
+  EXPECT_EQ(archive.layer_name(2), sl1 + ":member_00100002.png");
+  const StackComparison c = compare_mask_stacks(sl1, folder, "");
+  ASSERT_EQ(c.layers.size(), 3u);
+  EXPECT_EQ(c.min_similarity, 1.0);
+}
