@@ -49,7 +49,7 @@ def _load_mesh(ms, path):
 
 
 def family(source, targets, layer_thickness, out, profile=None, binary=True, progress=None,
-           direct=False, verify=False, keep_contours=False):
+           direct=False, verify=False, keep_contours=False, details=False):
     """The production pipeline: one .sl1 print job per family member, out/<member stem>.sl1.
 
     Default: slices source once with encoding (out/<source stem>.encoding.srb), then for each
@@ -63,8 +63,9 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     keep_contours=True: also writes out/<stem>.srb (.ctr when binary is False).
     Returns {"source", "seconds", "targets": [{"mesh", "layers", "points", "resliced_layers",
     "seconds", "output"[, "min_similarity"]}, ...]}; a target's seconds cover loading it,
-    transferring or slicing it and writing its .sl1. progress(step, steps, text) is called
-    before each step."""
+    transferring or slicing it and writing its .sl1. details=True adds the filter's own
+    "slicing_seconds" (transfer or slicing) and "masks_seconds" per target (for benchmarks).
+    progress(step, steps, text) is called before each step."""
     for path in [source, *targets]:
         if not Path(path).is_file():
             raise FileNotFoundError(f"mesh file not found: {path}")
@@ -112,6 +113,8 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
         entry = {"mesh": str(target), "layers": r["layers"], "points": r["points"],
                  "resliced_layers": r["resliced_layers"], "seconds": time.perf_counter() - t0,
                  "output": str(output)}
+        if details:
+            entry.update(slicing_seconds=r["slicing_seconds"], masks_seconds=r["masks_seconds"])
         if verify:
             tick(f"{name}: verifying against direct slicing")
             check = out / f"{stem}.direct.sl1"
