@@ -117,7 +117,7 @@ set output '{png}'
 set title "One .sl1 per family member: arch, {int(faces):,} faces, {layers} layers, 1024x768"
 set ylabel 'seconds per member (log scale)'
 set logscale y
-set yrange [0.5:*]
+set yrange [{min(v for _, v in bars if v is not None) / 3:.3g}:*]
 set style fill solid 0.8
 set boxwidth 0.6
 set grid ytics
