@@ -15,6 +15,14 @@ EncodingCache& encoding_cache() {
   return cache;
 }
 
+// From the first print job on, large buffers freed by one member's job are kept for the next
+// (ReuseBuffers, at most a quarter of the machine's memory) instead of being returned to the
+// kernel, which would zero gigabytes of fresh pages for every member: bench_member_loop
+// measured 2.6x the CPU time for direct slicing and 2x for transfer without this.
+void keep_buffers_for_the_next_member() {
+  static ReuseBuffers keep;
+}
+
 }  // namespace
 
 Result run_print_job(const ParamValues& values, Host& host) {
@@ -26,6 +34,7 @@ Result run_print_job(const ParamValues& values, Host& host) {
   const std::string output_path = mask_output_path(values);
   check_outputs({{"contour_file", contour_file}, {"output_path", output_path}});
 
+  keep_buffers_for_the_next_member();
   const Mesh mesh = host.current_mesh();
   const Progress progress = host.progress();
   Slices s;

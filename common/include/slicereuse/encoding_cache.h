@@ -8,9 +8,7 @@
 // modification time and checksum (slice_file_identity), so a rewritten file is read again;
 // another key replaces the entry. Memory while it is kept: the encoding (13 bytes per point)
 // and the edge ends (8 bytes per point), about 1.5 GB for the 73 M points of a 545k-face part
-// at 1 um. While an entry is kept, large buffers freed by one member's work are reused by the
-// next (ReuseBuffers), so members do not pay the kernel for zeroing fresh pages every time.
-// clear() releases everything. Thread safe.
+// at 1 um. clear() releases it. Thread safe.
 #include <memory>
 #include <mutex>
 #include <string>
@@ -28,7 +26,6 @@ struct CachedEncoding {
   FileIdentity identity;
   Slices encoding;
   Buffer<uint32_t> edge_ends;  // encoded_edge_ends(encoding, any member)
-  ReuseBuffers reuse;
 };
 
 class EncodingCache {
