@@ -42,20 +42,25 @@ bool is_sl1(const std::string& path) {
 
 // Resin volume from the contours' areas (shoelace; holes run clockwise and subtract).
 double used_material_ml(const Slices& s) {
-  double mm3 = 0;
-  for (size_t k = 0; k < s.layers(); ++k) {
-    double area = 0;
+  // Layers on all cores, summed in layer order so the result does not depend on the schedule.
+  std::vector<double> area(s.layers(), 0);
+  const long long L = static_cast<long long>(s.layers());
+#pragma omp parallel for schedule(dynamic, 64)
+  for (long long k = 0; k < L; ++k) {
+    double a = 0;
     for (uint64_t c = s.layer_begin[k]; c < s.layer_begin[k + 1]; ++c) {
       if (s.contour_open[c]) continue;
       const uint64_t b = s.contour_begin[c], n = s.contour_begin[c + 1] - b;
       for (uint64_t i = 0; i < n; ++i) {
         const double* p = &s.xyz[3 * (b + i)];
         const double* q = &s.xyz[3 * (b + (i + 1 == n ? 0 : i + 1))];
-        area += 0.5 * (p[0] * q[1] - q[0] * p[1]);
+        a += 0.5 * (p[0] * q[1] - q[0] * p[1]);
       }
     }
-    mm3 += std::max(0.0, area) * s.thickness;
+    area[size_t(k)] = a;
   }
+  double mm3 = 0;
+  for (double a : area) mm3 += std::max(0.0, a) * s.thickness;
   return mm3 / 1000;
 }
 

@@ -30,7 +30,8 @@ struct Crossing {
 };
 
 struct Scratch {
-  std::vector<double> u, v;
+  std::vector<double> v;
+  std::vector<int> row;
   std::vector<Edge> edges;
   std::vector<uint32_t> row_count, order, active;
   std::vector<Crossing> crossings;
@@ -62,26 +63,29 @@ size_t build_edges(const Slices& s, size_t k, const PrinterProfile& p, int scale
       continue;
     }
     const uint64_t b = s.contour_begin[c], n = s.contour_begin[c + 1] - b;
-    w.u.resize(n);
+    // Rows first: most edges of a fine contour cross no sample row centre, and those are
+    // skipped by comparing their ends' first rows, computed once per point.
     w.v.resize(n);
+    w.row.resize(n);
     for (uint64_t i = 0; i < n; ++i) {
-      const double* q = &s.xyz[3 * (b + i)];
-      w.u[i] = cu + su * (q[0] + p.offset_x_mm);
-      w.v[i] = cv + sv * (q[1] + p.offset_y_mm);
+      w.v[i] = cv + sv * (s.xyz[3 * (b + i) + 1] + p.offset_y_mm);
+      w.row[i] = first_sample_at_or_after(w.v[i], rows);
     }
+    auto u = [&](uint64_t i) { return cu + su * (s.xyz[3 * (b + i)] + p.offset_x_mm); };
     for (uint64_t i = 0; i < n; ++i) {
       const uint64_t j = i + 1 == n ? 0 : i + 1;
-      double y0 = w.v[i], x0 = w.u[i], y1 = w.v[j], x1 = w.u[j];
-      int dir = 1;
+      if (w.row[i] == w.row[j]) continue;
+      double y0 = w.v[i], x0 = u(i), y1 = w.v[j], x1 = u(j);
+      int r0 = w.row[i], r1 = w.row[j], dir = 1;
       if (y1 < y0) {
         std::swap(y0, y1);
         std::swap(x0, x1);
+        std::swap(r0, r1);
         dir = -1;
       }
       // Horizontal edges cross no sample row; non-finite ones (only possible when the caller
       // skipped validate_slices) are dropped rather than fed to the sort.
       if (!(y0 < y1) || !std::isfinite(y1 - y0) || !std::isfinite(x1 - x0)) continue;
-      const int r0 = first_sample_at_or_after(y0, rows), r1 = first_sample_at_or_after(y1, rows);
       if (r0 >= r1) continue;
       w.edges.push_back({y0, x0, y1, x1, r0, r1, dir});
     }
