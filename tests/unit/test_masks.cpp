@@ -550,3 +550,16 @@ TEST_F(MaskFiles, JobNameEndingInDigitsKeepsItsLayerNumbers) {
   ASSERT_EQ(c.layers.size(), 3u);
   EXPECT_EQ(c.min_similarity, 1.0);
 }
+
+TEST_F(MaskFiles, Sl1WithRepeatedLayersMatchesFolder) {
+  // Runs of equal layers between different ones, more layers than the encoding window.
+  std::vector<Layer> layers;
+  for (int i = 0; i < 40; ++i)
+    layers.push_back(i % 7 < 4 ? Layer{rect(-5, -5, 5, 5)} : Layer{star(0.3, -0.2, 3, 7.5, 9 + i % 3)});
+  const Slices s = make_slices(layers);
+  export_masks(s, small_display(), dir + "/job.sl1");
+  export_masks(s, small_display(), dir + "/folder");
+  const StackComparison c = compare_mask_stacks(dir + "/job.sl1", dir + "/folder", "");
+  ASSERT_EQ(c.layers.size(), 40u);
+  EXPECT_EQ(c.differing_pixels, 0u);
+}
