@@ -18,6 +18,8 @@
 #   T_reuse  exact transfer from the cached encoding (median over the x-y members)
 #   direct / reuse: seconds per member everything included (load, slicing or transfer, .sl1),
 #   median over the x-y members; z: the member changed in z, reuse against direct.
+#   CPU: the same spans in CPU seconds of all threads; on a busy shared machine their ratio is
+#   the steadier one (wall seconds on 2 idle cores are about CPU / 2 for the parallel parts).
 # Prints the table and writes it to DIR/bench_family.md, the raw JSON next to it, and a chart
 # to docs/bench_family.png (gnuplot). Unattended; needs scripts/setup and scripts/build first.
 set -euo pipefail
@@ -81,6 +83,7 @@ med = lambda kind, key, z=False: statistics.median(t[key] for t in rows(kind, z)
 layers = rows("reuse", False)[0]["layers"]
 t_slice, t_s2i, t_reuse = med("direct", "slicing_seconds"), med("reuse", "masks_seconds"), med("reuse", "slicing_seconds")
 direct, reuse = med("direct", "seconds"), med("reuse", "seconds")
+cpu_direct, cpu_reuse = med("direct", "cpu_seconds"), med("reuse", "cpu_seconds")
 z_direct, z_reuse = med("direct", "seconds", True), med("reuse", "seconds", True)
 ps = None
 if prusa:
@@ -90,20 +93,21 @@ if prusa:
 fmt = lambda x, d=2: "-" if x is None else f"{x:.{d}f}"
 head = ["Model", "Size (faces)", "#L", "T_slice (s)", "T_S2I (s)", "T_reuse (s)",
         "PrusaSlicer (s/member)", "direct (s/member)", "reuse (s/member)", "direct / reuse",
-        "PrusaSlicer / reuse", "z member: reuse / direct", "peak memory reuse / direct (GB)",
+        "PrusaSlicer / reuse", "CPU s/member direct / reuse", "z member: reuse / direct", "peak memory reuse / direct (GB)",
         "members per hour (reuse)"]
 row = ["arch (gen_family)", f"{int(faces):,}", str(layers), fmt(t_slice), fmt(t_s2i), fmt(t_reuse),
        fmt(ps, 1), fmt(direct), fmt(reuse), f"{direct / reuse:.2f}x", "-" if ps is None else f"{ps / reuse:.0f}x",
+       f"{cpu_direct:.2f} / {cpu_reuse:.2f} ({cpu_direct / cpu_reuse:.2f}x)",
        f"{z_reuse / z_direct:.2f}x", f"{rss['reuse']:.1f} / {rss['direct']:.1f}", f"{3600 / reuse:.0f}"]
 md = [f"Family benchmark: arch, {int(faces):,} faces, 14.484 mm at {thickness} mm, .sl1 1024x768 at 75 um; "
       f"{len(rows('reuse', False))} x-y members and one changed in z; medians over the x-y members; "
       f"PrusaSlicer {prusa_note}.", "",
       "| " + " | ".join(head) + " |", "|" + "---|" * len(head), "| " + " | ".join(row) + " |", "",
       "Per member (seconds, everything included):", "",
-      "| member | layers | points | re-sliced | reuse | direct |", "|---|---|---|---|---|---|"]
+      "| member | layers | points | re-sliced | reuse | direct | reuse CPU | direct CPU |", "|---|---|---|---|---|---|---|---|"]
 for r, d in zip(runs["reuse"]["targets"], runs["direct"]["targets"]):
     md.append(f"| {Path(r['mesh']).name} | {r['layers']} | {r['points']} | {r['resliced_layers']} | "
-              f"{r['seconds']:.2f} | {d['seconds']:.2f} |")
+              f"{r['seconds']:.2f} | {d['seconds']:.2f} | {r['cpu_seconds']:.2f} | {d['cpu_seconds']:.2f} |")
 text = "\n".join(md) + "\n"
 (out / "bench_family.md").write_text(text)
 print(text)

@@ -64,7 +64,9 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     Returns {"source", "seconds", "targets": [{"mesh", "layers", "points", "resliced_layers",
     "seconds", "output"[, "min_similarity"]}, ...]}; a target's seconds cover loading it,
     transferring or slicing it and writing its .sl1. details=True adds the filter's own
-    "slicing_seconds" (transfer or slicing) and "masks_seconds" per target (for benchmarks).
+    "slicing_seconds" (transfer or slicing) and "masks_seconds" per target, and "cpu_seconds",
+    the process's CPU time (all threads) for the same span as "seconds" (for benchmarks on a
+    shared machine, where CPU time is less disturbed than wall time).
     progress(step, steps, text) is called before each step."""
     for path in [source, *targets]:
         if not Path(path).is_file():
@@ -103,7 +105,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     for target, stem in zip(targets, stems):
         name = Path(target).name
         tick(f"{name}: {'slicing' if direct else 'transferring'} and masks")
-        t0 = time.perf_counter()
+        t0, c0 = time.perf_counter(), time.process_time()
         ms = pymeshlab.MeshSet()
         _load_mesh(ms, target)
         output = out / f"{stem}.sl1"
@@ -114,7 +116,8 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
                  "resliced_layers": r["resliced_layers"], "seconds": time.perf_counter() - t0,
                  "output": str(output)}
         if details:
-            entry.update(slicing_seconds=r["slicing_seconds"], masks_seconds=r["masks_seconds"])
+            entry.update(slicing_seconds=r["slicing_seconds"], masks_seconds=r["masks_seconds"],
+                         cpu_seconds=time.process_time() - c0)
         if verify:
             tick(f"{name}: verifying against direct slicing")
             check = out / f"{stem}.direct.sl1"
