@@ -16,18 +16,17 @@
 #include "slicereuse/slice_files.h"
 #include "slicereuse/slice_layers.h"
 #include "slicereuse/transfer_contours.h"
+#include "temp_folder.h"
 
 using namespace slicereuse;
 namespace fs = std::filesystem;
 
 namespace {
 
-class Cache : public ::testing::Test {
+class Cache : public test::TempFolderTest {
  protected:
   void SetUp() override {
-    char tmpl[] = "/tmp/slicereuse_cache_XXXXXX";
-    ASSERT_NE(::mkdtemp(tmpl), nullptr);
-    dir = tmpl;
+    TempFolderTest::SetUp();
     o.shape = "arch";
     o.faces = 3000;
     o.height = 5;
@@ -38,8 +37,6 @@ class Cache : public ::testing::Test {
     s.thickness = 0.1;
     source = slice_layers(base, s);
   }
-  void TearDown() override { fs::remove_all(dir); }
-  std::string dir;
   test::FamilyOptions o;
   Mesh base, member;
   Slices source;
