@@ -4,15 +4,21 @@
 //   folder     - export_masks to <out>/masks (one PNG per layer)
 //   sl1        - export_masks to <out>/masks.sl1
 //   compare    - compare_mask_stacks(folder, sl1), which must report S = 1
+//   deflate    - (only when asked for) the PNG image data of every 8th layer (filter byte and
+//                8-bit row, as in an .sl1) deflated on one thread by RunDeflater and by
+//                libdeflate at levels 1, 3 and 6: seconds and total compressed size each
 // Prints the median seconds over runs and layers per second; --aa 1 for anti-aliased masks.
 // Usage: bench_masks [--shape arch] [--faces 545000] [--height 14.484] [--thickness 0.001]
 //                    [--runs 3] [--out /tmp/slicereuse-bench] [--aa 0]
+//                    [--steps rasterize,folder,sl1,compare[,deflate]]
+#include <libdeflate.h>
 #include <omp.h>
 #include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <functional>
 #include <limits>
@@ -22,6 +28,7 @@
 #include "bench_args.h"
 #include "family.h"
 #include "slicereuse/buffer.h"
+#include "slicereuse/deflate_runs.h"
 #include "slicereuse/masks.h"
 #include "slicereuse/slice_layers.h"
 
@@ -46,13 +53,63 @@ double seconds_of(const std::function<void()>& work, std::vector<double>& cpu) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+bool wants(const std::string& steps, const char* step) {
+  return ("," + steps + ",").find("," + std::string(step) + ",") != std::string::npos;
+}
+
+double since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// RunDeflater against libdeflate on the same PNG image data, one thread, same layers.
+void compare_deflaters(const Slices& s, const PrinterProfile& profile) {
+  const size_t W = size_t(profile.width_px), H = size_t(profile.height_px), stride = 8;
+  Buffer<uint8_t> image(W * H);
+  std::vector<uint8_t> data((W + 1) * H), z;
+  const int levels[] = {1, 3, 6};
+  libdeflate_compressor* c[3];
+  for (int i = 0; i < 3; ++i) c[i] = libdeflate_alloc_compressor(levels[i]);
+  double t_run = 0, t_lib[3] = {0, 0, 0};
+  size_t n_run = 0, n_lib[3] = {0, 0, 0}, layers = 0;
+  for (size_t k = 0; k < s.layers(); k += stride, ++layers) {
+    rasterize_layer(s, k, profile, image.data());
+    for (size_t r = 0; r < H; ++r) {
+      data[r * (W + 1)] = 0;
+      std::memcpy(&data[r * (W + 1) + 1], &image[r * W], W);
+    }
+    z.clear();
+    auto t0 = std::chrono::steady_clock::now();
+    RunDeflater d(z);
+    d.add(data.data(), data.size());
+    d.finish();
+    t_run += since(t0);
+    n_run += z.size();
+    for (int i = 0; i < 3; ++i) {
+      z.resize(libdeflate_zlib_compress_bound(c[i], data.size()));
+      t0 = std::chrono::steady_clock::now();
+      const size_t n = libdeflate_zlib_compress(c[i], data.data(), data.size(), z.data(), z.size());
+      t_lib[i] += since(t0);
+      n_lib[i] += n;
+    }
+  }
+  for (auto* x : c) libdeflate_free_compressor(x);
+  const double mb = double(layers) * double(data.size()) / 1e6;
+  std::printf("deflate, %zu layers (every %zu-th), %.0f MB of image data, one thread:\n", layers, stride, mb);
+  std::printf("  %-14s %8.3f s %8.0f MB/s %10zu bytes\n", "RunDeflater", t_run, mb / t_run, n_run);
+  for (int i = 0; i < 3; ++i)
+    std::printf("  libdeflate %-3d %8.3f s %8.0f MB/s %10zu bytes  (RunDeflater %.2fx faster)\n", levels[i],
+                t_lib[i], mb / t_lib[i], n_lib[i], t_lib[i] / t_run);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   bool aa = false;
+  std::string steps = "rasterize,folder,sl1,compare";
   std::vector<char*> rest{argv[0]};
   for (int i = 1; i < argc; ++i) {
     if (std::string(argv[i]) == "--aa" && i + 1 < argc) aa = std::atoi(argv[++i]) != 0;
+    else if (std::string(argv[i]) == "--steps" && i + 1 < argc) steps = argv[++i];
     else rest.push_back(argv[i]);
   }
   BenchArgs args = parse_bench_args(int(rest.size()), rest.data());
@@ -72,34 +129,39 @@ int main(int argc, char** argv) {
   profile.offset_x_mm = -(lo[0] + hi[0]) / 2;
   profile.offset_y_mm = -(lo[1] + hi[1]) / 2;
   profile.antialiasing = aa;
+  std::printf("shape %s, threads %d, %s masks %dx%d at %g um, extent %.2f x %.2f mm\n",
+              args.family.shape.c_str(), omp_get_max_threads(), aa ? "anti-aliased" : "binary",
+              profile.width_px, profile.height_px, profile.pixel_size_x_um, hi[0] - lo[0],
+              hi[1] - lo[1]);
+  std::printf("%8zu layers, %zu contours, %zu points\n", s.layers(), s.contours(), s.points());
+  if (wants(steps, "deflate")) compare_deflaters(s, profile);
 
   std::filesystem::create_directories(args.out);
   const std::string folder = args.out + "/masks", sl1 = args.out + "/masks.sl1";
   std::vector<double> t_raster, t_folder, t_sl1, t_compare;
   std::vector<double> c_raster, c_folder, c_sl1, c_compare;
+  const bool compare = wants(steps, "compare") && wants(steps, "folder") && wants(steps, "sl1");
   StackComparison cmp;
   for (int r = 0; r < args.runs; ++r) {
-    t_raster.push_back(seconds_of([&] {
+    if (wants(steps, "rasterize"))
+      t_raster.push_back(seconds_of([&] {
 #pragma omp parallel
-      {
-        Buffer<uint8_t> image(size_t(profile.width_px) * size_t(profile.height_px));
+        {
+          Buffer<uint8_t> image(size_t(profile.width_px) * size_t(profile.height_px));
 #pragma omp for schedule(dynamic, 16)
-        for (long long k = 0; k < static_cast<long long>(s.layers()); ++k)
-          rasterize_layer(s, size_t(k), profile, image.data());
-      }
-    }, c_raster));
-    t_folder.push_back(seconds_of([&] { export_masks(s, profile, folder); }, c_folder));
-    t_sl1.push_back(seconds_of([&] { export_masks(s, profile, sl1); }, c_sl1));
-    t_compare.push_back(seconds_of([&] { cmp = compare_mask_stacks(folder, sl1, ""); }, c_compare));
+          for (long long k = 0; k < static_cast<long long>(s.layers()); ++k)
+            rasterize_layer(s, size_t(k), profile, image.data());
+        }
+      }, c_raster));
+    if (wants(steps, "folder")) t_folder.push_back(seconds_of([&] { export_masks(s, profile, folder); }, c_folder));
+    if (wants(steps, "sl1")) t_sl1.push_back(seconds_of([&] { export_masks(s, profile, sl1); }, c_sl1));
+    if (compare)
+      t_compare.push_back(seconds_of([&] { cmp = compare_mask_stacks(folder, sl1, ""); }, c_compare));
   }
   const double L = double(s.layers());
-  std::printf("shape %s, threads %d, %s masks %dx%d at %g um, extent %.2f x %.2f mm\n",
-              args.family.shape.c_str(), omp_get_max_threads(), aa ? "anti-aliased" : "binary",
-              profile.width_px, profile.height_px, profile.pixel_size_x_um, hi[0] - lo[0],
-              hi[1] - lo[1]);
-  std::printf("%8zu layers, %zu contours, %zu points; compare: min S %.9g, %llu differing pixels\n",
-              s.layers(), s.contours(), s.points(), cmp.min_similarity,
-              static_cast<unsigned long long>(cmp.differing_pixels));
+  if (compare)
+    std::printf("compare: min S %.9g, %llu differing pixels\n", cmp.min_similarity,
+                static_cast<unsigned long long>(cmp.differing_pixels));
   std::printf("%-10s %9s %12s %12s   wall seconds per run\n", "step", "seconds", "layers/s",
               "cpu-seconds");
   struct Row {
@@ -112,14 +174,17 @@ int main(int argc, char** argv) {
                       {"sl1", t_sl1, c_sl1},
                       {"compare", t_compare, c_compare}};
   for (const Row& row : rows) {
+    if (row.wall.empty()) continue;
     const double m = median_of(row.wall);
     std::printf("%-10s %9.3f %12.0f %12.3f  ", row.name, m, L / m, median_of(row.cpu));
     for (double x : row.wall) std::printf(" %.3f", x);
     std::printf("\n");
   }
-  std::uintmax_t bytes = 0;
-  for (const auto& e : std::filesystem::directory_iterator(folder)) bytes += e.file_size();
-  std::printf("folder %.1f MB, sl1 %.1f MB\n", double(bytes) / 1e6,
-              double(std::filesystem::file_size(sl1)) / 1e6);
-  return cmp.min_similarity == 1 ? 0 : 1;
+  if (!t_folder.empty()) {
+    std::uintmax_t bytes = 0;
+    for (const auto& e : std::filesystem::directory_iterator(folder)) bytes += e.file_size();
+    std::printf("folder %.1f MB\n", double(bytes) / 1e6);
+  }
+  if (!t_sl1.empty()) std::printf("sl1 %.1f MB\n", double(std::filesystem::file_size(sl1)) / 1e6);
+  return !compare || cmp.min_similarity == 1 ? 0 : 1;
 }

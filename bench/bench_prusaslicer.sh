@@ -2,9 +2,10 @@
 # PrusaSlicer against slicereuse on the same job, in the same run: a generated part (default the
 # 545k-face arch, 14.484 mm tall) sliced at the same layer height into a .sl1 archive for the
 # same display (1024x768 pixels at 75 um). PrusaSlicer runs its CLI (supports and pad off);
-# slicereuse runs meshlabserver with "Slice Mesh with Encoding" then "Export Mask Images", start-up
-# and mesh loading included. Prints the median seconds of each and the ratio.
-# Needs PrusaSlicer (apt-get install prusa-slicer), which scripts/setup does not install.
+# slicereuse runs meshlabserver with "Make Print Job" (direct slicing and masks, in memory),
+# start-up and mesh loading included. Prints the median seconds of each and the ratio.
+# Needs PrusaSlicer (apt-get install prusa-slicer), which scripts/setup does not install
+# (bench_family.sh runs this when it is there).
 #   bench/bench_prusaslicer.sh [--faces N] [--thickness MM] [--runs R]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -24,14 +25,10 @@ cd "$work"
 "$root/build/2020/tests/gen_family" --shape arch --faces "$faces" --members 1 --height 14.484 --seed 1 --out . >/dev/null
 "$root/scripts/meshlabserver" -i member_000.ply -o part.stl >/dev/null 2>&1
 
-# One filter script: slice to a binary contour file, then masks into an .sl1 archive.
+# One filter: Make Print Job, slicing directly (no encoding file) into an .sl1 archive in memory.
 sed -e "s/name=\"layer_thickness\" value=\"[^\"]*\"/name=\"layer_thickness\" value=\"$thickness\"/" \
-    -e 's#value="out/slice.ctr"#value="part.srb"#' -e 's#value="out/slice.enc"#value=""#' \
-    -e 's#name="file_format" value="0"#name="file_format" value="1"#' \
-    -e '/<\/FilterScript>/d' "$root/examples/slice.mlx" > job.mlx
-sed -n '/<filter /,/<\/filter>/p' "$root/examples/masks.mlx" |
-  sed -e 's#name="contour_file" value="[^"]*"#name="contour_file" value="part.srb"#' -e 's#name="output_path" value="[^"]*"#name="output_path" value="ours.sl1"#' >> job.mlx
-echo "</FilterScript>" >> job.mlx
+    -e 's#name="encoding_file" value="[^"]*"#name="encoding_file" value=""#' \
+    -e 's#name="output_path" value="[^"]*"#name="output_path" value="ours.sl1"#' "$root/examples/print_job.mlx" > job.mlx
 
 seconds() {  # median wall seconds of running "$@" $runs times
   for _ in $(seq "$runs"); do

@@ -1,22 +1,22 @@
-"""Reuses one mesh's slicing for a family of customized meshes and checks the result.
+"""Makes the print jobs of a product family: one .sl1 per member, reusing one member's slicing.
 
-    scripts/python examples/family.py --layer-thickness 0.1 --out DIR MESH0 MESH1 ...
+    scripts/python examples/family.py --layer-thickness H --out DIR [--direct] [--verify]
+                                      [--keep-contours] MESH0 MESH1 ...
 
-Slices MESH0 with encoding, then for every other mesh: transfers the slicing, writes its masks,
-slices it directly, writes those masks and compares the two stacks. Prints one JSON object:
-{"source": MESH0, "targets": [{"mesh", "layers", "points", "resliced_layers",
-"transfer_seconds", "direct_seconds", "min_similarity"}, ...]}; min_similarity 1 means the
-transferred masks equal the directly sliced ones. Files go to DIR (see slicereuse_pymeshlab.family).
+Default: slices MESH0 once with encoding, then for each member MESH1 ...: loads it, transfers
+the slicing (exact: the result equals slicing it) and writes DIR/<member file stem>.sl1, all in
+memory, with no contour file unless --keep-contours. --direct: the same outputs by slicing every
+member directly (the baseline). --verify: also slices each member directly and compares the
+masks (min_similarity 1 means identical). Prints one JSON object:
+{"source": MESH0, "seconds": total, "targets": [{"mesh", "layers", "points", "resliced_layers",
+"seconds", "output"[, "min_similarity"]}, ...]}; a member's seconds cover loading it,
+transferring or slicing it and writing its .sl1. A progress bar goes to a terminal's stderr.
 """
 import argparse
 import json
 import sys
 
 import slicereuse_pymeshlab as sr
-
-KEYS = ("mesh", "layers", "points", "resliced_layers", "transfer_seconds", "direct_seconds",
-        "transfer_total_seconds", "direct_total_seconds",
-        "min_similarity")
 
 
 def progress_bar(step, steps, text):
@@ -32,10 +32,15 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--layer-thickness", type=float, required=True, help="layer thickness in mm")
     ap.add_argument("--out", required=True, help="output folder (created if missing)")
+    ap.add_argument("--direct", action="store_true", help="slice every member directly (the baseline)")
+    ap.add_argument("--verify", action="store_true",
+                    help="also slice each member directly and compare the masks (min_similarity)")
+    ap.add_argument("--keep-contours", action="store_true", help="also write each member's contour file")
     ap.add_argument("--width", type=int, default=1024, help="mask width in pixels (1024)")
     ap.add_argument("--height", type=int, default=768, help="mask height in pixels (768)")
     ap.add_argument("--pixel-um", type=float, default=75, help="pixel size in micrometres (75)")
-    ap.add_argument("--text", action="store_true", help="write text .ctr/.enc instead of binary .srb")
+    ap.add_argument("--text", action="store_true",
+                    help="write text .enc/.ctr instead of binary .srb (encoding, kept contours)")
     ap.add_argument("meshes", nargs="+", metavar="MESH", help="the sliced mesh, then its family members")
     args = ap.parse_args()
     if args.layer_thickness <= 0:
@@ -46,12 +51,12 @@ def main():
         sr.load()
         result = sr.family(args.meshes[0], args.meshes[1:], args.layer_thickness, args.out,
                            profile=profile, binary=not args.text,
-                           progress=progress_bar if sys.stderr.isatty() else None)
-    except Exception as e:  # pymeshlab.PyMeshLabException, OSError, RuntimeError
+                           progress=progress_bar if sys.stderr.isatty() else None,
+                           direct=args.direct, verify=args.verify, keep_contours=args.keep_contours)
+    except Exception as e:  # pymeshlab.PyMeshLabException, OSError, RuntimeError, ValueError
         if sys.stderr.isatty():
             sys.stderr.write("\n")
         sys.exit(f"family: error: {e}")
-    result["targets"] = [{k: t[k] for k in KEYS} for t in result["targets"]]
     print(json.dumps(result))
 
 

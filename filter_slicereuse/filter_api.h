@@ -31,7 +31,7 @@ struct ParamSpec {
   std::string file_filter;         // FileOpen/FileSave, e.g. "*.enc *.srb"
 };
 
-enum class FilterId { SliceWithEncoding, TransferSlicing, ExportMasks, CompareMasks };
+enum class FilterId { SliceWithEncoding, TransferSlicing, ExportMasks, CompareMasks, MakePrintJob };
 
 // Which meshes a filter works on (MeshLab's arity): none (files only), the current mesh, or the
 // meshes its Mesh parameters name.

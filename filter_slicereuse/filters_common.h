@@ -7,14 +7,28 @@
 
 #include "filter_api.h"
 #include "slicereuse/format.h"
+#include "slicereuse/masks.h"
+#include "slicereuse/slice_files.h"
+#include "slicereuse/slice_layers.h"
 
 namespace slicereuse::plugin {
 
-// The four filters, called by run_filter.
+// The filters, called by run_filter.
 Result run_slice(const ParamValues& values, Host& host);
 Result run_transfer(const ParamValues& values, Host& host);
 Result run_export_masks(const ParamValues& values, Host& host);
 Result run_compare_masks(const ParamValues& values, Host& host);
+Result run_print_job(const ParamValues& values, Host& host);
+
+// Parameters that several filters share, read and checked once (errors name the parameter).
+SliceOptions read_slice_options(const ParamValues& values);        // layer_thickness, z_start
+PrinterProfile read_printer_profile(const ParamValues& values);    // printer_params()
+const std::string& mask_output_path(const ParamValues& values);    // output_path
+// Logs the warning for a part that does not fit the display.
+void log_display_warning(Host& host, const char* filter, const MaskExportStats& stats,
+                         const PrinterProfile& profile);
+// Binary when the name ends in .srb, text otherwise.
+FileFormat format_for_name(const std::string& path);
 
 // Maps progress of one phase onto [from, to] of the whole filter.
 Progress sub_progress(const Progress& progress, double from, double to);

@@ -31,8 +31,14 @@ double finite(const ParamValues& values, const char* name) {
 
 }  // namespace
 
-Result run_export_masks(const ParamValues& values, Host& host) {
-  const auto start = std::chrono::steady_clock::now();
+// The mask output (a folder, which may be given with a trailing '/', or an .sl1 file).
+const std::string& mask_output_path(const ParamValues& values) {
+  const std::string& path = values.text("output_path");
+  if (path.empty()) throw Error("output_path is empty: choose a folder or a .sl1 file");
+  return path;
+}
+
+PrinterProfile read_printer_profile(const ParamValues& values) {
   PrinterProfile profile;
   profile.width_px = display_pixels(values, "width_px");
   profile.height_px = display_pixels(values, "height_px");
@@ -43,10 +49,24 @@ Result run_export_masks(const ParamValues& values, Host& host) {
   profile.mirror_x = values.number("mirror_x") != 0;
   profile.mirror_y = values.number("mirror_y") != 0;
   profile.antialiasing = values.number("antialiasing") != 0;
+  return profile;
+}
+
+void log_display_warning(Host& host, const char* filter, const MaskExportStats& stats, const PrinterProfile& profile) {
+  if (stats.outside_display)
+    host.log(format("%s: warning: the part (x %.2f to %.2f mm, y %.2f to %.2f mm, offset %g, %g mm) "
+                    "does not fit the %.2f x %.2f mm display; its masks are cut off at the edges",
+                    filter, stats.min_x, stats.max_x, stats.min_y, stats.max_y, profile.offset_x_mm,
+                    profile.offset_y_mm, 1e-3 * profile.width_px * profile.pixel_size_x_um,
+                    1e-3 * profile.height_px * profile.pixel_size_y_um));
+}
+
+Result run_export_masks(const ParamValues& values, Host& host) {
+  const auto start = std::chrono::steady_clock::now();
+  const PrinterProfile profile = read_printer_profile(values);
   const std::string& contour_file = values.text("contour_file");
   if (contour_file.empty()) throw Error("contour_file is empty: choose a contour file");
-  const std::string& output_path = values.text("output_path");
-  if (output_path.empty()) throw Error("output_path is empty: choose a folder or a .sl1 file");
+  const std::string& output_path = mask_output_path(values);
   check_outputs({{"output_path", output_path}});
 
   const Progress progress = host.progress();
@@ -57,12 +77,7 @@ Result run_export_masks(const ParamValues& values, Host& host) {
   host.log(format("Export Mask Images: %zu layers of %dx%d pixels to %s, %zu open contours ignored, %.3f s",
                   stats.layers, profile.width_px, profile.height_px, output_path.c_str(),
                   stats.ignored_open_contours, seconds));
-  if (stats.outside_display)
-    host.log(format("Export Mask Images: warning: the part (x %.2f to %.2f mm, y %.2f to %.2f mm, offset %g, %g mm) "
-                    "does not fit the %.2f x %.2f mm display; its masks are cut off at the edges",
-                    stats.min_x, stats.max_x, stats.min_y, stats.max_y, profile.offset_x_mm, profile.offset_y_mm,
-                    1e-3 * profile.width_px * profile.pixel_size_x_um,
-                    1e-3 * profile.height_px * profile.pixel_size_y_um));
+  log_display_warning(host, "Export Mask Images", stats, profile);
   return {{"layers", int64_t(stats.layers)},
           {"ignored_open_contours", int64_t(stats.ignored_open_contours)},
           {"outside_display", int64_t(stats.outside_display)},

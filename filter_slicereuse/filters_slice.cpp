@@ -44,8 +44,7 @@ void preview_polylines(const Slices& s, size_t n, std::vector<double>& xyz,
 
 }  // namespace
 
-Result run_slice(const ParamValues& values, Host& host) {
-  const auto start = std::chrono::steady_clock::now();
+SliceOptions read_slice_options(const ParamValues& values) {
   SliceOptions options;
   options.thickness = values.number("layer_thickness");
   if (!(options.thickness > 0) || !std::isfinite(options.thickness))
@@ -53,6 +52,12 @@ Result run_slice(const ParamValues& values, Host& host) {
   const double z_start = values.number("z_start");
   if (!std::isfinite(z_start)) throw Error("z_start must be a finite number");
   options.z_start = z_start <= kLowestVertexBelow ? std::numeric_limits<double>::quiet_NaN() : z_start;
+  return options;
+}
+
+Result run_slice(const ParamValues& values, Host& host) {
+  const auto start = std::chrono::steady_clock::now();
+  const SliceOptions options = read_slice_options(values);
   const double format_index = values.number("file_format");
   if (format_index != 0 && format_index != 1)
     throw Error(format("file_format must be 0 (text) or 1 (binary), got %g", format_index));

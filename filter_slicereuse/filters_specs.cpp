@@ -131,6 +131,30 @@ FilterSpec transfer_spec() {
   return f;
 }
 
+// The display and placement of the masks, shared by Export Mask Images and Make Print Job
+// (read back by read_printer_profile).
+std::vector<ParamSpec> printer_params() {
+  return {
+      number_param("width_px", ParamType::Int, "Width (pixels)", 1024,
+                   "Image width in pixels (the printer's display resolution)."),
+      number_param("height_px", ParamType::Int, "Height (pixels)", 768,
+                   "Image height in pixels (the printer's display resolution)."),
+      number_param("pixel_size_x_um", ParamType::Float, "Pixel size x (um)", 75,
+                   "Width of one pixel on the build plane, in micrometres."),
+      number_param("pixel_size_y_um", ParamType::Float, "Pixel size y (um)", 75,
+                   "Height of one pixel on the build plane, in micrometres."),
+      number_param("offset_x_mm", ParamType::Float, "Offset x (mm)", 0,
+                   "Shift of the model along x from the image centre, in mm."),
+      number_param("offset_y_mm", ParamType::Float, "Offset y (mm)", 0,
+                   "Shift of the model along y from the image centre, in mm."),
+      number_param("mirror_x", ParamType::Bool, "Mirror x", 0,
+                   "Flip the images left-right (for printers whose optics mirror the display)."),
+      number_param("mirror_y", ParamType::Bool, "Mirror y", 0, "Flip the images top-bottom."),
+      number_param("antialiasing", ParamType::Bool, "Anti-aliasing", 0,
+                   "Write 8-bit grey levels from pixel coverage instead of black/white masks."),
+  };
+}
+
 FilterSpec masks_spec() {
   FilterSpec f{FilterId::ExportMasks, "Export Mask Images", "export_mask_images",
                std::string(
@@ -153,24 +177,48 @@ FilterSpec masks_spec() {
       file_param("output_path", ParamType::FileSave, "Output folder or .sl1", "*.sl1",
                  "A folder for PNG images (created if missing; its parent must exist), or a "
                  "file name ending in .sl1 for a Prusa SL1 archive."),
-      number_param("width_px", ParamType::Int, "Width (pixels)", 1024,
-                   "Image width in pixels (the printer's display resolution)."),
-      number_param("height_px", ParamType::Int, "Height (pixels)", 768,
-                   "Image height in pixels (the printer's display resolution)."),
-      number_param("pixel_size_x_um", ParamType::Float, "Pixel size x (um)", 75,
-                   "Width of one pixel on the build plane, in micrometres."),
-      number_param("pixel_size_y_um", ParamType::Float, "Pixel size y (um)", 75,
-                   "Height of one pixel on the build plane, in micrometres."),
-      number_param("offset_x_mm", ParamType::Float, "Offset x (mm)", 0,
-                   "Shift of the model along x from the image centre, in mm."),
-      number_param("offset_y_mm", ParamType::Float, "Offset y (mm)", 0,
-                   "Shift of the model along y from the image centre, in mm."),
-      number_param("mirror_x", ParamType::Bool, "Mirror x", 0,
-                   "Flip the images left-right (for printers whose optics mirror the display)."),
-      number_param("mirror_y", ParamType::Bool, "Mirror y", 0, "Flip the images top-bottom."),
-      number_param("antialiasing", ParamType::Bool, "Anti-aliasing", 0,
-                   "Write 8-bit grey levels from pixel coverage instead of black/white masks."),
   };
+  const std::vector<ParamSpec> printer = printer_params();
+  f.params.insert(f.params.end(), printer.begin(), printer.end());
+  return f;
+}
+
+FilterSpec print_job_spec() {
+  FilterSpec f{FilterId::MakePrintJob, "Make Print Job", "make_print_job",
+               std::string(
+                   "<p>Makes the current mesh's print job in one step, in memory: its layers, "
+                   "either transferred from a family member's encoding (as <i>Transfer Slicing "
+                   "to Mesh</i> in exact mode, so the result equals direct slicing) or sliced "
+                   "directly when no encoding file is given, then its masks (as <i>Export Mask "
+                   "Images</i>), with no contour file in between unless one is asked for.</p>"
+                   "<p>The last encoding file read stays in memory (one entry, checked against "
+                   "the file's size, modification time and checksum), so a script or a "
+                   "pymeshlab loop over a family's members reads it only once. A member whose "
+                   "layers fail their certificate (e.g. changed in z) is sliced directly.</p>") +
+                   kReference,
+               Arity::CurrentMesh,
+               kLayerClass,
+               true,
+               {}};
+  f.params = {
+      file_param("encoding_file", ParamType::FileOpen, "Source encoding file", "*.enc *.srb",
+                 "Encoding file written by Slice Mesh with Encoding for a member of the family; "
+                 "the current mesh must have its faces. Empty: slice the current mesh directly."),
+      number_param("layer_thickness", ParamType::Float, "Layer thickness (mm)", 0.1,
+                   "Used when slicing directly (no encoding file): distance between slicing "
+                   "planes, in mm. With an encoding file, the encoding's layers are used."),
+      number_param("z_start", ParamType::Float, "Start height (mm)", -1e30,
+                   "Used when slicing directly: bottom of the first layer, in mm; at or below "
+                   "-1e29 (the default): the lowest vertex of the mesh."),
+      file_param("contour_file", ParamType::FileSave, "Contour file", "*.ctr *.srb",
+                 "Also write the layers' contour points here (text .ctr unless the name ends in "
+                 ".srb). Empty (the default): no contour file."),
+      file_param("output_path", ParamType::FileSave, "Output .sl1 or folder", "*.sl1",
+                 "A file name ending in .sl1 for a Prusa SL1 archive, or a folder for PNG "
+                 "images (created if missing; its parent must exist)."),
+  };
+  const std::vector<ParamSpec> printer = printer_params();
+  f.params.insert(f.params.end(), printer.begin(), printer.end());
   return f;
 }
 
@@ -205,7 +253,7 @@ FilterSpec compare_spec() {
 
 const std::vector<FilterSpec>& filter_specs() {
   static const std::vector<FilterSpec> specs = {slice_spec(), transfer_spec(), masks_spec(),
-                                                compare_spec()};
+                                                compare_spec(), print_job_spec()};
   return specs;
 }
 

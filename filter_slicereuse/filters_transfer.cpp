@@ -6,17 +6,14 @@
 #include "slicereuse/transfer_contours.h"
 
 namespace slicereuse::plugin {
-namespace {
-
-// The transfer filter has no format parameter: the output name decides, .srb being binary.
-FileFormat format_for(const std::string& path) {
+// The transfer and print job filters have no format parameter: the output name decides, .srb
+// being binary.
+FileFormat format_for_name(const std::string& path) {
   const std::string ext = ".srb";
   const bool binary = path.size() >= ext.size() &&
                       path.compare(path.size() - ext.size(), ext.size(), ext) == 0;
   return binary ? FileFormat::Binary : FileFormat::Text;
 }
-
-}  // namespace
 
 Result run_transfer(const ParamValues& values, Host& host) {
   const auto start = std::chrono::steady_clock::now();
@@ -43,10 +40,10 @@ Result run_transfer(const ParamValues& values, Host& host) {
   const double transfer_seconds = seconds_since(transfer_start);
   StagedOutputs outputs;
   if (!contour_file.empty())
-    write_contour_file(outputs.file(contour_file), s, format_for(contour_file),
+    write_contour_file(outputs.file(contour_file), s, format_for_name(contour_file),
                        sub_progress(progress, 0.6, 0.8));
   if (!target_encoding_file.empty())
-    write_encoding_file(outputs.file(target_encoding_file), s, format_for(target_encoding_file),
+    write_encoding_file(outputs.file(target_encoding_file), s, format_for_name(target_encoding_file),
                         sub_progress(progress, 0.8, 1));
   outputs.commit();
 

@@ -14,6 +14,7 @@ into another: pymeshlab 2025.7.post1 otherwise logs into the freed MeshSet (see 
 """
 import json
 import os
+import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -47,22 +48,38 @@ def _load_mesh(ms, path):
     return ms.current_mesh_id()
 
 
-def family(source, targets, layer_thickness, out, profile=None, binary=True, progress=None):
-    """Slices source with encoding, then for each target: transfers the slicing, slices it
-    directly, writes both mask stacks and compares them. Returns
-    {"source": str, "targets": [{"mesh", "layers", "points", "direct_points", "resliced_layers",
-    "transfer_seconds", "direct_seconds", "transfer_total_seconds", "direct_total_seconds",
-    "min_similarity"}, ...]}.
+def family(source, targets, layer_thickness, out, profile=None, binary=True, progress=None,
+           direct=False, verify=False, keep_contours=False, details=False):
+    """The production pipeline: one .sl1 print job per family member, out/<member stem>.sl1.
+
+    Default: slices source once with encoding (out/<source stem>.encoding.srb), then for each
+    target loads it and runs make_print_job, which transfers the encoding (kept in memory by
+    the plugin across members) and writes the masks, with no contour file in between.
+    direct=True: the same outputs from slicing every target directly (the baseline), each
+    from its own lowest vertex: the members of a family sit on one build plate (the same lowest
+    z, as the source's), which is where transfer puts their layers too.
+    verify=True: also slices each target directly into out/<stem>.direct.sl1 and compares the
+    two stacks (min_similarity 1: identical masks); not counted in the target's seconds.
+    keep_contours=True: also writes out/<stem>.srb (.ctr when binary is False).
+    Returns {"source", "seconds", "targets": [{"mesh", "layers", "points", "resliced_layers",
+    "seconds", "output"[, "min_similarity"]}, ...]}; a target's seconds cover loading it,
+    transferring or slicing it and writing its .sl1. details=True adds the filter's own
+    "slicing_seconds" (transfer or slicing) and "masks_seconds" per target, and "cpu_seconds",
+    the process's CPU time (all threads) for the same span as "seconds" (for benchmarks on a
+    shared machine, where CPU time is less disturbed than wall time).
     progress(step, steps, text) is called before each step."""
     for path in [source, *targets]:
         if not Path(path).is_file():
             raise FileNotFoundError(f"mesh file not found: {path}")
+    stems = [Path(t).stem for t in targets]
+    repeated = {s for s in stems if stems.count(s) > 1}
+    if repeated:
+        raise ValueError(f"members with the same file name would write the same output: {sorted(repeated)}")
     pymeshlab = load()
     profile = dict(DEFAULT_PROFILE, **(profile or {}))
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
-    ext = ".srb" if binary else ".ctr"
-    steps, step = 1 + 6 * len(targets), 0
+    steps, step = 1 + len(targets) * (2 if verify else 1), 0
 
     def tick(text):
         nonlocal step
@@ -70,52 +87,51 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
             progress(step, steps, text)
         step += 1
 
-    tick(f"slicing {Path(source).name}")
-    ms = pymeshlab.MeshSet()
-    _load_mesh(ms, source)
-    encoding = out / ("source_encoding.srb" if binary else "source.enc")
-    ms.apply_filter("slice_mesh_with_encoding", layer_thickness=layer_thickness,
-                    contour_file=str(out / f"source{ext}"), encoding_file=str(encoding),
-                    file_format=int(binary))
-    del ms
+    start = time.perf_counter()
+    encoding = ""
+    if not direct:
+        tick(f"slicing {Path(source).name}")
+        ms = pymeshlab.MeshSet()
+        _load_mesh(ms, source)
+        encoding = str(out / (Path(source).stem + (".encoding.srb" if binary else ".enc")))
+        ms.apply_filter("slice_mesh_with_encoding", layer_thickness=layer_thickness,
+                        contour_file="", encoding_file=encoding, file_format=int(binary))
+        del ms
+    else:
+        tick("slicing every member directly")
+    lowest_vertex = -1e30  # make_print_job's z_start for "the mesh's lowest vertex"
 
     results = []
-    for i, target in enumerate(targets, start=1):
+    for target, stem in zip(targets, stems):
         name = Path(target).name
-        folder = out / f"{i:03d}_{Path(target).stem}"
-        folder.mkdir(exist_ok=True)
+        tick(f"{name}: {'slicing' if direct else 'transferring'} and masks")
+        t0, c0 = time.perf_counter(), time.process_time()
         ms = pymeshlab.MeshSet()
-        tick(f"{name}: loading")
-        mesh_id = _load_mesh(ms, target)
-        tick(f"{name}: transferring")
-        t = ms.apply_filter("transfer_slicing_to_mesh", encoding_file=str(encoding),
-                            target_mesh=mesh_id, mode=0,
-                            contour_file=str(folder / f"transfer{ext}"))
-        tick(f"{name}: masks (transfer)")
-        ms.apply_filter("export_mask_images", contour_file=str(folder / f"transfer{ext}"),
-                        output_path=str(folder / "masks_transfer"), **profile)
-        tick(f"{name}: slicing directly")
-        ms.set_current_mesh(mesh_id)
-        d = ms.apply_filter("slice_mesh_with_encoding", layer_thickness=layer_thickness,
-                            contour_file=str(folder / f"direct{ext}"), encoding_file="",
-                            file_format=int(binary))
-        tick(f"{name}: masks (direct)")
-        ms.apply_filter("export_mask_images", contour_file=str(folder / f"direct{ext}"),
-                        output_path=str(folder / "masks_direct"), **profile)
-        tick(f"{name}: comparing")
-        c = ms.apply_filter("compare_mask_stacks", stack_a=str(folder / "masks_transfer"),
-                            stack_b=str(folder / "masks_direct"),
-                            report_file=str(folder / "compare.csv"))
-        # *_seconds: transfer versus slicing in memory; *_total_seconds add reading and
-        # writing the files.
-        results.append({"mesh": str(target), "layers": t["layers"], "points": t["points"],
-                        "direct_points": d["points"], "resliced_layers": t["resliced_layers"],
-                        "transfer_seconds": t["transfer_seconds"], "direct_seconds": d["slicing_seconds"],
-                        "transfer_total_seconds": t["seconds"], "direct_total_seconds": d["seconds"],
-                        "min_similarity": c["min_similarity"]})
+        _load_mesh(ms, target)
+        output = out / f"{stem}.sl1"
+        contours = str(out / (stem + (".srb" if binary else ".ctr"))) if keep_contours else ""
+        r = ms.apply_filter("make_print_job", encoding_file=encoding, layer_thickness=layer_thickness,
+                            z_start=lowest_vertex, contour_file=contours, output_path=str(output), **profile)
+        entry = {"mesh": str(target), "layers": r["layers"], "points": r["points"],
+                 "resliced_layers": r["resliced_layers"], "seconds": time.perf_counter() - t0,
+                 "output": str(output)}
+        if details:
+            entry.update(slicing_seconds=r["slicing_seconds"], masks_seconds=r["masks_seconds"],
+                         cpu_seconds=time.process_time() - c0)
+        if verify:
+            tick(f"{name}: verifying against direct slicing")
+            check = out / f"{stem}.direct.sl1"
+            ms.apply_filter("make_print_job", encoding_file="", layer_thickness=layer_thickness,
+                            z_start=lowest_vertex, contour_file="", output_path=str(check),
+                            **profile)
+            c = ms.apply_filter("compare_mask_stacks", stack_a=str(output), stack_b=str(check),
+                                report_file="")
+            entry["min_similarity"] = c["min_similarity"]
+        results.append(entry)
+        del ms
     if progress:
         progress(steps, steps, "done")
-    return {"source": str(source), "targets": results}
+    return {"source": str(source), "seconds": time.perf_counter() - start, "targets": results}
 
 
 if __name__ == "__main__":

@@ -97,24 +97,33 @@ std::vector<uint16_t> canonical_codes(const std::vector<uint8_t>& length) {
   return codes;
 }
 
+// Writes bits LSB first into memory the caller sized for them, 32 bits at a time.
 class BitWriter {
  public:
-  explicit BitWriter(std::vector<uint8_t>& out) : out_(out) {}
-  void put(uint64_t value, unsigned count) {
+  explicit BitWriter(uint8_t* dst) : begin_(dst), at_(dst) {}
+  void put(uint64_t value, unsigned count) {  // count <= 32
     buffer_ |= value << used_;
     used_ += count;
-    while (used_ >= 8) {
-      out_.push_back(uint8_t(buffer_));
-      buffer_ >>= 8;
-      used_ -= 8;
+    if (used_ >= 32) {
+      const uint32_t word = uint32_t(buffer_);
+      std::memcpy(at_, &word, 4);  // little-endian host, as the PNG/zip code assumes
+      at_ += 4;
+      buffer_ >>= 32;
+      used_ -= 32;
     }
   }
-  void flush() {
-    if (used_ > 0) put(0, 8 - used_);
+  // Pads the last byte with zero bits; returns the bytes written.
+  size_t flush() {
+    for (; used_ > 0; used_ = used_ > 8 ? used_ - 8 : 0) {
+      *at_++ = uint8_t(buffer_);
+      buffer_ >>= 8;
+    }
+    return size_t(at_ - begin_);
   }
 
  private:
-  std::vector<uint8_t>& out_;
+  uint8_t* begin_;
+  uint8_t* at_;
   uint64_t buffer_ = 0;
   unsigned used_ = 0;
 };
@@ -183,6 +192,23 @@ void RunDeflater::add(const uint8_t* data, size_t n) {
   }
 }
 
+void RunDeflater::add_run(uint8_t byte, size_t n) {
+  if (n == 0) return;
+  // Adler-32 over n bytes b: A' = A + n*b, B' = B + n*A + b*n*(n+1)/2, both mod 65521.
+  constexpr uint64_t kMod = 65521;
+  const uint64_t a = adler_ & 0xffff, b = adler_ >> 16, m = n % kMod;
+  const uint64_t triangle = (n % 2 == 0 ? (n / 2 % kMod) * ((n + 1) % kMod) : (n % kMod) * ((n + 1) / 2 % kMod)) % kMod;
+  const uint64_t a2 = (a + m * byte) % kMod, b2 = (b + m * a + byte * triangle) % kMod;
+  adler_ = uint32_t(b2 << 16 | a2);
+  if (byte != last_) {
+    repeats();
+    symbols_.push_back(byte);
+    last_ = byte;
+    --n;
+  }
+  pending_ += n;
+}
+
 void RunDeflater::finish() {
   repeats();
   const auto& lengths_of = length_codes();
@@ -211,7 +237,11 @@ void RunDeflater::finish() {
 
   out_.push_back(0x78);  // deflate, 32 KiB window
   out_.push_back(0x01);  // fastest; (0x78 << 8 | 0x01) is a multiple of 31
-  BitWriter w(out_);
+  // Room for the block: 17 header bits, 3 per code length code, 7+7 per length run, and at
+  // most 15 + 5 + 1 bits per symbol, plus the end code and 8 bytes of slack for the last word.
+  const size_t start = out_.size();
+  out_.resize(start + (17 + 3 * 19 + 14 * runs.size() + 21 * (symbols_.size() + 1)) / 8 + 16);
+  BitWriter w(out_.data() + start);
   w.put(0b101, 3);  // final block, dynamic Huffman codes
   w.put(hlit - 257, 5);
   w.put(dist_length.size() - 1, 5);
@@ -234,7 +264,7 @@ void RunDeflater::finish() {
     }
   }
   w.put(lit_code[kEndOfBlock], lit_length[kEndOfBlock]);
-  w.flush();
+  out_.resize(start + w.flush());
   for (int shift = 24; shift >= 0; shift -= 8) out_.push_back(uint8_t(adler_ >> shift));
   symbols_.clear();
 }

@@ -21,6 +21,7 @@
 #include "slicereuse/mask_png.h"
 #include "slicereuse/mask_stack.h"
 #include "slicereuse/masks.h"
+#include "slicereuse/ordered_parallel.h"
 #include "slicereuse/parallel_blocks.h"
 #include "slicereuse/printer_profile.h"
 #include "slicereuse/sl1_writer.h"
@@ -41,25 +42,36 @@ bool is_sl1(const std::string& path) {
 
 // Resin volume from the contours' areas (shoelace; holes run clockwise and subtract).
 double used_material_ml(const Slices& s) {
-  double mm3 = 0;
-  for (size_t k = 0; k < s.layers(); ++k) {
-    double area = 0;
+  // Layers on all cores, summed in layer order so the result does not depend on the schedule.
+  std::vector<double> area(s.layers(), 0);
+  const long long L = static_cast<long long>(s.layers());
+#pragma omp parallel for schedule(dynamic, 64)
+  for (long long k = 0; k < L; ++k) {
+    double a = 0;
     for (uint64_t c = s.layer_begin[k]; c < s.layer_begin[k + 1]; ++c) {
       if (s.contour_open[c]) continue;
       const uint64_t b = s.contour_begin[c], n = s.contour_begin[c + 1] - b;
       for (uint64_t i = 0; i < n; ++i) {
         const double* p = &s.xyz[3 * (b + i)];
         const double* q = &s.xyz[3 * (b + (i + 1 == n ? 0 : i + 1))];
-        area += 0.5 * (p[0] * q[1] - q[0] * p[1]);
+        a += 0.5 * (p[0] * q[1] - q[0] * p[1]);
       }
     }
-    mm3 += std::max(0.0, area) * s.thickness;
+    area[size_t(k)] = a;
   }
+  double mm3 = 0;
+  for (double a : area) mm3 += std::max(0.0, a) * s.thickness;
   return mm3 / 1000;
 }
 
 void encode_layer(const Slices& s, size_t k, const PrinterProfile& p, int bits,
                   std::vector<uint8_t>& png) {
+  if (bits == 8 && !p.antialiasing) {  // binary 8-bit (.sl1): straight from the runs
+    thread_local MaskRuns runs;
+    rasterize_layer_runs(s, k, p, runs);
+    encode_mask_png(runs, png);
+    return;
+  }
   thread_local Buffer<uint8_t> image;
   image.resize(size_t(p.width_px) * size_t(p.height_px));
   rasterize_layer(s, k, p, image.data());
@@ -108,31 +120,25 @@ void export_folder(const Slices& s, const PrinterProfile& p, const std::string& 
   }
 }
 
-// Encodes layers in parallel batches as write_sl1 asks for them in order, holding one batch.
+// Encodes layers on all cores, a window ahead of write_sl1, which asks for them in order.
 // Always 8-bit: PrusaSlicer's SL1 import decodes only 8-bit greyscale PNGs (1-bit layers would
 // import as empty).
-class BatchEncoder {
+class Sl1Layers {
  public:
-  BatchEncoder(const Slices& s, const PrinterProfile& p, const Progress& progress)
-      : s_(s), p_(p), progress_(progress), pngs_(size_t(16) * size_t(omp_get_max_threads())) {}
+  Sl1Layers(const Slices& s, const PrinterProfile& p, const Progress& progress)
+      : s_(s), progress_(progress),
+        items_(s.layers(), size_t(16) * size_t(omp_get_max_threads()),
+               [&s, &p](size_t k, std::vector<uint8_t>& png) { encode_layer(s, k, p, 8, png); }) {}
 
   const std::vector<uint8_t>& operator()(size_t k) {
-    if (k < first_ || k >= first_ + count_) {
-      report_progress(progress_, double(k) / double(s_.layers()), PHASE);
-      first_ = k;
-      count_ = std::min(pngs_.size(), s_.layers() - k);
-      parallel_blocks(count_, [&](size_t i) { encode_layer(s_, first_ + i, p_, 8, pngs_[i]); }, {},
-                      PHASE);
-    }
-    return pngs_[k - first_];
+    if (k % 64 == 0) report_progress(progress_, double(k) / double(s_.layers()), PHASE);
+    return items_.get(k);
   }
 
  private:
   const Slices& s_;
-  const PrinterProfile& p_;
   const Progress& progress_;
-  std::vector<std::vector<uint8_t>> pngs_;
-  size_t first_ = 0, count_ = 0;
+  OrderedParallel items_;
 };
 
 }  // namespace
@@ -176,7 +182,7 @@ MaskExportStats export_masks(const Slices& s, const PrinterProfile& profile,
   if (output_path.empty()) throw Error("mask export: no output path given");
   report_progress(progress, 0, PHASE);
   if (is_sl1(output_path)) {
-    BatchEncoder encoder(s, profile, progress);
+    Sl1Layers encoder(s, profile, progress);
     write_sl1(output_path, Sl1Job{profile, s.layers(), s.thickness, used_material_ml(s)},
               std::ref(encoder));
   } else {

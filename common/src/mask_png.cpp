@@ -46,11 +46,16 @@ void chunk(std::vector<uint8_t>& out, const char* type, const uint8_t* data, siz
 
 }  // namespace
 
-void encode_mask_png(const uint8_t* pixels, int width, int height, int bits,
-                     std::vector<uint8_t>& out) {
-  if (width <= 0 || height <= 0 || (bits != 1 && bits != 8))
+namespace {
+
+void check_size(int width, int height, int bits) {
+  if (width <= 0 || height <= 0 || width > 65535 || height > 65535 || (bits != 1 && bits != 8))
     throw Error("cannot encode a " + std::to_string(width) + "x" + std::to_string(height) + ", " +
                 std::to_string(bits) + "-bit mask as PNG");
+}
+
+// The PNG file around a zlib stream of image data: signature, IHDR, IDAT, IEND.
+void png_file(int width, int height, int bits, const std::vector<uint8_t>& idat, std::vector<uint8_t>& out) {
   static const uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   out.assign(signature, signature + 8);
   uint8_t header[13];
@@ -61,7 +66,15 @@ void encode_mask_png(const uint8_t* pixels, int width, int height, int bits,
   const uint8_t format[5] = {uint8_t(bits), 0, 0, 0, 0};  // grey, deflate, filter set 0, no interlace
   std::memcpy(header + 8, format, sizeof format);
   chunk(out, "IHDR", header, sizeof header);
+  chunk(out, "IDAT", idat.data(), idat.size());
+  chunk(out, "IEND", nullptr, 0);
+}
 
+}  // namespace
+
+void encode_mask_png(const uint8_t* pixels, int width, int height, int bits,
+                     std::vector<uint8_t>& out) {
+  check_size(width, height, bits);
   // Rows without a filter (type 0): on masks, filters cost time and gain nothing.
   thread_local std::vector<uint8_t> idat, row;
   idat.clear();
@@ -79,8 +92,44 @@ void encode_mask_png(const uint8_t* pixels, int width, int height, int bits,
     }
   }
   deflater.finish();
-  chunk(out, "IDAT", idat.data(), idat.size());
-  chunk(out, "IEND", nullptr, 0);
+  png_file(width, height, bits, idat, out);
+}
+
+void encode_mask_png(const MaskRuns& runs, std::vector<uint8_t>& out) {
+  check_size(runs.width, runs.height, 8);
+  if (runs.row_begin.size() != size_t(runs.height) + 1 || runs.columns.size() != 2 * size_t(runs.row_begin.back()))
+    throw Error("cannot encode mask runs: their row index does not match the image height");
+  thread_local std::vector<uint8_t> idat;
+  idat.clear();
+  RunDeflater deflater(idat);
+  // Equal neighbours are merged first (a row's trailing black, the next filter byte 0 and that
+  // row's leading black are one run), which halves the runs the deflater sees.
+  uint8_t byte = 0;
+  size_t count = 0;
+  auto run = [&](uint8_t b, size_t n) {
+    if (b != byte) {
+      deflater.add_run(byte, count);
+      byte = b;
+      count = 0;
+    }
+    count += n;
+  };
+  for (int r = 0; r < runs.height; ++r) {
+    run(0, 1);  // filter type 0
+    size_t at = 0;
+    for (uint32_t i = runs.row_begin[size_t(r)]; i < runs.row_begin[size_t(r) + 1]; ++i) {
+      const size_t a = runs.columns[2 * size_t(i)], b = runs.columns[2 * size_t(i) + 1];
+      if (a < at || b < a || b > size_t(runs.width))
+        throw Error("cannot encode mask runs: row " + std::to_string(r) + " has runs out of order or outside the image");
+      run(0, a - at);
+      run(255, b - a);
+      at = b;
+    }
+    run(0, size_t(runs.width) - at);
+  }
+  deflater.add_run(byte, count);
+  deflater.finish();
+  png_file(runs.width, runs.height, 8, idat, out);
 }
 
 namespace {

@@ -2,6 +2,7 @@
 
 #include <zip.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
@@ -16,17 +17,28 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The layer number ending a PNG name ("job00012.png" -> 12), or -1 when there is none.
-long long layer_number(const std::string& name) {
+// The layer number ending a PNG name ("job00012.png" -> 12) from at most its last max_digits
+// digits, or -1 when there is none.
+long long layer_number(const std::string& name, size_t max_digits = 12) {
   if (name.size() < 5) return -1;
   std::string ext = name.substr(name.size() - 4);
   for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
   if (ext != ".png") return -1;
   size_t first = name.size() - 4;
-  while (first > 0 && std::isdigit(static_cast<unsigned char>(name[first - 1]))) --first;
+  while (first > 0 && name.size() - 4 - first < max_digits &&
+         std::isdigit(static_cast<unsigned char>(name[first - 1])))
+    --first;
   const size_t digits = name.size() - 4 - first;
   if (digits == 0 || digits > 12) return -1;
   return std::stoll(name.substr(first, digits));
+}
+
+// Digits of a zero-padded layer number in a stack of L layers: 5 (PrusaSlicer's %.5d) or as many
+// as L - 1 needs. Digits before those belong to the job name ("member_001" + "00012").
+size_t number_width(size_t L) {
+  size_t w = 1;
+  for (size_t n = L > 0 ? L - 1 : 0; n >= 10; n /= 10) ++w;
+  return std::max<size_t>(5, w);
 }
 
 // Places each named image at its layer number; throws on repeats and gaps.
@@ -37,8 +49,9 @@ void place(const std::string& stack, std::vector<std::pair<long long, std::strin
   const size_t L = found.size();
   names.assign(L, std::string());
   if (entry) entry->assign(L, 0);
+  const size_t width = number_width(L);
   for (size_t i = 0; i < L; ++i) {
-    const long long k = found[i].first;
+    const long long k = layer_number(found[i].second, width);
     if (k >= static_cast<long long>(L))
       throw Error("mask stack '" + stack + "' has " + std::to_string(L) + " layer images but '" +
                   found[i].second + "' is numbered " + std::to_string(k) +

@@ -30,7 +30,8 @@ struct Crossing {
 };
 
 struct Scratch {
-  std::vector<double> u, v;
+  std::vector<double> v;
+  std::vector<int> row;
   std::vector<Edge> edges;
   std::vector<uint32_t> row_count, order, active;
   std::vector<Crossing> crossings;
@@ -41,8 +42,10 @@ struct Scratch {
 double clamp(double x, double lo, double hi) { return !(x >= lo) ? lo : (x > hi ? hi : x); }
 
 // Index of the first sample whose centre (i + 1/2) is at or after x, within [0, n].
+// (Clamped to [0, n] after rounding: ceil of the clamped value alone could give -1 or n + 1,
+// one pixel outside the row, for a part that leaves the display.)
 int first_sample_at_or_after(double x, int n) {
-  return int(std::ceil(clamp(x - 0.5, -1.0, double(n) + 1.0)));
+  return std::clamp(int(std::ceil(clamp(x - 0.5, -1.0, double(n) + 1.0))), 0, n);
 }
 
 // Builds the oriented edges of the closed contours of layer k in sample coordinates
@@ -60,26 +63,29 @@ size_t build_edges(const Slices& s, size_t k, const PrinterProfile& p, int scale
       continue;
     }
     const uint64_t b = s.contour_begin[c], n = s.contour_begin[c + 1] - b;
-    w.u.resize(n);
+    // Rows first: most edges of a fine contour cross no sample row centre, and those are
+    // skipped by comparing their ends' first rows, computed once per point.
     w.v.resize(n);
+    w.row.resize(n);
     for (uint64_t i = 0; i < n; ++i) {
-      const double* q = &s.xyz[3 * (b + i)];
-      w.u[i] = cu + su * (q[0] + p.offset_x_mm);
-      w.v[i] = cv + sv * (q[1] + p.offset_y_mm);
+      w.v[i] = cv + sv * (s.xyz[3 * (b + i) + 1] + p.offset_y_mm);
+      w.row[i] = first_sample_at_or_after(w.v[i], rows);
     }
+    auto u = [&](uint64_t i) { return cu + su * (s.xyz[3 * (b + i)] + p.offset_x_mm); };
     for (uint64_t i = 0; i < n; ++i) {
       const uint64_t j = i + 1 == n ? 0 : i + 1;
-      double y0 = w.v[i], x0 = w.u[i], y1 = w.v[j], x1 = w.u[j];
-      int dir = 1;
+      if (w.row[i] == w.row[j]) continue;
+      double y0 = w.v[i], x0 = u(i), y1 = w.v[j], x1 = u(j);
+      int r0 = w.row[i], r1 = w.row[j], dir = 1;
       if (y1 < y0) {
         std::swap(y0, y1);
         std::swap(x0, x1);
+        std::swap(r0, r1);
         dir = -1;
       }
       // Horizontal edges cross no sample row; non-finite ones (only possible when the caller
       // skipped validate_slices) are dropped rather than fed to the sort.
       if (!(y0 < y1) || !std::isfinite(y1 - y0) || !std::isfinite(x1 - x0)) continue;
-      const int r0 = first_sample_at_or_after(y0, rows), r1 = first_sample_at_or_after(y1, rows);
       if (r0 >= r1) continue;
       w.edges.push_back({y0, x0, y1, x1, r0, r1, dir});
     }
@@ -129,14 +135,38 @@ void sweep(Scratch& w, int rows, int cols, Span&& span) {
   }
 }
 
-}  // namespace
-
-size_t rasterize_layer(const Slices& s, size_t k, const PrinterProfile& profile, uint8_t* out) {
+void check_layer(const Slices& s, size_t k, const PrinterProfile& profile) {
   validate_printer_profile(profile);
   if (k >= s.layers())
     throw Error("layer " + std::to_string(k) + " does not exist (" + std::to_string(s.layers()) +
                 " layers)");
   if (!s.has_points()) throw Error("the slices carry no contour points to rasterize");
+}
+
+}  // namespace
+
+size_t rasterize_layer_runs(const Slices& s, size_t k, const PrinterProfile& profile, MaskRuns& out) {
+  check_layer(s, k, profile);
+  if (profile.antialiasing) throw Error("anti-aliased masks have grey levels and cannot be given as runs");
+  thread_local Scratch w;
+  const int H = profile.height_px;
+  out.width = profile.width_px;
+  out.height = H;
+  out.row_begin.assign(size_t(H) + 1, 0);
+  out.columns.clear();
+  const size_t open = build_edges(s, k, profile, 1, w, H);
+  // Rows come in order and runs left to right (see sweep): count per row, then sum up.
+  sweep(w, H, profile.width_px, [&](int r, int a, int b) {
+    ++out.row_begin[size_t(r) + 1];
+    out.columns.push_back(uint16_t(a));
+    out.columns.push_back(uint16_t(b));
+  });
+  for (int r = 0; r < H; ++r) out.row_begin[size_t(r) + 1] += out.row_begin[size_t(r)];
+  return open;
+}
+
+size_t rasterize_layer(const Slices& s, size_t k, const PrinterProfile& profile, uint8_t* out) {
+  check_layer(s, k, profile);
   thread_local Scratch w;
   const int W = profile.width_px, H = profile.height_px;
   std::memset(out, 0, size_t(W) * size_t(H));

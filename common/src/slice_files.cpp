@@ -6,6 +6,8 @@
 #include <cstring>
 #include <memory>
 
+#include <xxhash.h>
+
 #include "slice_files_binary_layout.h"
 #include "slicereuse/error.h"
 
@@ -75,6 +77,38 @@ Slices read_contour_file(const std::string& path, const Progress& progress) {
 
 Slices read_encoding_file(const std::string& path, const Progress& progress) {
   return read_file(path, FileKind::Encoding, progress);
+}
+
+FileIdentity slice_file_identity(const std::string& path) {
+  std::unique_ptr<FILE, FileCloser> f(std::fopen(path.c_str(), "rb"));
+  if (!f) throw Error("cannot open '" + path + "': " + std::strerror(errno));
+  struct stat st;
+  if (::fstat(::fileno(f.get()), &st) != 0 || !S_ISREG(st.st_mode))
+    throw Error("cannot read '" + path + "': not a regular file");
+  FileIdentity id;
+  id.size = uint64_t(st.st_size);
+  id.mtime_ns = int64_t(st.st_mtim.tv_sec) * 1000000000 + st.st_mtim.tv_nsec;
+  unsigned char head[detail::kFixedHeaderBytes];
+  const size_t got = std::fread(head, 1, sizeof head, f.get());
+  if (got == sizeof head && std::memcmp(head, detail::kBinaryMagic, sizeof detail::kBinaryMagic) == 0) {
+    uint32_t sections;
+    std::memcpy(&sections, head + detail::kSectionCountAt, sizeof sections);
+    const uint64_t at = detail::kFixedHeaderBytes + uint64_t(detail::kSectionEntryBytes) * sections;
+    if (at + 8 <= id.size && fseeko(f.get(), off_t(at), SEEK_SET) == 0 &&
+        std::fread(&id.checksum, 1, 8, f.get()) == 8)
+      return id;
+    throw Error("'" + path + "': truncated binary header");
+  }
+  // Text: hash everything (the stream was already read up to `got` bytes).
+  std::unique_ptr<XXH3_state_t, XXH_errorcode (*)(XXH3_state_t*)> state(XXH3_createState(), XXH3_freeState);
+  if (!state || XXH3_64bits_reset(state.get()) != XXH_OK) throw Error("out of memory hashing '" + path + "'");
+  XXH3_64bits_update(state.get(), head, got);
+  std::vector<unsigned char> piece(size_t(1) << 20);
+  for (size_t n; (n = std::fread(piece.data(), 1, piece.size(), f.get())) > 0;)
+    XXH3_64bits_update(state.get(), piece.data(), n);
+  if (std::ferror(f.get())) throw Error("cannot read '" + path + "': " + std::strerror(errno));
+  id.checksum = XXH3_64bits_digest(state.get());
+  return id;
 }
 
 }  // namespace slicereuse

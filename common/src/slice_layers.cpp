@@ -51,7 +51,7 @@ class LayerSlicer {
   LayerSlicer(const Mesh& mesh, const std::vector<uint32_t>& links, const std::vector<FaceRange>& ranges,
               const std::vector<double>& layer_z, Slices& out)
       : V_(mesh.V.data()), F_(mesh.F.data()), links_(links.data()), ranges_(ranges.data()),
-        layer_z_(layer_z.data()), out_(out) {}
+        layer_z_(layer_z.data()), out_(out), encoding_(out.face.size() == out.xyz.size() / 3) {}
 
   // Appends layer k's contours (points from `cursor` to `end`) and their lengths to `block`.
   // stamp marks faces already chained in this layer; `stamp_value` is unique per layer.
@@ -117,6 +117,7 @@ class LayerSlicer {
     out_.xyz[3 * i] = x;
     out_.xyz[3 * i + 1] = y;
     out_.xyz[3 * i + 2] = z;
+    if (!encoding_) return;
     out_.face[i] = f;
     out_.edge[i] = uint8_t(j);
     out_.t[i] = t;
@@ -128,6 +129,7 @@ class LayerSlicer {
   const FaceRange* ranges_;
   const double* layer_z_;
   Slices& out_;
+  const bool encoding_;  // the output has room for the encoding
 };
 
 FaceRange face_range(const Mesh& mesh, size_t f, const std::vector<double>& layer_z) {
@@ -277,13 +279,13 @@ Slices slice_layers(const Mesh& mesh, const SliceOptions& options, const Progres
   validate_mesh(mesh);
   const ZRange z = z_range(mesh);
   const double z_start = std::isnan(options.z_start) ? z.min : options.z_start;
-  Slices out = slice_planes(mesh, layer_planes(z_start, options.thickness, z.max), progress);
+  Slices out = slice_planes(mesh, layer_planes(z_start, options.thickness, z.max), progress, options.encoding);
   out.z_start = z_start;
   out.thickness = options.thickness;
   return out;
 }
 
-Slices slice_planes(const Mesh& mesh, std::vector<double> planes, const Progress& progress) {
+Slices slice_planes(const Mesh& mesh, std::vector<double> planes, const Progress& progress, bool with_encoding) {
   validate_mesh(mesh);
   if (!std::is_sorted(planes.begin(), planes.end())) throw Error("slice planes must be in increasing order");
   report_progress(progress, 0, "preparing");
@@ -296,12 +298,14 @@ Slices slice_planes(const Mesh& mesh, std::vector<double> planes, const Progress
   const std::vector<FaceRange> ranges = face_ranges(mesh, out.layer_z);
   LayerCounts counts = count_layers(ranges, links, L);
   const size_t P = counts.point_begin[L];
-  check_memory_for(P * kBytesPerPoint, format("slicing %zu layers into %zu contour points", L, P),
+  check_memory_for(P * (with_encoding ? kBytesPerPoint : 3 * sizeof(double)), format("slicing %zu layers into %zu contour points", L, P),
                    "use a thicker layer, or fewer layers (z_start)");
   out.xyz.resize(3 * P);
-  out.face.resize(P);
-  out.edge.resize(P);
-  out.t.resize(P);
+  if (with_encoding) {
+    out.face.resize(P);
+    out.edge.resize(P);
+    out.t.resize(P);
+  }
   const std::vector<uint32_t> bucket = bucket_faces(ranges, counts.bucket_begin);
   const size_t nb = (L + kLayersPerBlock - 1) / kLayersPerBlock;
   std::vector<std::vector<ActiveFace>> block_start = active_at_block_starts(ranges, bucket, counts.bucket_begin, nb);

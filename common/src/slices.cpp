@@ -32,8 +32,15 @@ void check_offsets(const Offsets& b, size_t expected_size, bool strict, const ch
   }
 }
 
+// Arrays of tens of millions of numbers: checked on all cores, and only when something is wrong
+// searched again in order for the first culprit (the message names it).
 template <class Array>
 void check_finite(const Array& a, const char* name) {
+  const long long n = static_cast<long long>(a.size());
+  bool bad = false;
+#pragma omp parallel for reduction(|| : bad) schedule(static)
+  for (long long i = 0; i < n; ++i) bad |= !std::isfinite(a[size_t(i)]);
+  if (!bad) return;
   for (size_t i = 0; i < a.size(); ++i)
     if (!std::isfinite(a[i])) throw Error(std::string(name) + "[" + num(i) + "] is not finite");
 }
@@ -73,6 +80,12 @@ void validate_slices(const Slices& s) {
   if (s.face.size() != P || s.edge.size() != P || s.t.size() != P)
     throw Error("encoding arrays face/edge/t have " + num(s.face.size()) + "/" +
                 num(s.edge.size()) + "/" + num(s.t.size()) + " entries, expected " + num(P));
+  bool bad = false;
+#pragma omp parallel for reduction(|| : bad) schedule(static)
+  for (long long p = 0; p < static_cast<long long>(P); ++p)
+    bad |= s.face[size_t(p)] >= s.fingerprint.faces || s.edge[size_t(p)] > 2 ||
+           !(s.t[size_t(p)] > 0 && s.t[size_t(p)] <= 1);
+  if (!bad) return;
   for (size_t p = 0; p < P; ++p) {
     if (s.face[p] >= s.fingerprint.faces)
       throw Error("face[" + num(p) + "] = " + num(s.face[p]) + " is not below the mesh's " +

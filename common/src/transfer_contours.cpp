@@ -38,19 +38,11 @@ void for_each_layer(size_t L, const Progress& progress, const std::function<void
       progress, "transferring");
 }
 
-void drop_encoding(Slices& s) {
-  s.face = {};
-  s.edge = {};
-  s.t = {};
-}
-
 Slices slice_all(const Mesh& target, std::vector<double> planes, bool with_encoding, TransferStats& st,
                  const Progress& progress) {
   st.resliced_layers = planes.size();
   st.transferred_layers = 0;
-  Slices all = slice_planes(target, std::move(planes), progress);
-  if (!with_encoding) drop_encoding(all);
-  return all;
+  return slice_planes(target, std::move(planes), progress, with_encoding);
 }
 
 // Slices with enc's layers and contours, and room for their points.
@@ -176,12 +168,26 @@ Slices transfer_exact(const Slices& enc, const Ends& ends, const Mesh& target, b
   // The certificate's second half first, since it is cheap (O(faces + layers)): the target must
   // have exactly as many straddling edges as the layer has points (counted through its faces,
   // see straddling_faces.h), or the layer is re-sliced without being transferred at all.
+  // A sample of the first half as well, as cheap (two points per contour): the first and the
+  // middle point of every contour must still cross the plane the same way up. A member that
+  // changed in z keeps its counts on most layers (its sections only move), so the counts alone
+  // let it through to a full transfer that then fails almost everywhere; the sample catches it
+  // before any point is transferred. Sampling only rejects layers the full check would reject.
   const std::vector<uint64_t> counts = straddling_face_counts(target, planes);
+  const double* V = target.V.data();
+  auto crosses = [&](size_t p, double zk) {
+    uint32_t ia, ib;
+    ends(p, ia, ib);
+    return V[3 * size_t(ia) + 2] < zk && V[3 * size_t(ib) + 2] >= zk;
+  };
   std::vector<uint8_t> ok(L, 0);
   size_t candidates = 0;
   for (size_t k = 0; k < Le; ++k) {
     ok[k] = counts[k] == end_point(enc, k) - first_point(enc, k);
-    for (size_t c = enc.layer_begin[k]; c < enc.layer_begin[k + 1]; ++c) ok[k] &= !enc.contour_open[c];
+    for (size_t c = enc.layer_begin[k]; ok[k] && c < enc.layer_begin[k + 1]; ++c) {
+      const size_t p0 = enc.contour_begin[c], p1 = enc.contour_begin[c + 1];
+      ok[k] = !enc.contour_open[c] && crosses(p0, enc.layer_z[k]) && crosses((p0 + p1) / 2, enc.layer_z[k]);
+    }
     candidates += ok[k];
   }
   // A member that changed in z can fail most layers; transferring the rest and splicing would
@@ -213,7 +219,7 @@ Slices transfer_exact(const Slices& enc, const Ends& ends, const Mesh& target, b
   if (2 * redo.size() > L) return slice_all(target, std::move(planes), with_encoding, st, progress);
   st.resliced_layers = redo.size();
   st.transferred_layers = L - redo.size();
-  Slices fresh = slice_planes(target, std::move(redo_planes), progress);
+  Slices fresh = slice_planes(target, std::move(redo_planes), progress, with_encoding);
   std::vector<Pick> pick(L);
   for (size_t k = 0, r = 0; k < L; ++k) pick[k] = r < redo.size() && redo[r] == k ? Pick{&fresh, r++} : Pick{&moved, k};
   return assemble(pick, std::move(planes), with_encoding, progress);

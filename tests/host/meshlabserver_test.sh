@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Host tests: runs Debian's meshlabserver 2020.09 (through scripts/meshlabserver) with the
 # example filter scripts on a generated family and checks what it wrote.
-#   meshlabserver_test.sh CASE     CASE: slice | transfer | masks | errors
+#   meshlabserver_test.sh CASE     CASE: slice | transfer | masks | print_job | errors
 # Environment (set by tests/host/CMakeLists.txt): MESHLABSERVER, SLICEREUSE_BUILD, GEN_FAMILY,
 # HOST_CHECK, EXAMPLES, WORK (a scratch folder, emptied first).
 set -euo pipefail
@@ -137,6 +137,33 @@ masks)
     fail "member 0 vs member 1 masks should differ: $(grep Compare log_m0.txt)"
   rows=$(grep -c '^[0-9]' out/compare.csv)
   [ "$rows" -eq "$layers" ] || fail "compare.csv has $rows rows for $layers layers"
+  ;;
+print_job)
+  # Make Print Job on member 1 from member 0's encoding equals its direct print job (S = 1);
+  # with contour_file, the contours equal direct slicing's.
+  ok log_slice.txt -i "$m0" -s "$EXAMPLES/slice.mlx"
+  layers=$("$HOST_CHECK" layers out/slice.ctr)
+  edit print_job.mlx job.mlx 's#name="contour_file" value=""#name="contour_file" value="out/job.ctr"#'
+  ok log_job.txt -i "$m1" -s job.mlx
+  [ "$(result log_job.txt transferred_layers)" = "$layers" ] || fail "transfer: $(grep slicereuse-result log_job.txt)"
+  [ "$(result log_job.txt resliced_layers)" = 0 ] || fail "re-sliced layers in an x-y member"
+  [ -f out/print_job.sl1 ] || fail "no out/print_job.sl1"
+  edit print_job.mlx direct_job.mlx 's#name="encoding_file" value="out/slice.enc"#name="encoding_file" value=""#' \
+    's#out/print_job\.sl1#out/direct_job.sl1#'
+  ok log_direct_job.txt -i "$m1" -s direct_job.mlx
+  [ "$(result log_direct_job.txt resliced_layers)" = "$layers" ] || fail "direct job: $(grep slicereuse-result log_direct_job.txt)"
+  edit compare.mlx cmp.mlx 's#out/masks_direct#out/direct_job.sl1#' 's#value="out/masks"#value="out/print_job.sl1"#'
+  ok log_cmp.txt -s cmp.mlx
+  grep -q "Compare Mask Stacks: $layers layers, min similarity 1 at layer 0, 0 differing pixels" log_cmp.txt ||
+    fail "transferred vs direct print job: $(grep Compare log_cmp.txt)"
+  edit slice.mlx direct.mlx 's#out/slice\.#out/direct.#g'
+  ok log_direct.txt -i "$m1" -s direct.mlx
+  "$HOST_CHECK" same --prefix out/job.ctr out/direct.ctr
+  # A member with other faces is refused, and nothing is written.
+  "$GEN_FAMILY" --shape torus --faces 1000 --members 1 --height 6 --seed 1 --out other >/dev/null
+  edit print_job.mlx other.mlx 's#out/print_job\.sl1#out/other.sl1#'
+  must_fail log_other.txt "faces differ" -i other/member_000.ply -s other.mlx
+  [ ! -e out/other.sl1 ] || fail "a refused print job left out/other.sl1"
   ;;
 errors)
   edit slice.mlx zero.mlx 's/name="layer_thickness" value="0.1"/name="layer_thickness" value="0"/'

@@ -1,7 +1,9 @@
-"""The family pipeline on the pymeshlab host: transferring the source's slicing to every member
-gives exactly the member's own slicing (same points, masks with S = 1)."""
+"""The production family pipeline on the pymeshlab host (slicereuse_pymeshlab.family and
+examples/family.py): one .sl1 per member, by transfer (default) or direct slicing (--direct),
+with identical outputs; --verify compares against direct slicing (S = 1)."""
 import json
 import subprocess
+import zipfile
 
 import pytest
 
@@ -9,52 +11,84 @@ import slicereuse_pymeshlab as sr
 from conftest import ROOT, THICKNESS
 
 SHAPES = ["arch", "ear", "handle", "box", "sphere", "torus"]
-KEYS = {"mesh", "layers", "points", "resliced_layers", "transfer_seconds", "direct_seconds",
-        "transfer_total_seconds", "direct_total_seconds", "min_similarity"}
-
-
+TARGET_KEYS = {"mesh", "layers", "points", "resliced_layers", "seconds", "output"}
 CASES = [(shape, z) for z in (None, "band") for shape in SHAPES] + [("arch", "everywhere")]
 
 
+def layer_pngs(sl1):
+    """The layer images of an .sl1 archive by name (config.ini carries a time stamp)."""
+    with zipfile.ZipFile(sl1) as z:
+        return {n: z.read(n) for n in z.namelist() if n.endswith(".png")}
+
+
 @pytest.mark.parametrize("shape, z_change", CASES, ids=[f"{s}-{z or 'xy'}" for s, z in CASES])
-def test_transfer_equals_direct_slicing(make_family, tmp_path, shape, z_change):
-    """Transferred members equal direct slicing (same points, S = 1), and the layer counts show
-    the path taken: x-y members transfer every layer; a z change within one band of heights
-    re-slices that band's layers and transfers most; a z change everywhere fails most layers'
-    certificate, so the transfer falls back to slicing every layer."""
+def test_reuse_and_direct_write_identical_print_jobs(make_family, tmp_path, shape, z_change):
+    """The default pipeline (transfer) and --direct write the same .sl1 layer images byte for
+    byte, --verify reports S = 1, and the layer counts show the path taken: x-y members transfer
+    every layer; a z change within one band re-slices that band and transfers most; a z change
+    everywhere fails most certificates, so the member is sliced directly."""
     members = make_family(shape, 3, z_change=z_change)
-    result = sr.family(members[0], members[1:], THICKNESS, tmp_path)
-    assert result["source"] == str(members[0])
-    assert [t["mesh"] for t in result["targets"]] == [str(m) for m in members[1:]]
-    for t in result["targets"]:
-        assert t["points"] == t["direct_points"] > 0, t
+    reused = sr.family(members[0], members[1:], THICKNESS, tmp_path / "reuse", verify=True)
+    direct = sr.family(members[0], members[1:], THICKNESS, tmp_path / "direct", direct=True)
+    assert reused["source"] == direct["source"] == str(members[0])
+    for r, d, member in zip(reused["targets"], direct["targets"], members[1:]):
+        assert r["mesh"] == d["mesh"] == str(member)
+        assert set(r) == TARGET_KEYS | {"min_similarity"} and set(d) == TARGET_KEYS
+        assert r["output"] == str(tmp_path / "reuse" / f"{member.stem}.sl1")
+        assert r["points"] == d["points"] > 0, (r, d)
+        assert r["layers"] == d["layers"], (r, d)
         # x-y and band members keep the base's height: 8 mm at 0.1 mm.
-        assert t["layers"] == (80 if z_change != "everywhere" else pytest.approx(80, abs=3)), t
-        assert t["min_similarity"] == 1.0, t
-        transferred = t["layers"] - t["resliced_layers"]
+        assert r["layers"] == (80 if z_change != "everywhere" else pytest.approx(80, abs=3)), r
+        assert d["resliced_layers"] == d["layers"], d
+        assert r["min_similarity"] == 1.0, r
+        images = layer_pngs(r["output"])
+        assert len(images) == r["layers"]
+        assert images == layer_pngs(d["output"])
+        transferred = r["layers"] - r["resliced_layers"]
         if z_change is None:
-            # x-y deformations keep every vertex on its side of every plane.
-            assert t["resliced_layers"] == 0, t
+            assert r["resliced_layers"] == 0, r
         elif z_change == "band":
-            assert t["resliced_layers"] > 0 and transferred > 2 * t["resliced_layers"], t
+            assert r["resliced_layers"] > 0 and transferred > 2 * r["resliced_layers"], r
         else:
-            assert transferred == 0, t
+            assert transferred == 0, r
+    # No contour files in between: the encoding and the .sl1 archives only.
+    names = sorted(p.name for p in (tmp_path / "reuse").iterdir())
+    stems = [m.stem for m in members[1:]]
+    assert names == sorted([f"{members[0].stem}.encoding.srb"] + [f"{s}.sl1" for s in stems] +
+                           [f"{s}.direct.sl1" for s in stems])
+    assert sorted(p.name for p in (tmp_path / "direct").iterdir()) == sorted(f"{s}.sl1" for s in stems)
+
+
+def test_keep_contours_writes_each_members_contour_file(pymeshlab, make_family, tmp_path):
+    members = make_family("arch", 3)
+    result = sr.family(members[0], members[1:], THICKNESS, tmp_path, keep_contours=True)
+    for t, member in zip(result["targets"], members[1:]):
+        ms = pymeshlab.MeshSet()
+        ms.load_new_mesh(str(member))
+        # The kept contour file gives the same masks through Export Mask Images.
+        ms.apply_filter("export_mask_images", contour_file=str(tmp_path / f"{member.stem}.srb"),
+                        output_path=str(tmp_path / f"{member.stem}.again.sl1"))
+        assert layer_pngs(tmp_path / f"{member.stem}.again.sl1").keys() == {
+            n.replace(member.stem, f"{member.stem}.again") for n in layer_pngs(t["output"])}
+        c = ms.apply_filter("compare_mask_stacks", stack_a=t["output"],
+                            stack_b=str(tmp_path / f"{member.stem}.again.sl1"), report_file="")
+        assert c["min_similarity"] == 1.0 and c["layers"] == t["layers"]
 
 
 def test_cli_prints_one_json_object(make_family, tmp_path):
     members = make_family("arch", 3)
     out = subprocess.run([str(ROOT / "scripts" / "python"), str(ROOT / "examples" / "family.py"),
                           "--layer-thickness", str(THICKNESS), "--out", str(tmp_path / "out"),
-                          *map(str, members)], capture_output=True, text=True)
+                          "--verify", *map(str, members)], capture_output=True, text=True)
     assert out.returncode == 0, out.stderr
     result = json.loads(out.stdout)
-    assert set(result) == {"source", "targets"}
+    assert set(result) == {"source", "seconds", "targets"}
     assert len(result["targets"]) == 2
     for t in result["targets"]:
-        assert set(t) == KEYS
+        assert set(t) == TARGET_KEYS | {"min_similarity"}
         assert isinstance(t["layers"], int) and isinstance(t["points"], int)
-        assert isinstance(t["resliced_layers"], int)
-        assert t["transfer_seconds"] >= 0 and t["direct_seconds"] >= 0
+        assert t["resliced_layers"] == 0
+        assert 0 < t["seconds"] < result["seconds"]
         assert t["min_similarity"] == 1.0
     # 8 mm at 0.1 mm: layers whose bottom is below the top, z in [0, 8].
     assert result["targets"][0]["layers"] == 80
@@ -79,3 +113,37 @@ def test_cli_errors_are_one_line(make_family, tmp_path, args, message):
     assert message in out.stderr
     assert "Traceback" not in out.stderr
     assert out.stdout == ""
+
+
+def test_members_with_the_same_file_name_are_refused(make_family, tmp_path):
+    members = make_family("arch", 3)
+    with pytest.raises(ValueError, match="same file name"):
+        sr.family(members[0], [members[1], members[1]], THICKNESS, tmp_path)
+
+
+def test_print_job_reads_the_encoding_once(pymeshlab, make_family, tmp_path):
+    """make_print_job keeps the last encoding in memory: read for the first member, reused for
+    the next, read again when the file is rewritten or another file is named."""
+    members = make_family("arch", 4)
+    encoding = tmp_path / "source.srb"
+
+    def slice_source():
+        ms = pymeshlab.MeshSet()
+        ms.load_new_mesh(str(members[0]))
+        ms.apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS, contour_file="",
+                        encoding_file=str(encoding), file_format=1)
+
+    def job(member, enc=encoding):
+        ms = pymeshlab.MeshSet()
+        ms.load_new_mesh(str(member))
+        return ms.apply_filter("make_print_job", encoding_file=str(enc),
+                               output_path=str(tmp_path / f"{member.stem}.sl1"))
+
+    slice_source()
+    first, second = job(members[1]), job(members[2])
+    assert (first["encoding_cached"], second["encoding_cached"]) == (0, 1)
+    assert first["transferred_layers"] == second["transferred_layers"] == 80
+    slice_source()  # a new file under the same name
+    assert job(members[3])["encoding_cached"] == 0
+    encoding.rename(tmp_path / "moved.srb")
+    assert job(members[1], tmp_path / "moved.srb")["encoding_cached"] == 0

@@ -79,3 +79,18 @@ TEST(RunDeflater, CompressesAMaskLikeZlibsRunLengthStrategy) {
   deflateEnd(&s);
   EXPECT_LE(z.size(), zlib_size + zlib_size / 10);  // within 10 % of zlib
 }
+
+TEST(RunDeflater, RunsWithoutBytesGiveTheSameStream) {
+  // Long runs (beyond 65521, where the Adler-32 formula wraps) mixed with bytes.
+  const std::vector<std::pair<uint8_t, size_t>> runs = {
+      {0, 1}, {0, 70000}, {255, 3}, {7, 1}, {255, 300000}, {0, 2}, {255, 65521}, {0, 131043}, {9, 0}};
+  std::vector<uint8_t> data, by_bytes, by_runs;
+  for (const auto& [b, n] : runs) data.insert(data.end(), n, b);
+  RunDeflater a(by_bytes), r(by_runs);
+  a.add(data.data(), data.size());
+  for (const auto& [b, n] : runs) r.add_run(b, n);
+  a.finish();
+  r.finish();
+  EXPECT_EQ(by_runs, by_bytes);
+  EXPECT_EQ(inflate_all(by_runs, data.size()), data);
+}

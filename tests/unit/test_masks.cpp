@@ -485,3 +485,81 @@ TEST_F(MaskFiles, ReportsAPartThatLeavesTheDisplay) {
   p.offset_y_mm = -5.5;
   EXPECT_TRUE(export_masks(s, p, dir + "/cut").outside_display);
 }
+
+TEST(RasterizeLayer, RunsEncodeTheSamePngAsPixels) {
+  // Every layer of the sample stack, also mirrored and shifted off the display's edge, so runs
+  // touch both image borders.
+  const Slices s = make_slices({{rect(-5, -5, 5, 5)},
+                                {rect(-5, -5, 5, 5), rect(-2, -2, 2, 2, true)},
+                                {star(0.3, -0.2, 3, 7.5, 9)},
+                                {rect(-30, -3, 30, 3), rect(-1, -20, 1, 20)},
+                                {}});
+  for (bool mirror : {false, true}) {
+    PrinterProfile p = small_display();
+    p.mirror_x = mirror;
+    p.offset_x_mm = mirror ? 4.5 : 0;
+    for (size_t k = 0; k < s.layers(); ++k) {
+      MaskRuns runs;
+      rasterize_layer_runs(s, k, p, runs);
+      ASSERT_EQ(runs.row_begin.size(), 201u);
+      std::vector<uint8_t> from_runs, from_pixels;
+      encode_mask_png(runs, from_runs);
+      const std::vector<uint8_t> img = raster(s, k, p);
+      encode_mask_png(img.data(), p.width_px, p.height_px, 8, from_pixels);
+      EXPECT_EQ(from_runs, from_pixels) << "layer " << k << (mirror ? ", mirrored" : "");
+      MaskImage back;
+      decode_mask_png(from_runs.data(), from_runs.size(), "runs", back);
+      EXPECT_EQ(back.pixels, img) << "layer " << k;
+    }
+  }
+  MaskRuns runs;
+  PrinterProfile aa = small_display();
+  aa.antialiasing = true;
+  EXPECT_THROW(rasterize_layer_runs(s, 0, aa, runs), Error);
+  rasterize_layer_runs(s, 0, small_display(), runs);
+  std::swap(runs.columns[0], runs.columns[1]);  // a run that ends before it starts
+  std::vector<uint8_t> png;
+  EXPECT_THROW(encode_mask_png(runs, png), Error);
+}
+
+TEST(RasterizeLayer, APartWiderThanTheDisplayStaysInsideItsRows) {
+  // 60 mm wide on a 20 mm display: each row is lit edge to edge and nothing spills into the
+  // next row's first pixel or past the image.
+  const Slices s = make_slices({{rect(-30, -3, 30, 3)}});
+  std::vector<uint8_t> img(200 * 200 + 2, 7);
+  rasterize_layer(s, 0, small_display(), img.data() + 1);
+  EXPECT_EQ(img.front(), 7);
+  EXPECT_EQ(img.back(), 7);
+  img.erase(img.begin());
+  img.pop_back();
+  EXPECT_EQ(on_pixels(img), 200u * 60u);
+  EXPECT_EQ(img[69 * 200 + 199], 0);   // the row above the part: dark to its last pixel
+  EXPECT_EQ(img[130 * 200], 0);        // the row below: dark from its first pixel
+}
+
+TEST_F(MaskFiles, JobNameEndingInDigitsKeepsItsLayerNumbers) {
+  // member_001.sl1 holds member_00100000.png ... : the layer number is the last five digits.
+  const Slices s = sample_stack();
+  const std::string sl1 = dir + "/member_001.sl1", folder = dir + "/folder";
+  export_masks(s, small_display(), sl1);
+  export_masks(s, small_display(), folder);
+  MaskStack archive(sl1);
+  ASSERT_EQ(archive.layers(), 3u);
+  EXPECT_EQ(archive.layer_name(2), sl1 + ":member_00100002.png");
+  const StackComparison c = compare_mask_stacks(sl1, folder, "");
+  ASSERT_EQ(c.layers.size(), 3u);
+  EXPECT_EQ(c.min_similarity, 1.0);
+}
+
+TEST_F(MaskFiles, Sl1WithRepeatedLayersMatchesFolder) {
+  // Runs of equal layers between different ones, more layers than the encoding window.
+  std::vector<Layer> layers;
+  for (int i = 0; i < 40; ++i)
+    layers.push_back(i % 7 < 4 ? Layer{rect(-5, -5, 5, 5)} : Layer{star(0.3, -0.2, 3, 7.5, 9 + i % 3)});
+  const Slices s = make_slices(layers);
+  export_masks(s, small_display(), dir + "/job.sl1");
+  export_masks(s, small_display(), dir + "/folder");
+  const StackComparison c = compare_mask_stacks(dir + "/job.sl1", dir + "/folder", "");
+  ASSERT_EQ(c.layers.size(), 40u);
+  EXPECT_EQ(c.differing_pixels, 0u);
+}

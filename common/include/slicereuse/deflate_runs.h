@@ -5,8 +5,10 @@
 // images are long runs of 0 and 255, so a 1024x768 8-bit mask compresses to zlib's size in a
 // fraction of its time. Any inflater reads the result.
 //
-// Use: RunDeflater d(out); d.add(bytes, n) as often as needed; d.finish(). The stream is
-// appended to out.
+// Use: RunDeflater d(out); d.add(bytes, n) and d.add_run(byte, n) as often as needed;
+// d.finish(). The stream is appended to out. add_run(byte, n) is add() of n copies of byte
+// without the bytes: its cost does not depend on n (the Adler-32 of a run is a formula), so an
+// image that is known as runs (mask_png.h) deflates without ever being written out.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -17,6 +19,7 @@ class RunDeflater {
  public:
   explicit RunDeflater(std::vector<uint8_t>& out);
   void add(const uint8_t* data, size_t n);
+  void add_run(uint8_t byte, size_t n);
   void finish();
 
  private:

@@ -4,7 +4,9 @@
 //     <jobDir>NNNNN.png), only its top level is listed, or
 //   - a Prusa .sl1 archive (zip), entries <jobDir>NNNNN.png; thumbnail entries are ignored.
 // Layer k is the PNG whose name ends in the decimal number k right before ".png"; PNGs without
-// such a number are ignored, and the numbers must run 0..L-1 with no gap and no repeat.
+// such a number are ignored, and the numbers must run 0..L-1 with no gap and no repeat. Of a
+// longer run of digits only the last max(5, digits of L-1) count, so a job name ending in
+// digits ("member_001" + "00012.png") keeps its own.
 // The constructor throws Error naming the path when it does not exist, is neither a folder nor
 // a readable zip archive, holds no layer image, or misses or repeats a layer number.
 // mask_layer_file_name gives the names export_masks writes: prefix, k with at least 5 digits

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "slicereuse/mask_png.h"
 #include "slicereuse/progress.h"
 #include "slicereuse/slices.h"
 
@@ -30,6 +31,10 @@ struct PrinterProfile {
 // Rasterizes layer k into out (width*height bytes, row-major, 0 or 255; coverage 0..255 when
 // antialiasing). Returns the number of open contours ignored.
 size_t rasterize_layer(const Slices& s, size_t k, const PrinterProfile& profile, uint8_t* out);
+
+// The same binary mask (profile.antialiasing must be off) as runs of lit pixels, replacing
+// out's content: what .sl1 export encodes without writing out the pixels (mask_png.h).
+size_t rasterize_layer_runs(const Slices& s, size_t k, const PrinterProfile& profile, MaskRuns& out);
 
 struct MaskExportStats {
   size_t layers = 0;

@@ -1,0 +1,149 @@
+// EncodingCache and slice_file_identity: the cached encoding is the file's, it is read once per
+// file content, a rewritten or other file is read again, and members with other faces are
+// refused. OrderedParallel: items arrive in order, errors reach the caller.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "family.h"
+#include "slicereuse/encoding_cache.h"
+#include "slicereuse/error.h"
+#include "slicereuse/ordered_parallel.h"
+#include "slicereuse/slice_files.h"
+#include "slicereuse/slice_layers.h"
+#include "slicereuse/transfer_contours.h"
+#include "temp_folder.h"
+
+using namespace slicereuse;
+namespace fs = std::filesystem;
+
+namespace {
+
+class Cache : public test::TempFolderTest {
+ protected:
+  void SetUp() override {
+    TempFolderTest::SetUp();
+    o.shape = "arch";
+    o.faces = 3000;
+    o.height = 5;
+    o.seed = 3;
+    base = test::make_family_base(o);
+    member = test::make_family_member(base, o, 1);
+    SliceOptions s;
+    s.thickness = 0.1;
+    source = slice_layers(base, s);
+  }
+  test::FamilyOptions o;
+  Mesh base, member;
+  Slices source;
+};
+
+}  // namespace
+
+TEST_F(Cache, ReadsEachFileContentOnce) {
+  for (FileFormat format : {FileFormat::Binary, FileFormat::Text}) {
+    const std::string path = dir + (format == FileFormat::Binary ? "/enc.srb" : "/enc.enc");
+    write_encoding_file(path, source, format);
+    EncodingCache cache;
+    bool hit = true;
+    const auto first = cache.get(path, member, &hit);
+    EXPECT_FALSE(hit);
+    EXPECT_EQ(first->encoding.points(), source.points());
+    EXPECT_TRUE(first->encoding.face == source.face && first->encoding.t == source.t);
+    EXPECT_TRUE(first->edge_ends == encoded_edge_ends(source, member));
+    const auto second = cache.get(path, member, &hit);
+    EXPECT_TRUE(hit);
+    EXPECT_EQ(first.get(), second.get());
+    // The same content rewritten: new modification time, read again.
+    ::usleep(10000);
+    write_encoding_file(path, source, format);
+    cache.get(path, member, &hit);
+    EXPECT_FALSE(hit);
+    // Another name for the same content: read again (the key includes the path).
+    fs::copy_file(path, path + ".copy");
+    cache.get(path + ".copy", member, &hit);
+    EXPECT_FALSE(hit);
+    cache.clear();
+    cache.get(path + ".copy", member, &hit);
+    EXPECT_FALSE(hit);
+  }
+}
+
+TEST_F(Cache, IdentityFollowsTheContent) {
+  const std::string a = dir + "/a.srb", b = dir + "/b.srb", t = dir + "/t.enc";
+  write_encoding_file(a, source, FileFormat::Binary);
+  fs::copy_file(a, b);
+  EXPECT_EQ(slice_file_identity(a).checksum, slice_file_identity(b).checksum);
+  EXPECT_EQ(slice_file_identity(a).size, fs::file_size(a));
+  SliceOptions s;
+  s.thickness = 0.2;
+  write_encoding_file(b, slice_layers(base, s), FileFormat::Binary);
+  EXPECT_NE(slice_file_identity(a).checksum, slice_file_identity(b).checksum);
+  write_encoding_file(t, source, FileFormat::Text);
+  const uint64_t text = slice_file_identity(t).checksum;
+  std::fstream f(t, std::ios::in | std::ios::out | std::ios::binary);
+  f.seekp(-2, std::ios::end);
+  f.put('7');
+  f.close();
+  EXPECT_NE(slice_file_identity(t).checksum, text);
+  EXPECT_THROW(slice_file_identity(dir + "/missing.srb"), Error);
+  EXPECT_THROW(slice_file_identity(dir), Error);
+}
+
+TEST_F(Cache, RefusesAMemberWithOtherFacesAndKeepsNothing) {
+  const std::string path = dir + "/enc.srb";
+  write_encoding_file(path, source, FileFormat::Binary);
+  test::FamilyOptions other = o;
+  other.shape = "torus";
+  EncodingCache cache;
+  EXPECT_THROW(cache.get(path, test::make_family_base(other)), Error);
+  bool hit = true;
+  cache.get(path, member, &hit);
+  EXPECT_FALSE(hit);
+  EXPECT_THROW(cache.get(dir + "/missing.srb", member), Error);
+}
+
+TEST(OrderedParallel, HandsOutItemsInOrder) {
+  std::atomic<int> made{0};
+  OrderedParallel items(1000, 7, [&](size_t k, std::vector<uint8_t>& bytes) {
+    bytes.assign(k % 50 + 1, uint8_t(k));
+    ++made;
+  });
+  for (size_t k = 0; k < 1000; ++k) {
+    const std::vector<uint8_t>& b = items.get(k);
+    ASSERT_EQ(b.size(), k % 50 + 1);
+    ASSERT_EQ(b[0], uint8_t(k));
+  }
+  EXPECT_EQ(made, 1000);
+  EXPECT_THROW(items.get(3), Error);  // out of order
+}
+
+TEST(OrderedParallel, ErrorsReachTheCallerAndStopTheWorkers) {
+  OrderedParallel items(10000, 16, [](size_t k, std::vector<uint8_t>& bytes) {
+    if (k == 20) throw Error("item 20 failed");
+    bytes.assign(1, uint8_t(k));
+  });
+  for (size_t k = 0; k < 20; ++k) EXPECT_EQ(items.get(k)[0], uint8_t(k));
+  try {
+    items.get(20);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "item 20 failed");
+  }
+  // Leaving the scope with items not asked for must not hang or crash.
+}
+
+TEST_F(Cache, SlicingWithoutEncodingGivesTheSamePoints) {
+  SliceOptions s;
+  s.thickness = 0.1;
+  s.encoding = false;
+  const Slices bare = slice_layers(base, s);
+  EXPECT_TRUE(bare.face.empty() && bare.edge.empty() && bare.t.empty());
+  EXPECT_EQ(bare.layer_begin, source.layer_begin);
+  EXPECT_EQ(bare.contour_begin, source.contour_begin);
+  EXPECT_TRUE(bare.xyz == source.xyz);
+}
