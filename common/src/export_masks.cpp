@@ -44,15 +44,8 @@ double used_material_ml(const Slices& s) {
   double mm3 = 0;
   for (size_t k = 0; k < s.layers(); ++k) {
     double area = 0;
-    for (uint64_t c = s.layer_begin[k]; c < s.layer_begin[k + 1]; ++c) {
-      if (s.contour_open[c]) continue;
-      const uint64_t b = s.contour_begin[c], n = s.contour_begin[c + 1] - b;
-      for (uint64_t i = 0; i < n; ++i) {
-        const double* p = &s.xyz[3 * (b + i)];
-        const double* q = &s.xyz[3 * (b + (i + 1 == n ? 0 : i + 1))];
-        area += 0.5 * (p[0] * q[1] - q[0] * p[1]);
-      }
-    }
+    for (uint64_t c = s.layer_begin[k]; c < s.layer_begin[k + 1]; ++c)
+      if (!s.contour_open[c]) area += contour_area(s, c);
     mm3 += std::max(0.0, area) * s.thickness;
   }
   return mm3 / 1000;
