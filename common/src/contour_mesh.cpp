@@ -1,5 +1,7 @@
 #include "slicereuse/contour_mesh.h"
 
+#include <xxhash.h>
+
 #include <limits>
 #include <string>
 
@@ -138,6 +140,31 @@ Slices slices_from_contour_mesh(const ContourMesh& m) {
   }
   validate_slices(s);
   return s;
+}
+
+uint64_t contour_mesh_hash(const ContourMesh& m) {
+  XXH3_state_t* state = XXH3_createState();
+  if (!state) throw Error("out of memory");
+  XXH3_64bits_reset(state);
+  auto add = [&](const void* data, size_t bytes) {
+    XXH3_64bits_update(state, &bytes, sizeof bytes);
+    if (bytes) XXH3_64bits_update(state, data, bytes);
+  };
+  auto array = [&](const auto& a) { add(a.data(), a.size() * sizeof a[0]); };
+  add(&m.thickness, sizeof m.thickness);
+  add(&m.z_start, sizeof m.z_start);
+  add(&m.fingerprint.faces, sizeof m.fingerprint.faces);
+  add(&m.fingerprint.hash, sizeof m.fingerprint.hash);
+  array(m.layer_z);
+  array(m.position);
+  array(m.layer);
+  array(m.contour);
+  array(m.face);
+  array(m.area);
+  array(m.edges);
+  const uint64_t h = XXH3_64bits_digest(state);
+  XXH3_freeState(state);
+  return h;
 }
 
 }  // namespace slicereuse

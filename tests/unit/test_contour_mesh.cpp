@@ -2,6 +2,7 @@
 // exact round trips with and without an encoding, and refusal of meshes that are not contours.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 
 #include "slicereuse/contour_mesh.h"
@@ -180,4 +181,23 @@ TEST(ContourMesh, MeshesThatAreNotContoursAreRefused) {
     d.contour.pop_back();
     EXPECT_ERROR(slices_from_contour_mesh(d), "disagree in size");
   }
+}
+
+TEST(ContourMesh, HashTellsChangedMeshesApart) {
+  const ContourMesh m = contour_mesh_from_slices(sample());
+  const uint64_t h = contour_mesh_hash(m);
+  EXPECT_EQ(contour_mesh_hash(contour_mesh_from_slices(sample())), h);
+  ContourMesh d = m;
+  d.position[7] = std::nextafter(d.position[7], 1e300);
+  EXPECT_NE(contour_mesh_hash(d), h);
+  d = m;
+  d.edges.pop_back();
+  d.edges.pop_back();
+  EXPECT_NE(contour_mesh_hash(d), h);
+  d = m;
+  d.layer_z.push_back(9);
+  EXPECT_NE(contour_mesh_hash(d), h);
+  d = m;
+  d.area[5] = 0.5;
+  EXPECT_NE(contour_mesh_hash(d), h);
 }

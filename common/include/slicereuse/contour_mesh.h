@@ -46,4 +46,8 @@ struct ContourMesh {
 ContourMesh contour_mesh_from_slices(const Slices& s);
 Slices slices_from_contour_mesh(const ContourMesh& m);
 
+// XXH3_64bits over every field and array of m (sizes included): equal for equal meshes, so a
+// host can tell whether a contour layer still holds what it was filled with.
+uint64_t contour_mesh_hash(const ContourMesh& m);
+
 }  // namespace slicereuse
