@@ -44,13 +44,14 @@ Result run_export_masks(const ParamValues& values, Host& host) {
   profile.mirror_y = values.number("mirror_y") != 0;
   profile.antialiasing = values.number("antialiasing") != 0;
   const std::string& contour_file = values.text("contour_file");
-  if (contour_file.empty()) throw Error("contour_file is empty: choose a contour file");
   const std::string& output_path = values.text("output_path");
   if (output_path.empty()) throw Error("output_path is empty: choose a folder or a .sl1 file");
   check_outputs({{"output_path", output_path}});
 
   const Progress progress = host.progress();
-  const Slices s = read_contour_file(contour_file, sub_progress(progress, 0, 0.1));
+  // No file: the current layer, opened from a contour file through io_encoding.
+  const Slices s = contour_file.empty() ? host.current_contour_layer()
+                                        : read_contour_file(contour_file, sub_progress(progress, 0, 0.1));
   const MaskExportStats stats = export_masks(s, profile, output_path, sub_progress(progress, 0.1, 1));
 
   const double seconds = seconds_since(start);
