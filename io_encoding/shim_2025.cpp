@@ -10,6 +10,8 @@
 
 namespace slicereuse::plugin {
 
+// ::FileFormat is MeshLab's (extension + description), not slicereuse::FileFormat.
+
 class IoEncodingPlugin : public QObject, public IOPlugin {
   Q_OBJECT
   MESHLAB_PLUGIN_IID_EXPORTER(IO_PLUGIN_IID)
@@ -19,8 +21,8 @@ class IoEncodingPlugin : public QObject, public IOPlugin {
   QString pluginName() const override { return "IOEncoding"; }
   QString vendor() const override { return "slicereuse"; }
 
-  std::list<FileFormat> importFormats() const override { return formats(true); }
-  std::list<FileFormat> exportFormats() const override { return formats(false); }
+  std::list<::FileFormat> importFormats() const override { return formats(true); }
+  std::list<::FileFormat> exportFormats() const override { return formats(false); }
 
   void exportMaskCapability(const QString&, int& capability, int& defaultBits) const override {
     capability = defaultBits = vcg::tri::io::Mask::IOM_VERTCOORD | vcg::tri::io::Mask::IOM_EDGEINDEX;
@@ -57,8 +59,8 @@ class IoEncodingPlugin : public QObject, public IOPlugin {
   }
 
  private:
-  static std::list<FileFormat> formats(bool opening) {
-    std::list<FileFormat> list;
+  static std::list<::FileFormat> formats(bool opening) {
+    std::list<::FileFormat> list;
     for (const IoFormat& f : io_formats())
       if (f.opens || !opening) list.emplace_back(f.description, f.extension);
     return list;
