@@ -120,14 +120,13 @@ ContourMesh contour_mesh_from_vcg(MeshT& m) {
   return out;
 }
 
-// Replaces m's content by the slices s (with xyz; the encoding when s has one).
+// Replaces m's content by the slices s (with xyz; the encoding when s has one). s is consumed:
+// float builds keep it as the exact copy, double builds free it early.
 template <class MeshT>
-void fill_contour_layer(MeshT& m, const Slices& s) {
+void fill_contour_layer(MeshT& m, Slices&& s) {
   using Alloc = vcg::tri::Allocator<MeshT>;
   using Scalar = typename MeshT::ScalarType;
   using Coord = typename MeshT::CoordType;
-  const ContourMesh cm = contour_mesh_from_slices(s);
-  const size_t V = cm.vertices();
   if constexpr (!std::is_same_v<Scalar, double>) {
     // A float attribute holds whole numbers exactly only below 2^24.
     const uint64_t limit = uint64_t(1) << 24;
@@ -135,6 +134,26 @@ void fill_contour_layer(MeshT& m, const Slices& s) {
       throw Error("too many layers, contours or faces for this MeshLab's float attributes (at most "
                   "16777216 each); use the 2025 generation (pymeshlab)");
   }
+  ContourMesh cm = contour_mesh_from_slices(s);
+  // Round to what the layer stores, so that the hash below is the hash contour_mesh_from_vcg
+  // gives for the filled layer (same vertices and edges, in the same order), without reading
+  // the layer back.
+  for (double& v : cm.position) v = double(Scalar(v));
+  for (double& v : cm.area) v = double(Scalar(v));
+  ContourLayerInfo info_value;
+  info_value.thickness = s.thickness;
+  info_value.z_start = s.z_start;
+  info_value.layer_z = s.layer_z;
+  if (s.has_encoding()) info_value.fingerprint = s.fingerprint;
+  info_value.hash = contour_mesh_hash(cm);
+  // Float builds keep s as the exact copy; double builds need it no longer (free it before the
+  // layer takes its memory).
+  if constexpr (!std::is_same_v<Scalar, double>)
+    info_value.exact = std::make_shared<const Slices>(std::move(s));
+  else
+    s = Slices();
+
+  const size_t V = cm.vertices();
   m.Clear();
   auto layer = Alloc::template GetPerVertexAttribute<Scalar>(m, kLayerAttribute);
   auto contour = Alloc::template GetPerVertexAttribute<Scalar>(m, kContourAttribute);
@@ -163,14 +182,7 @@ void fill_contour_layer(MeshT& m, const Slices& s) {
   }
   vcg::tri::UpdateBounding<MeshT>::Box(m);
   auto info = Alloc::template GetPerMeshAttribute<ContourLayerInfo>(m, kInfoAttribute);
-  ContourLayerInfo& in = info();
-  in = ContourLayerInfo{};
-  in.thickness = s.thickness;
-  in.z_start = s.z_start;
-  in.layer_z = s.layer_z;
-  if (s.has_encoding()) in.fingerprint = s.fingerprint;
-  in.hash = contour_mesh_hash(contour_mesh_from_vcg(m));
-  if constexpr (!std::is_same_v<Scalar, double>) in.exact = std::make_shared<const Slices>(s);
+  info() = std::move(info_value);
 }
 
 // The slices a contour layer holds: exactly what was opened while the layer is unchanged (float

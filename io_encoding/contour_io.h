@@ -95,9 +95,10 @@ std::string open_contour_file(const std::string& format, const std::string& path
   } else {
     throw Error("io_encoding cannot open ." + format + " files");
   }
-  fill_contour_layer(m, s);
-  return "Opened " + path + ": " + std::to_string(s.layers()) + " layers, " + std::to_string(s.contours()) +
-         " contours, " + std::to_string(s.points()) + " points" +
+  const std::string counts = std::to_string(s.layers()) + " layers, " + std::to_string(s.contours()) +
+                             " contours, " + std::to_string(s.points()) + " points";
+  fill_contour_layer(m, std::move(s));
+  return "Opened " + path + ": " + counts +
          (encoding.empty() ? std::string(", no encoding") : ", encoding from " + encoding);
 }
 

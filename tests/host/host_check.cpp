@@ -10,6 +10,10 @@
 //       (contour order and loop start points may differ). --prefix: B may have more layers on
 //       top (a member that grew taller, sliced directly, versus a transfer on the source's planes).
 //   host_check layers FILE  prints the number of layers of a contour or encoding file.
+//   host_check shifted A B DX
+//       contour file B is A moved by DX along x, as MeshLab 2020.09 stores it (float): same
+//       layers, contours and open flags, every x within 1e-5 (relative) of x_A + DX, y and z
+//       equal as float.
 //   host_check export CONTOURS EXPORT
 //       EXPORT (.cli, ASCII or binary, or .slc), read by the reader written from the format's
 //       specification (tests/support/spec_readers.h), holds exactly the contours of CONTOURS:
@@ -194,10 +198,26 @@ int check_export(const std::string& contours, const std::string& exported) {
   return 0;
 }
 
+int check_shifted(const std::string& path_a, const std::string& path_b, double dx) {
+  const Slices a = read_contour_file(path_a), b = read_contour_file(path_b);
+  if (a.layer_begin != b.layer_begin || a.contour_begin != b.contour_begin || a.contour_open != b.contour_open)
+    fail("the files have different layers or contours");
+  for (size_t p = 0; p < a.points(); ++p) {
+    const double* q = &a.xyz[3 * p];
+    const double* r = &b.xyz[3 * p];
+    if (std::abs(r[0] - (q[0] + dx)) > 1e-5 * (1 + std::abs(q[0])) || r[1] != double(float(q[1])) ||
+        r[2] != double(float(q[2])))
+      fail("point " + std::to_string(p) + " is not moved by " + std::to_string(dx) + " along x");
+  }
+  std::printf("ok: %zu points moved by %g along x\n", a.points(), dx);
+  return 0;
+}
+
 int usage() {
   std::fprintf(stderr, "usage: host_check slice [--float] MESH.ply CONTOURS ENCODING\n"
                        "       host_check same [--prefix] A B\n       host_check layers FILE\n"
-                       "       host_check export CONTOURS EXPORT.cli|EXPORT.slc\n");
+                       "       host_check export CONTOURS EXPORT.cli|EXPORT.slc\n"
+                       "       host_check shifted A B DX\n");
   return 2;
 }
 
@@ -235,6 +255,7 @@ int main(int argc, char** argv) {
       std::printf("%zu\n", s.layers());
       return 0;
     }
+    if (command == "shifted" && args.size() == 3) return check_shifted(args[0], args[1], std::stod(args[2]));
     if (command == "export" && args.size() == 2) return check_export(args[0], args[1]);
     return usage();
   } catch (const std::exception& e) {

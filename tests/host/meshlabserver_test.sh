@@ -181,6 +181,23 @@ contours)
   ok log_back.txt -i out/copy.srb -o out/back.ctr
   cmp out/back.ctr out/slice.ctr || fail "ctr -> srb -> ctr changed the contour file"
   cmp out/back.enc out/slice.enc || fail "ctr -> srb -> ctr changed the encoding file"
+  # A layer changed by a MeshLab filter is saved as it is now, not as it was opened.
+  cat >move.mlx <<'EOF'
+<!DOCTYPE FilterScript>
+<FilterScript>
+ <filter name="Transform: Translate, Center, set Origin">
+  <Param type="RichEnum" name="traslMethod" value="0" enum_cardinality="4" enum_val0="XYZ translation" enum_val1="Center on Scene BBox" enum_val2="Center on Layer BBox" enum_val3="Set new Origin"/>
+  <Param type="RichDynamicFloat" name="axisX" value="1" min="-100" max="100"/>
+  <Param type="RichDynamicFloat" name="axisY" value="0" min="-100" max="100"/>
+  <Param type="RichDynamicFloat" name="axisZ" value="0" min="-100" max="100"/>
+  <Param type="RichPoint3f" name="newOrigin" x="0" y="0" z="0"/>
+  <Param type="RichBool" name="Freeze" value="true"/>
+  <Param type="RichBool" name="allLayers" value="false"/>
+ </filter>
+</FilterScript>
+EOF
+  ok log_move.txt -i out/slice.ctr -s move.mlx -o out/moved.ctr
+  "$HOST_CHECK" shifted out/slice.ctr out/moved.ctr 1 >/dev/null
   # CLI (ASCII: meshlabserver saves with default parameters) and SLC, checked by the readers
   # written from the specifications.
   ok log_cli.txt -i out/slice.ctr -o out/slice.cli
