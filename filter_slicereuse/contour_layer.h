@@ -25,6 +25,7 @@
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/complex.h>
 
+#include "mesh_convert.h"
 #include "slicereuse/contour_mesh.h"
 #include "slicereuse/error.h"
 
@@ -91,31 +92,23 @@ ContourMesh contour_mesh_from_vcg(MeshT& m) {
     out.face.resize(V);
     out.area.resize(3 * V);
   }
-  constexpr uint32_t kDeleted = ~uint32_t(0);
-  std::vector<uint32_t> index(m.vert.size(), kDeleted);
-  size_t v = 0;
+  const std::vector<uint32_t> index = live_vertex_indices(m);
   for (size_t i = 0; i < m.vert.size(); ++i) {
-    const auto& vert = m.vert[i];
-    if (vert.IsD()) continue;
-    index[i] = uint32_t(v);
-    for (int a = 0; a < 3; ++a) out.position[3 * v + a] = double(vert.cP()[a]);
+    const size_t v = index[i];
+    if (v == kDeletedVertex) continue;
+    for (int a = 0; a < 3; ++a) out.position[3 * v + a] = double(m.vert[i].cP()[a]);
     out.layer[v] = detail::index_value(double(layer[i]), kLayerAttribute, v);
     out.contour[v] = detail::index_value(double(contour[i]), kContourAttribute, v);
     if (encoded) {
       out.face[v] = detail::index_value(double(face[i]), kFaceAttribute, v);
       for (int a = 0; a < 3; ++a) out.area[3 * v + a] = double(area[i][a]);
     }
-    ++v;
   }
   out.edges.reserve(2 * size_t(m.en));
   for (size_t e = 0; e < m.edge.size(); ++e) {
-    const auto& edge = m.edge[e];
-    if (edge.IsD()) continue;
-    for (int j = 0; j < 2; ++j) {
-      const uint32_t i = index[size_t(edge.cV(j) - &m.vert[0])];
-      if (i == kDeleted) throw Error("edge " + std::to_string(e) + " uses a deleted vertex");
-      out.edges.push_back(i);
-    }
+    if (m.edge[e].IsD()) continue;
+    for (int j = 0; j < 2; ++j)
+      out.edges.push_back(live_index_of(m, index, m.edge[e].cV(j), "edge", e));
   }
   return out;
 }

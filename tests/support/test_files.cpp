@@ -67,6 +67,15 @@ Slices make_slices(const std::vector<int>& sizes, uint64_t seed, size_t open_eve
   return s;
 }
 
+void expect_same_structure(const Slices& a, const Slices& b) {
+  EXPECT_EQ(std::memcmp(&a.thickness, &b.thickness, 8), 0);
+  EXPECT_EQ(std::memcmp(&a.z_start, &b.z_start, 8), 0);
+  EXPECT_TRUE(same_bits(a.layer_z, b.layer_z));
+  EXPECT_EQ(a.layer_begin, b.layer_begin);
+  EXPECT_EQ(a.contour_begin, b.contour_begin);
+  EXPECT_EQ(a.contour_open, b.contour_open);
+}
+
 std::string slurp(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), {});

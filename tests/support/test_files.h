@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <random>
 #include <string>
@@ -23,6 +24,15 @@ double random_t(std::mt19937_64& rng);
 // sizes: points per contour, layers separated by -1; every open_every-th contour (from the
 // second) is open. Layer k is at z_start + (k + 1/2) thickness; points are random doubles.
 Slices make_slices(const std::vector<int>& sizes, uint64_t seed, size_t open_every = 3);
+
+// Arrays of equal length and identical bytes (doubles compared bit for bit: -0, NaN payloads).
+template <class A, class B>
+bool same_bits(const A& a, const B& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof a[0]) == 0);
+}
+// EXPECTs that a and b have bit-identical thickness, z_start and layer_z and the same layers,
+// contours and open flags.
+void expect_same_structure(const Slices& a, const Slices& b);
 
 std::string slurp(const std::string& path);
 // Removes first: truncating a file in place makes ext4 flush it to disk on close, which slows

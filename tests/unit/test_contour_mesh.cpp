@@ -14,18 +14,8 @@ using namespace slicereuse::test;
 
 namespace {
 
-template <class A, class B>
-bool same_bits(const A& a, const B& b) {
-  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof a[0]) == 0);
-}
-
 void expect_identical(const Slices& a, const Slices& b) {
-  EXPECT_EQ(std::memcmp(&a.thickness, &b.thickness, 8), 0);
-  EXPECT_EQ(std::memcmp(&a.z_start, &b.z_start, 8), 0);
-  EXPECT_TRUE(same_bits(a.layer_z, b.layer_z));
-  EXPECT_EQ(a.layer_begin, b.layer_begin);
-  EXPECT_EQ(a.contour_begin, b.contour_begin);
-  EXPECT_EQ(a.contour_open, b.contour_open);
+  expect_same_structure(a, b);
   EXPECT_TRUE(same_bits(a.xyz, b.xyz));
   EXPECT_EQ(a.fingerprint, b.fingerprint);
   EXPECT_TRUE(same_bits(a.face, b.face));

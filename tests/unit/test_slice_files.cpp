@@ -29,20 +29,6 @@ namespace {
 
 Slices sample() { return make_slices({5, 3, 4, -1, -1, 7, 2, 1, -1, 30, 3, 3, 9}, 42); }
 
-template <class A, class B>
-bool same_bits(const A& a, const B& b) {
-  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof a[0]) == 0);
-}
-
-void expect_same_structure(const Slices& a, const Slices& b) {
-  EXPECT_EQ(std::memcmp(&a.thickness, &b.thickness, 8), 0);
-  EXPECT_EQ(std::memcmp(&a.z_start, &b.z_start, 8), 0);
-  EXPECT_TRUE(same_bits(a.layer_z, b.layer_z));
-  EXPECT_EQ(a.layer_begin, b.layer_begin);
-  EXPECT_EQ(a.contour_begin, b.contour_begin);
-  EXPECT_EQ(a.contour_open, b.contour_open);
-}
-
 class SliceFiles : public test::FileTest {};
 
 uint64_t u64_at(const std::string& b, size_t at) {
