@@ -60,9 +60,12 @@ inline bool is_file(const std::string& path) {
   return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
 }
 
-// The encoding file that belongs to the contour file at path, or "" if there is none.
-inline std::string encoding_beside(const std::string& path) {
-  for (const std::string& candidate : {base_of(path) + ".enc", base_of(path) + "_enc.srb"})
+// The encoding file that belongs to the contour file at path, or "" if there is none: B.enc or
+// B_enc.srb, the one that saving as this extension writes (B.enc for .ctr, B_enc.srb for .srb)
+// first.
+inline std::string encoding_beside(const std::string& path, bool binary) {
+  const std::string text = base_of(path) + ".enc", bin = base_of(path) + "_enc.srb";
+  for (const std::string& candidate : binary ? std::vector<std::string>{bin, text} : std::vector<std::string>{text, bin})
     if (candidate != path && is_file(candidate)) return candidate;
   return "";
 }
@@ -90,7 +93,7 @@ std::string open_contour_file(const std::string& format, const std::string& path
     s = read_cli_file(path, progress);
   } else if (ext == "CTR" || ext == "SRB") {
     s = read_contour_file(path, progress);
-    encoding = encoding_beside(path);
+    encoding = encoding_beside(path, ext == "SRB");
     if (!encoding.empty()) attach_encoding(s, read_encoding_file(encoding), encoding);
   } else {
     throw Error("io_encoding cannot open ." + format + " files");
