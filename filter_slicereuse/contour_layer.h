@@ -72,7 +72,7 @@ ContourMesh contour_mesh_from_vcg(MeshT& m) {
   auto layer = Alloc::template FindPerVertexAttribute<typename MeshT::ScalarType>(m, kLayerAttribute);
   auto contour = Alloc::template FindPerVertexAttribute<typename MeshT::ScalarType>(m, kContourAttribute);
   if (!Alloc::IsValidHandle(m, info) || !Alloc::IsValidHandle(m, layer) || !Alloc::IsValidHandle(m, contour))
-    throw Error("the current layer is not a contour layer (it lacks the per-vertex 'layer' and "
+    throw Error("the layer is not a contour layer (it lacks the per-vertex 'layer' and "
                 "'contour' attributes or the layer table): open a .ctr, .srb or .cli file");
   const ContourLayerInfo& in = info();
   auto face = Alloc::template FindPerVertexAttribute<typename MeshT::ScalarType>(m, kFaceAttribute);

@@ -50,8 +50,16 @@ Result run_export_masks(const ParamValues& values, Host& host) {
 
   const Progress progress = host.progress();
   // No file: the current layer, opened from a contour file through io_encoding.
-  const Slices s = contour_file.empty() ? host.current_contour_layer()
-                                        : read_contour_file(contour_file, sub_progress(progress, 0, 0.1));
+  Slices s;
+  if (!contour_file.empty()) {
+    s = read_contour_file(contour_file, sub_progress(progress, 0, 0.1));
+  } else {
+    try {
+      s = host.current_contour_layer();
+    } catch (const Error& e) {
+      throw Error(std::string("contour_file is empty and ") + e.what());
+    }
+  }
   const MaskExportStats stats = export_masks(s, profile, output_path, sub_progress(progress, 0.1, 1));
 
   const double seconds = seconds_since(start);

@@ -14,6 +14,7 @@
 // Every function throws Error with a message naming the file and the problem.
 #include <sys/stat.h>
 
+#include <cctype>
 #include <string>
 #include <vector>
 

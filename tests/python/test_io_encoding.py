@@ -215,7 +215,7 @@ def test_bad_files_and_plain_meshes_are_refused(pymeshlab, sliced, make_family):
     with pytest.raises(pymeshlab.PyMeshLabException, match="not a contour layer"):
         ms.save_current_mesh(str(out / "plain.ctr"))
     assert not (out / "plain.ctr").exists()
-    with pytest.raises(pymeshlab.PyMeshLabException, match="not a contour layer"):
+    with pytest.raises(pymeshlab.PyMeshLabException, match="contour_file is empty and the layer is not a contour layer"):
         ms.apply_filter("export_mask_images", contour_file="", output_path=str(out / "masks_plain"))
     ms.load_new_mesh(str(ctr))  # a filter that succeeds after the errors (see README)
     ms.apply_filter("export_mask_images", contour_file="", output_path=str(out / "masks_after"))
