@@ -1,4 +1,6 @@
-// Throughput of the contour and encoding files, text and binary, on 10M+ synthetic points.
+// Throughput of the contour and encoding files, text and binary, of CLI (ASCII, binary) and SLC
+// export, and of the conversion to and from a contour layer's arrays (contour_mesh.h), on 10M+
+// synthetic points.
 // Usage: bench_files [folder]   (default /tmp; files are removed afterwards)
 // Prints the median of 3 runs. Reads follow writes, so they are served from the page cache:
 // the figures measure parsing and copying, not the disk.
@@ -15,6 +17,9 @@
 #include <string>
 #include <vector>
 
+#include "slicereuse/cli_file.h"
+#include "slicereuse/contour_mesh.h"
+#include "slicereuse/slc_file.h"
 #include "slicereuse/slice_files.h"
 
 using namespace slicereuse;
@@ -105,5 +110,37 @@ int main(int argc, char** argv) {
       if (!ok) return 1;
     }
   }
-  return 0;
+  // CLI: ASCII keeps every double, binary rounds x, y and the layer z to float32.
+  for (CliEncoding encoding : {CliEncoding::Ascii, CliEncoding::Binary}) {
+    const bool binary = encoding == CliEncoding::Binary;
+    const std::string path = folder + "/bench_files.cli";
+    const double w = median_seconds([&] { write_cli_file(path, s, encoding); });
+    Slices r;
+    const double rd = median_seconds([&] { r = read_cli_file(path); });
+    bool ok = r.xyz.size() == s.xyz.size();
+    for (size_t i = 0; ok && i < s.xyz.size(); ++i)
+      ok = r.xyz[i] == (binary ? double(float(s.xyz[i])) : s.xyz[i]);  // z: the layer's, float32 too
+    const double mb = double(std::filesystem::file_size(path)) / 1e6;
+    std::printf("%-9s %-7s %9.1f %9.3f %10.1f %9.3f %10.1f%s\n", "CLI", binary ? "binary" : "ASCII", mb, w,
+                mb / w, rd, mb / rd, ok ? "" : "  ROUND TRIP MISMATCH");
+    std::filesystem::remove(path);
+    if (!ok) return 1;
+  }
+  {
+    const std::string path = folder + "/bench_files.slc";
+    const double w = median_seconds([&] { write_slc_file(path, s); });
+    const double mb = double(std::filesystem::file_size(path)) / 1e6;
+    std::printf("%-9s %-7s %9.1f %9.3f %10.1f %9s %10s\n", "SLC", "binary", mb, w, mb / w, "-", "-");
+    std::filesystem::remove(path);
+  }
+  // A contour layer's arrays (what io_encoding copies into and out of MeshLab).
+  ContourMesh m;
+  const double to_mesh = median_seconds([&] { m = contour_mesh_from_slices(s); });
+  Slices back;
+  const double from_mesh = median_seconds([&] { back = slices_from_contour_mesh(m); });
+  const double hash = median_seconds([&] { (void)contour_mesh_hash(m); });
+  const bool ok = same(back.xyz, s.xyz) && same(back.t, s.t) && back.contour_open == s.contour_open;
+  std::printf("contour layer arrays: from slices %.3f s, back to slices %.3f s, hash %.3f s%s\n", to_mesh,
+              from_mesh, hash, ok ? "" : "  ROUND TRIP MISMATCH");
+  return ok ? 0 : 1;
 }

@@ -15,6 +15,7 @@
 #include "slicereuse/error.h"
 #include "slicereuse/mesh.h"
 #include "slicereuse/progress.h"
+#include "slicereuse/slices.h"
 
 namespace slicereuse::plugin {
 
@@ -93,6 +94,9 @@ class Host {
   virtual ~Host() = default;
   virtual Mesh current_mesh() = 0;                   // throws Error if there is none
   virtual Mesh mesh_at(int ref) = 0;                 // a Mesh parameter's value; Error if none
+  // The current layer's contours when it is a contour layer (a .ctr, .srb or .cli file opened
+  // through the io_encoding plugin; see contour_layer.h); throws Error if it is not.
+  virtual Slices current_contour_layer() = 0;
   // Adds a new layer showing polylines: points xyz (3n), segments as point index pairs.
   virtual void add_polyline_layer(const std::string& name, const std::vector<double>& xyz,
                                   const std::vector<uint32_t>& segments) = 0;

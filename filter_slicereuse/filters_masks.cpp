@@ -65,12 +65,21 @@ Result run_export_masks(const ParamValues& values, Host& host) {
   const auto start = std::chrono::steady_clock::now();
   const PrinterProfile profile = read_printer_profile(values);
   const std::string& contour_file = values.text("contour_file");
-  if (contour_file.empty()) throw Error("contour_file is empty: choose a contour file");
   const std::string& output_path = mask_output_path(values);
   check_outputs({{"output_path", output_path}});
 
   const Progress progress = host.progress();
-  const Slices s = read_contour_file(contour_file, sub_progress(progress, 0, 0.1));
+  // No file: the current layer, opened from a contour file through io_encoding.
+  Slices s;
+  if (!contour_file.empty()) {
+    s = read_contour_file(contour_file, sub_progress(progress, 0, 0.1));
+  } else {
+    try {
+      s = host.current_contour_layer();
+    } catch (const Error& e) {
+      throw Error(std::string("contour_file is empty and ") + e.what());
+    }
+  }
   const MaskExportStats stats = export_masks(s, profile, output_path, sub_progress(progress, 0.1, 1));
 
   const double seconds = seconds_since(start);

@@ -165,7 +165,8 @@ FilterSpec masks_spec() {
                    "winding rule of the closed contours; open contours are ignored and counted. "
                    "The model's XY origin sits at the image centre, shifted by the offsets; row "
                    "0 is the top of the image (largest y). Pixel sizes are in micrometres, "
-                   "offsets in mm. The current mesh is not used.</p>") +
+                   "offsets in mm. With an empty contour file the contours come from the current "
+                   "layer, a contour file opened in MeshLab (.ctr, .srb or .cli).</p>") +
                    kReference,
                Arity::None,
                kLayerClass,
@@ -173,7 +174,9 @@ FilterSpec masks_spec() {
                {}};
   f.params = {
       file_param("contour_file", ParamType::FileOpen, "Contour file", "*.ctr *.srb",
-                 "Contour file written by Slice Mesh with Encoding or Transfer Slicing to Mesh."),
+                 "Contour file written by Slice Mesh with Encoding or Transfer Slicing to Mesh. "
+                 "Empty: the current layer, a contour file opened with File > Import Mesh "
+                 "(.ctr, .srb, .cli)."),
       file_param("output_path", ParamType::FileSave, "Output folder or .sl1", "*.sl1",
                  "A folder for PNG images (created if missing; its parent must exist), or a "
                  "file name ending in .sl1 for a Prusa SL1 archive."),

@@ -38,6 +38,7 @@
 #include <QStringList>
 #include <QVariant>
 
+#include "contour_layer.h"
 #include "filter_api.h"
 #include "mesh_convert.h"
 #include "slicereuse/error.h"
@@ -184,6 +185,11 @@ class DocumentHost : public Host {
       throw Error("there is no mesh with " + std::string(Api::kMeshRef) + " " + std::to_string(ref) +
                   " (" + std::to_string(Api::mesh_count(md_)) + " meshes are loaded)");
     return mesh_from_vcg(m->cm);
+  }
+
+  Slices current_contour_layer() override {
+    if (md_.mm() == nullptr) throw Error("there is no current layer: open a contour file first");
+    return slices_of_contour_layer(md_.mm()->cm);
   }
 
   // Not made current: a following filter should still act on the mesh the user chose.

@@ -20,31 +20,43 @@
 
 namespace slicereuse::plugin {
 
+// Live vertices are numbered 0, 1, ... in storage order; deleted ones map to kDeletedVertex.
+constexpr uint32_t kDeletedVertex = std::numeric_limits<uint32_t>::max();
+
+template <class MeshT>
+std::vector<uint32_t> live_vertex_indices(const MeshT& m) {
+  std::vector<uint32_t> index(m.vert.size(), kDeletedVertex);
+  uint32_t live = 0;
+  for (size_t i = 0; i < m.vert.size(); ++i)
+    if (!m.vert[i].IsD()) index[i] = live++;
+  return index;
+}
+
+// The live index of the vertex vp points at; throws Error naming the element (kind, number)
+// that uses a deleted vertex.
+template <class MeshT, class VertexPointer>
+uint32_t live_index_of(const MeshT& m, const std::vector<uint32_t>& index, VertexPointer vp, const char* kind,
+                       size_t number) {
+  const uint32_t i = index[size_t(vp - &m.vert[0])];
+  if (i == kDeletedVertex) throw Error(std::string(kind) + " " + std::to_string(number) + " uses a deleted vertex");
+  return i;
+}
+
 template <class MeshT>
 Mesh mesh_from_vcg(const MeshT& m) {
-  constexpr uint32_t kDeleted = std::numeric_limits<uint32_t>::max();
   Mesh out;
-  std::vector<uint32_t> index(m.vert.size(), kDeleted);
+  const std::vector<uint32_t> index = live_vertex_indices(m);
   out.V.reserve(3 * size_t(m.vn));
-  uint32_t live = 0;
   for (size_t i = 0; i < m.vert.size(); ++i) {
-    const auto& v = m.vert[i];
-    if (v.IsD()) continue;
-    index[i] = live++;
-    out.V.push_back(double(v.cP()[0]));
-    out.V.push_back(double(v.cP()[1]));
-    out.V.push_back(double(v.cP()[2]));
+    if (index[i] == kDeletedVertex) continue;
+    for (int a = 0; a < 3; ++a) out.V.push_back(double(m.vert[i].cP()[a]));
   }
   out.F.reserve(3 * size_t(m.fn));
   for (size_t f = 0; f < m.face.size(); ++f) {
     const auto& face = m.face[f];
     if (face.IsD()) continue;
-    for (int j = 0; j < 3; ++j) {
-      const uint32_t i = index[size_t(face.cV(j) - &m.vert[0])];
-      if (i == kDeleted)
-        throw Error("mesh face " + std::to_string(f) + " uses a deleted vertex");
-      out.F.push_back(i);
-    }
+    for (int j = 0; j < 3; ++j)
+      out.F.push_back(live_index_of(m, index, face.cV(j), "mesh face", f));
   }
   return out;
 }

@@ -6,7 +6,9 @@
     ms.load_new_mesh("a.ply")
     r = ms.apply_filter("slice_mesh_with_encoding", layer_thickness=0.1, encoding_file="a.srb")
 
-The plugin is build/2025/plugins/libfilter_slicereuse.so, or $SLICEREUSE_PLUGIN. Filters
+The plugin is build/2025/plugins/libfilter_slicereuse.so, or $SLICEREUSE_PLUGIN; the IO plugin
+libio_encoding.so next to it is loaded too, so that ms.load_new_mesh("x.ctr") opens a contour
+file as a layer and ms.save_current_mesh("x.cli") writes it (also .srb, .slc). Filters
 loaded late are not MeshSet methods: call them through ms.apply_filter(name, **params); the
 result is a dict. Errors raise pymeshlab.PyMeshLabException with the filter's message. After
 catching one, keep that MeshSet alive (or run a filter on it that succeeds) before loading meshes
@@ -36,6 +38,9 @@ def load(plugin=None):
                            f"-DSLICEREUSE_MESHLAB_API=2025 && cmake --build {ROOT}/build/2025")
     import pymeshlab
     pymeshlab.load_plugin(str(plugin))
+    io_plugin = plugin.parent / "libio_encoding.so"
+    if io_plugin.is_file():
+        pymeshlab.load_plugin(str(io_plugin))
     _pymeshlab = pymeshlab
     return pymeshlab
 

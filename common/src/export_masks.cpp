@@ -48,15 +48,8 @@ double used_material_ml(const Slices& s) {
 #pragma omp parallel for schedule(dynamic, 64)
   for (long long k = 0; k < L; ++k) {
     double a = 0;
-    for (uint64_t c = s.layer_begin[k]; c < s.layer_begin[k + 1]; ++c) {
-      if (s.contour_open[c]) continue;
-      const uint64_t b = s.contour_begin[c], n = s.contour_begin[c + 1] - b;
-      for (uint64_t i = 0; i < n; ++i) {
-        const double* p = &s.xyz[3 * (b + i)];
-        const double* q = &s.xyz[3 * (b + (i + 1 == n ? 0 : i + 1))];
-        a += 0.5 * (p[0] * q[1] - q[0] * p[1]);
-      }
-    }
+    for (uint64_t c = s.layer_begin[k]; c < s.layer_begin[k + 1]; ++c)
+      if (!s.contour_open[c]) a += contour_area(s, c);
     area[size_t(k)] = a;
   }
   double mm3 = 0;

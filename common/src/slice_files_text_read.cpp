@@ -11,14 +11,13 @@
 #include <vector>
 
 #include "slice_files_detail.h"
+#include "slicereuse/area_coordinates.h"
 #include "slicereuse/error.h"
 #include "slicereuse/parallel_blocks.h"
 
 namespace slicereuse::detail {
 namespace {
 
-// Sum of area coordinates written by other programs (e.g. in float) may be off by rounding.
-constexpr double kLambdaSumTolerance = 1e-6;
 // Contour lines are parsed in blocks of about this many bytes of text.
 constexpr size_t kBlockBytes = size_t(1) << 20;
 
@@ -245,20 +244,12 @@ void parse_encoding_points(const std::string& path, const Line& l, bool open,
         bad(token_at(at, l.e) + " is not a finite number");
       if (v < 0) bad("negative area coordinate " + token_at(at, l.e));
     }
-    // The decoding rule of docs/formats.md: the edge is the unique j with lambda_{j+2} == 0
-    // and lambda_{j+1} > 0, and t is lambda_{j+1}; this inverts the writer exactly.
-    int j = -1;
-    for (int c = 0; c < 3; ++c)
-      if (lambda[(c + 2) % 3] == 0 && lambda[(c + 1) % 3] > 0) j = c;
-    if (lambda[0] != 0 && lambda[1] != 0 && lambda[2] != 0)
-      bad("point not on a face edge: no area coordinate is 0");
-    if (j < 0) bad("area coordinates are all 0");
-    if (lambda[(j + 1) % 3] > 1) bad("area coordinate above 1");
-    if (std::abs(lambda[0] + lambda[1] + lambda[2] - 1) > kLambdaSumTolerance)
-      bad("area coordinates do not sum to 1");
+    uint8_t j = 0;
+    double ti = 0;
+    if (const char* why = decode_area_coordinates(lambda, j, ti)) bad(why);
     face[i] = uint32_t(f);
-    edge[i] = uint8_t(j);
-    t[i] = lambda[(j + 1) % 3];
+    edge[i] = j;
+    t[i] = ti;
   }
 }
 

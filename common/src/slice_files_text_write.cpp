@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "slice_files_detail.h"
+#include "slicereuse/area_coordinates.h"
 #include "slicereuse/atomic_file.h"
 #include "slicereuse/parallel_blocks.h"
 
@@ -78,9 +79,7 @@ char* format_layers(const Slices& s, FileKind kind, size_t k0, size_t k1, char* 
         } else {
           const unsigned j = s.edge[i];
           double lambda[3];
-          lambda[j] = 1.0 - s.t[i];
-          lambda[(j + 1) % 3] = s.t[i];
-          lambda[(j + 2) % 3] = 0.0;
+          encode_area_coordinates(j, s.t[i], lambda);
           p = put(p, uint64_t(s.face[i]));
           for (double l : lambda) {
             *p++ = ' ';

@@ -53,6 +53,17 @@ size_t Slices::open_contours() const {
   return n;
 }
 
+double contour_area(const Slices& s, size_t c) {
+  const uint64_t b = s.contour_begin[c], n = s.contour_begin[c + 1] - b;
+  double area = 0;
+  for (uint64_t i = 0; i < n; ++i) {
+    const double* p = &s.xyz[3 * (b + i)];
+    const double* q = &s.xyz[3 * (b + (i + 1 == n ? 0 : i + 1))];
+    area += 0.5 * (p[0] * q[1] - q[0] * p[1]);
+  }
+  return area;
+}
+
 void validate_slices(const Slices& s) {
   if (!std::isfinite(s.z_start)) throw Error("z_start is not finite");
   if (!std::isfinite(s.thickness) || s.thickness <= 0)

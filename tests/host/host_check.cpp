@@ -10,12 +10,24 @@
 //       (contour order and loop start points may differ). --prefix: B may have more layers on
 //       top (a member that grew taller, sliced directly, versus a transfer on the source's planes).
 //   host_check layers FILE  prints the number of layers of a contour or encoding file.
+//   host_check shifted A B DX
+//       contour file B is A moved by DX along x, as MeshLab 2020.09 stores it (float): same
+//       layers, contours and open flags, every x within 1e-5 (relative) of x_A + DX, y and z
+//       equal as float.
+//   host_check export CONTOURS EXPORT
+//       EXPORT (.cli, ASCII or binary, or .slc), read by the reader written from the format's
+//       specification (tests/support/spec_readers.h), holds exactly the contours of CONTOURS:
+//       $$LAYERS and every layer's z, one polyline (SLC: boundary, closed contours only) per
+//       contour in order, direction 2 for open ones, closed ones repeating their first point,
+//       every coordinate equal (as float32 in binary CLI and SLC).
 // Exits 0 when all holds, 1 with a message naming the first violation.
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -23,6 +35,7 @@
 #include "slicereuse/error.h"
 #include "slicereuse/fingerprint.h"
 #include "slicereuse/slice_files.h"
+#include "spec_readers.h"
 
 using namespace slicereuse;
 
@@ -131,9 +144,80 @@ int check_same(const std::string& path_a, const std::string& path_b, bool prefix
   return 0;
 }
 
+// The points of contour c as written to a closed-or-open polyline, x and y rounded by round().
+template <class Round>
+std::vector<double> polyline_of(const Slices& s, size_t c, Round round) {
+  std::vector<double> xy;
+  const uint64_t b = s.contour_begin[c], n = s.contour_begin[c + 1] - b;
+  for (uint64_t j = 0; j < n + (s.contour_open[c] ? 0 : 1); ++j)
+    for (int a = 0; a < 2; ++a) xy.push_back(round(s.xyz[3 * (b + j % n) + a]));
+  return xy;
+}
+
+int check_export(const std::string& contours, const std::string& exported) {
+  const Slices s = read_contour_file(contours);
+  std::ifstream in(exported, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  const std::string what = "'" + exported + "'";
+  const bool slc = exported.size() > 4 && exported.substr(exported.size() - 4) == ".slc";
+  auto as_float = [](double v) { return double(float(v)); };
+  if (slc) {
+    const test::SpecSlc f = test::read_slc_per_spec(bytes);
+    if (f.layers.size() != s.layers()) fail(what + " has " + std::to_string(f.layers.size()) + " layers");
+    for (size_t k = 0; k < s.layers(); ++k) {
+      size_t i = 0;
+      for (uint64_t c = s.layer_begin[k]; c < s.layer_begin[k + 1]; ++c) {
+        if (s.contour_open[c]) continue;
+        if (i >= f.layers[k].boundaries.size()) fail(what + ": layer " + std::to_string(k) + " lacks boundaries");
+        std::vector<double> xy;
+        for (const auto& p : f.layers[k].boundaries[i++]) xy.insert(xy.end(), {double(p[0]), double(p[1])});
+        if (xy != polyline_of(s, c, as_float)) fail(what + ": contour " + std::to_string(c) + " differs");
+      }
+      if (i != f.layers[k].boundaries.size()) fail(what + ": layer " + std::to_string(k) + " has extra boundaries");
+    }
+    std::printf("ok: SLC with %zu layers\n", f.layers.size());
+    return 0;
+  }
+  const test::SpecCli f = test::read_cli_per_spec(bytes);
+  auto round = [&](double v) { return f.binary ? as_float(v) : v; };
+  if (f.layers != long(s.layers()) || f.geometry.size() != s.layers())
+    fail(what + ": $$LAYERS/" + std::to_string(f.layers) + " and " + std::to_string(f.geometry.size()) +
+         " layers for " + std::to_string(s.layers()));
+  for (size_t k = 0; k < s.layers(); ++k) {
+    const auto& l = f.geometry[k];
+    if (l.z != round(s.layer_z[k])) fail(what + ": layer " + std::to_string(k) + " z differs");
+    if (l.polylines.size() != s.layer_begin[k + 1] - s.layer_begin[k])
+      fail(what + ": layer " + std::to_string(k) + " has " + std::to_string(l.polylines.size()) + " polylines");
+    for (size_t i = 0; i < l.polylines.size(); ++i) {
+      const size_t c = s.layer_begin[k] + i;
+      if ((l.polylines[i].dir == 2) != (s.contour_open[c] != 0)) fail(what + ": contour " + std::to_string(c) + " direction");
+      if (l.polylines[i].xy != polyline_of(s, c, round)) fail(what + ": contour " + std::to_string(c) + " differs");
+    }
+  }
+  std::printf("ok: %s CLI, $$LAYERS/%ld\n", f.binary ? "binary" : "ASCII", f.layers);
+  return 0;
+}
+
+int check_shifted(const std::string& path_a, const std::string& path_b, double dx) {
+  const Slices a = read_contour_file(path_a), b = read_contour_file(path_b);
+  if (a.layer_begin != b.layer_begin || a.contour_begin != b.contour_begin || a.contour_open != b.contour_open)
+    fail("the files have different layers or contours");
+  for (size_t p = 0; p < a.points(); ++p) {
+    const double* q = &a.xyz[3 * p];
+    const double* r = &b.xyz[3 * p];
+    if (std::abs(r[0] - (q[0] + dx)) > 1e-5 * (1 + std::abs(q[0])) || r[1] != double(float(q[1])) ||
+        r[2] != double(float(q[2])))
+      fail("point " + std::to_string(p) + " is not moved by " + std::to_string(dx) + " along x");
+  }
+  std::printf("ok: %zu points moved by %g along x\n", a.points(), dx);
+  return 0;
+}
+
 int usage() {
   std::fprintf(stderr, "usage: host_check slice [--float] MESH.ply CONTOURS ENCODING\n"
-                       "       host_check same [--prefix] A B\n       host_check layers FILE\n");
+                       "       host_check same [--prefix] A B\n       host_check layers FILE\n"
+                       "       host_check export CONTOURS EXPORT.cli|EXPORT.slc\n"
+                       "       host_check shifted A B DX\n");
   return 2;
 }
 
@@ -171,6 +255,8 @@ int main(int argc, char** argv) {
       std::printf("%zu\n", s.layers());
       return 0;
     }
+    if (command == "shifted" && args.size() == 3) return check_shifted(args[0], args[1], std::stod(args[2]));
+    if (command == "export" && args.size() == 2) return check_export(args[0], args[1]);
     return usage();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "host_check: %s\n", e.what());

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Host tests: runs Debian's meshlabserver 2020.09 (through scripts/meshlabserver) with the
 # example filter scripts on a generated family and checks what it wrote.
-#   meshlabserver_test.sh CASE     CASE: slice | transfer | masks | print_job | errors
+#   meshlabserver_test.sh CASE     CASE: slice | transfer | masks | print_job | errors | contours
 # Environment (set by tests/host/CMakeLists.txt): MESHLABSERVER, SLICEREUSE_BUILD, GEN_FAMILY,
 # HOST_CHECK, EXAMPLES, WORK (a scratch folder, emptied first).
 set -euo pipefail
@@ -199,6 +199,60 @@ errors)
   must_fail log9.txt "Export Mask Images:" -s "$EXAMPLES/masks.mlx"
   must_fail log10.txt "Compare Mask Stacks:" -s "$EXAMPLES/compare.mlx"
   no_outputs
+  ;;
+contours)
+  # The io_encoding plugin: contour files open as layers and save back, exactly.
+  ok log_slice.txt -i "$m0" -s "$EXAMPLES/slice.mlx"
+  ok log_srb.txt -i out/slice.ctr -o out/copy.srb
+  [ -f out/copy_enc.srb ] || fail "the encoding beside slice.ctr was not saved as copy_enc.srb"
+  ok log_back.txt -i out/copy.srb -o out/back.ctr
+  cmp out/back.ctr out/slice.ctr || fail "ctr -> srb -> ctr changed the contour file"
+  cmp out/back.enc out/slice.enc || fail "ctr -> srb -> ctr changed the encoding file"
+  # A layer changed by a MeshLab filter is saved as it is now, not as it was opened.
+  cat >move.mlx <<'EOF'
+<!DOCTYPE FilterScript>
+<FilterScript>
+ <filter name="Transform: Translate, Center, set Origin">
+  <Param type="RichEnum" name="traslMethod" value="0" enum_cardinality="4" enum_val0="XYZ translation" enum_val1="Center on Scene BBox" enum_val2="Center on Layer BBox" enum_val3="Set new Origin"/>
+  <Param type="RichDynamicFloat" name="axisX" value="1" min="-100" max="100"/>
+  <Param type="RichDynamicFloat" name="axisY" value="0" min="-100" max="100"/>
+  <Param type="RichDynamicFloat" name="axisZ" value="0" min="-100" max="100"/>
+  <Param type="RichPoint3f" name="newOrigin" x="0" y="0" z="0"/>
+  <Param type="RichBool" name="Freeze" value="true"/>
+  <Param type="RichBool" name="allLayers" value="false"/>
+ </filter>
+</FilterScript>
+EOF
+  ok log_move.txt -i out/slice.ctr -s move.mlx -o out/moved.ctr
+  "$HOST_CHECK" shifted out/slice.ctr out/moved.ctr 1 >/dev/null
+  # CLI (ASCII: meshlabserver saves with default parameters) and SLC, checked by the readers
+  # written from the specifications.
+  ok log_cli.txt -i out/slice.ctr -o out/slice.cli
+  "$HOST_CHECK" export out/slice.ctr out/slice.cli | grep -q "^ok: ASCII CLI, \$\$LAYERS/$("$HOST_CHECK" layers out/slice.ctr)$" ||
+    fail "slice.cli does not hold slice.ctr's layers"
+  ok log_slc.txt -i out/slice.ctr -o out/slice.slc
+  "$HOST_CHECK" export out/slice.ctr out/slice.slc >/dev/null
+  # A CLI file opens too (no encoding), and ASCII CLI keeps every coordinate.
+  ok log_fromcli.txt -i out/slice.cli -o out/fromcli.ctr
+  "$HOST_CHECK" same out/fromcli.ctr out/slice.ctr >/dev/null
+  # Masks from the opened layer (empty contour_file) equal masks from the file.
+  edit masks.mlx layer_masks.mlx 's#value="out/transfer\.ctr"#value=""#' 's#value="out/masks"#value="out/masks_layer"#'
+  edit masks.mlx file_masks.mlx 's#out/transfer\.ctr#out/slice.ctr#' 's#value="out/masks"#value="out/masks_file"#'
+  ok log_lmasks.txt -i out/slice.ctr -s layer_masks.mlx
+  ok log_fmasks.txt -s file_masks.mlx
+  edit compare.mlx cmp.mlx 's#out/masks_direct#out/masks_layer#' 's#value="out/masks"#value="out/masks_file"#'
+  ok log_cmp.txt -s cmp.mlx
+  grep -q "Compare Mask Stacks: 60 layers, min similarity 1 at layer 0, 0 differing pixels" log_cmp.txt ||
+    fail "masks from the layer differ from masks from the file: $(grep Compare log_cmp.txt)"
+  # Damaged files are refused without a crash and without output; a plain mesh is no contour layer.
+  head -c 2000 out/slice.cli >cut.cli
+  rc=0; run log_cut.txt -i cut.cli -o out/cut.ctr || rc=$?
+  [ "$rc" -eq 255 ] && [ ! -e out/cut.ctr ] || fail "a truncated CLI file was not refused (status $rc)"
+  head -c 3000 out/slice.ctr >cut.ctr
+  rc=0; run log_cutctr.txt -i cut.ctr -o out/cut.srb || rc=$?
+  [ "$rc" -eq 255 ] && [ ! -e out/cut.srb ] || fail "a truncated contour file was not refused (status $rc)"
+  run log_plain.txt -i "$m0" -o out/plain.ctr || true
+  grep -q "has NOT been saved" log_plain.txt && [ ! -e out/plain.ctr ] || fail "a plain mesh was saved as contours"
   ;;
 *) fail "unknown case $case_name" ;;
 esac

@@ -55,6 +55,10 @@ struct Slices {
   bool has_encoding() const { return face.size() == points() && edge.size() == points() && t.size() == points(); }
 };
 
+// Signed area of contour c's loop in the xy plane (shoelace, in double), seen from +z: positive
+// for a counter-clockwise (outer) loop, negative for a clockwise one (a hole). Needs xyz.
+double contour_area(const Slices& s, size_t c);
+
 // Throws Error naming the first inconsistency: a thickness that is not positive, offset arrays
 // not starting at 0, not increasing (every contour has at least one point) or not ending at the
 // array sizes, array lengths that disagree, an open flag other than 0 or 1, an edge > 2, t
