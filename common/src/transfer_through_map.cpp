@@ -1,0 +1,175 @@
+#include "slicereuse/transfer_through_map.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "slicereuse/edge_links.h"
+#include "slicereuse/error.h"
+#include "slicereuse/fingerprint.h"
+#include "slicereuse/straddling_faces.h"
+#include "slicereuse/trace_contour.h"
+#include "slicereuse/transfer_layers.h"
+
+namespace slicereuse {
+namespace {
+
+// How far a seed may be walked towards the plane. The map puts the images of an encoded
+// edge's two ends on either side of the plane (exactly so when it is in-plane), so the target's
+// contour lies between them, usually in one of their faces or a few faces away.
+constexpr int kMaxSeedSteps = 64;
+
+// A face straddling zk found from face f by walking up (f below the plane) or down (f above it)
+// across the edge opposite f's lowest (highest) corner; kNoSeed when none within the steps.
+constexpr uint32_t kNoSeed = 0xffffffffu;
+uint32_t level_face_near(const Mesh& target, const std::vector<uint32_t>& links, uint32_t f, double zk) {
+  for (int step = 0; step < kMaxSeedSteps; ++step) {
+    const uint32_t* c = &target.F[3 * size_t(f)];
+    const double z[3] = {target.V[3 * size_t(c[0]) + 2], target.V[3 * size_t(c[1]) + 2],
+                         target.V[3 * size_t(c[2]) + 2]};
+    const uint32_t lo = uint32_t(std::min_element(z, z + 3) - z), hi = uint32_t(std::max_element(z, z + 3) - z);
+    if (z[lo] < zk && z[hi] >= zk) return f;
+    const uint32_t away = z[hi] < zk ? lo : hi;  // the corner farthest from the plane
+    const uint32_t link = links[3 * size_t(f) + (away + 1) % 3];
+    if (link == kUnlinked) return kNoSeed;
+    f = link >> 2;
+  }
+  return kNoSeed;
+}
+
+// Slices made of the certified layers' traced loops, in plane order.
+Slices gather_traced(std::vector<TracedContours>& traced, const std::vector<size_t>& certified,
+                     const std::vector<double>& planes, bool with_encoding, const Progress& progress) {
+  const size_t n = certified.size();
+  Slices out;
+  out.layer_begin.assign(1, 0);
+  out.contour_begin.assign(1, 0);
+  std::vector<size_t> point_begin(n + 1, 0);
+  for (size_t i = 0; i < n; ++i) {
+    const TracedContours& t = traced[certified[i]];
+    out.layer_z.push_back(planes[certified[i]]);
+    for (uint64_t len : t.lengths) out.contour_begin.push_back(out.contour_begin.back() + len);
+    out.layer_begin.push_back(out.contour_begin.size() - 1);
+    point_begin[i + 1] = point_begin[i] + t.points();
+  }
+  out.contour_open.assign(out.contour_begin.size() - 1, 0);
+  const size_t P = point_begin[n];
+  out.xyz.resize(3 * P);
+  if (with_encoding) {
+    out.face.resize(P);
+    out.edge.resize(P);
+    out.t.resize(P);
+  }
+  for_each_layer(n, progress, [&](size_t i) {
+    TracedContours& t = traced[certified[i]];
+    const size_t q = point_begin[i], m = t.points();
+    std::memcpy(&out.xyz[3 * q], t.xyz.data(), 3 * m * sizeof(double));
+    if (with_encoding) {
+      std::memcpy(&out.face[q], t.face.data(), m * sizeof(uint32_t));
+      std::memcpy(&out.edge[q], t.edge.data(), m);
+      std::memcpy(&out.t[q], t.t.data(), m * sizeof(double));
+    }
+    t = {};
+  });
+  return out;
+}
+
+Slices exact_through_map(const Slices& enc, const SurfaceMap& map, const Mesh& target, bool with_encoding,
+                         TransferStats& st, const Progress& progress) {
+  std::vector<double> planes = target_planes(enc, target);
+  const size_t L = planes.size(), Le = std::min(L, enc.layers());
+  // The certificate: every traced loop closes, and the loops hold one point per face of the
+  // target that straddles the plane, so no loop of the target's section was missed.
+  const std::vector<uint64_t> counts = straddling_face_counts(target, planes);
+  const EdgeLinks links = edge_links(target);
+  const EndsFromFaces ends{enc.edge.data(), enc.face.data(), map.source_faces.data()};
+  std::vector<TracedContours> traced(L);
+  std::vector<uint8_t> ok(L, 0);
+  std::vector<std::vector<uint32_t>> stamps(omp_get_max_threads());
+  for_each_layer(Le, progress, [&](size_t k) {
+    std::vector<uint32_t>& stamp = stamps[omp_get_thread_num()];
+    if (stamp.empty()) stamp.assign(target.faces(), 0);
+    const double zk = planes[k];
+    const uint32_t s = uint32_t(k + 1);
+    TracedContours& out = traced[k];
+    bool good = true;
+    for (size_t p = layer_point_begin(enc, k); good && out.points() < counts[k] && p < layer_point_end(enc, k); ++p) {
+      uint32_t a, b;
+      ends(p, a, b);
+      uint32_t seed = level_face_near(target, links.links, map.face[a], zk);
+      if (seed == kNoSeed) seed = level_face_near(target, links.links, map.face[b], zk);
+      if (seed == kNoSeed || stamp[seed] == s) continue;
+      good = trace_contour(target, links.links, zk, seed, s, stamp.data(), counts[k], out);
+    }
+    ok[k] = good && out.points() == counts[k];
+    if (!ok[k]) out = {};
+  });
+  std::vector<size_t> done_layer(L, kNoLayer), certified;
+  for (size_t k = 0; k < L; ++k)
+    if (ok[k]) {
+      done_layer[k] = certified.size();
+      certified.push_back(k);
+    }
+  Slices done = gather_traced(traced, certified, planes, with_encoding, progress);
+  return splice_resliced(std::move(done), done_layer, std::move(planes), target, with_encoding, st, progress);
+}
+
+Slices barycentric_through_map(const Slices& enc, const SurfaceMap& map, const Mesh& target, TransferStats& st,
+                               const Progress& progress) {
+  Slices out = layout_of(enc);
+  const EndsFromFaces ends{enc.edge.data(), enc.face.data(), map.source_faces.data()};
+  std::vector<double> deviation(enc.layers(), 0);
+  for_each_layer(enc.layers(), progress, [&](size_t k) {
+    const double zk = enc.layer_z[k];
+    double worst = 0;
+    for (size_t p = layer_point_begin(enc, k); p < layer_point_end(enc, k); ++p) {
+      uint32_t a, b;
+      ends(p, a, b);
+      double ga[3], gb[3];
+      map_point(map, target, a, ga);
+      map_point(map, target, b, gb);
+      const double t = enc.t[p];
+      out.xyz[3 * p] = (1 - t) * ga[0] + t * gb[0];
+      out.xyz[3 * p + 1] = (1 - t) * ga[1] + t * gb[1];
+      worst = std::max(worst, std::abs((1 - t) * ga[2] + t * gb[2] - zk));
+      out.xyz[3 * p + 2] = zk;
+    }
+    deviation[k] = worst;
+  });
+  st.transferred_layers = enc.layers();
+  st.max_plane_deviation = deviation.empty() ? 0 : *std::max_element(deviation.begin(), deviation.end());
+  return out;
+}
+
+}  // namespace
+
+Slices transfer_through_map(const Slices& encoding, const SurfaceMap& map, const Mesh& target,
+                            const TransferOptions& options, TransferStats* stats, const Progress& progress) {
+  validate_mesh(target);
+  if (!encoding.has_encoding())
+    throw Error("transfer through a map needs an encoding (face and area coordinates per point)");
+  validate_surface_map(map);
+  if (encoding.fingerprint != map.source)
+    throw Error("the encoding was made from a mesh with other faces than the map's source (encoding: " +
+                describe_fingerprint(encoding.fingerprint) + "; map's source: " + describe_fingerprint(map.source) +
+                ")");
+  check_map_target(map, target);
+  if (options.mode == TransferMode::Barycentric && options.encoding)
+    throw Error("barycentric transfer through a map puts points inside the target's faces, not on its edges, so it "
+                "gives no target encoding; use exact mode (0) to write the target's encoding");
+  report_progress(progress, 0, "transferring");
+  TransferStats st;
+  Slices out = options.mode == TransferMode::Barycentric
+                   ? barycentric_through_map(encoding, map, target, st, progress)
+                   : exact_through_map(encoding, map, target, options.encoding, st, progress);
+  out.z_start = encoding.z_start;
+  out.thickness = encoding.thickness;
+  out.fingerprint = map.target;
+  report_progress(progress, 1, "transferring");
+  if (stats) *stats = st;
+  return out;
+}
+
+}  // namespace slicereuse

@@ -1,0 +1,267 @@
+// Transfer through a map onto a target of other connectivity, with maps known exactly: the
+// target is the source (or a family member) with its vertices renumbered and its faces
+// reordered and rotated, and the map sends each source vertex to its renumbered self.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <random>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "family.h"
+#include "sections.h"
+#include "slicereuse/error.h"
+#include "slicereuse/fingerprint.h"
+#include "slicereuse/masks.h"
+#include "slicereuse/slice_layers.h"
+#include "slicereuse/transfer_through_map.h"
+
+using namespace slicereuse;
+
+namespace {
+
+struct Shuffled {
+  Mesh target;
+  SurfaceMap map;  // source vertex i -> its renumbered self on target
+};
+
+// The mesh with vertex order, face order and each face's first corner shuffled (orientation
+// kept), and the exact map from `source` (whose faces `mesh` shares) onto it.
+Shuffled shuffle(const Mesh& source, const Mesh& mesh, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  const size_t nv = mesh.vertices(), nf = mesh.faces();
+  std::vector<uint32_t> vperm(nv), fperm(nf);
+  std::iota(vperm.begin(), vperm.end(), 0u);
+  std::iota(fperm.begin(), fperm.end(), 0u);
+  std::shuffle(vperm.begin(), vperm.end(), rng);
+  std::shuffle(fperm.begin(), fperm.end(), rng);
+  Shuffled s;
+  s.target.V.resize(mesh.V.size());
+  s.target.F.resize(mesh.F.size());
+  for (size_t i = 0; i < nv; ++i)
+    for (int d = 0; d < 3; ++d) s.target.V[3 * vperm[i] + d] = mesh.V[3 * i + d];
+  SurfaceMap& m = s.map;
+  m.face.resize(nv);
+  m.bary.assign(3 * nv, 0);
+  for (size_t f = 0; f < nf; ++f) {
+    const size_t r = rng() % 3;
+    for (size_t j = 0; j < 3; ++j) {
+      const uint32_t v = mesh.F[3 * f + j];
+      const size_t corner = (j + r) % 3;
+      s.target.F[3 * fperm[f] + corner] = vperm[v];
+      m.face[v] = fperm[f];
+      std::fill_n(&m.bary[3 * v], 3, 0.0);
+      m.bary[3 * v + corner] = 1;
+    }
+  }
+  m.source = mesh_fingerprint(source);
+  m.target = mesh_fingerprint(s.target);
+  m.source_vertices = source.vertices();
+  m.target_vertices = nv;
+  m.source_faces = source.F;
+  return s;
+}
+
+Slices slice(const Mesh& m, double h, double z_start = std::nan("")) {
+  SliceOptions o;
+  o.thickness = h;
+  o.z_start = z_start;
+  return slice_layers(m, o);
+}
+
+// Per layer, the points with their encoding as a sorted list: equal lists mean the same
+// points on the same faces and edges with the same t, bit for bit.
+using Encoded = std::tuple<uint32_t, uint8_t, double, double, double>;
+std::vector<Encoded> encoded_layer(const Slices& s, size_t k) {
+  std::vector<Encoded> out;
+  for (size_t p = s.contour_begin[s.layer_begin[k]]; p < s.contour_begin[s.layer_begin[k + 1]]; ++p)
+    out.emplace_back(s.face[p], s.edge[p], s.t[p], s.xyz[3 * p], s.xyz[3 * p + 1]);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::vector<uint8_t> raster(const Slices& s, size_t k) {
+  const PrinterProfile p;  // 1024 x 768, 75 um
+  std::vector<uint8_t> img(size_t(p.width_px) * p.height_px);
+  rasterize_layer(s, k, p, img.data());
+  return img;
+}
+
+double similarity(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
+  size_t same = 0;
+  for (size_t i = 0; i < a.size(); ++i) same += a[i] == b[i];
+  return double(same) / double(a.size());
+}
+
+test::FamilyOptions family(const std::string& shape, bool z_change) {
+  test::FamilyOptions o;
+  o.shape = shape;
+  o.faces = 6000;
+  o.height = 10;
+  o.seed = 11;
+  o.z_change = z_change;
+  return o;
+}
+
+// Exact transfer of `source`'s slicing through the map equals direct slicing of the target on
+// the same plate: same loops, same encoding, identical masks. Returns the stats.
+TransferStats expect_exact_equals_direct(const Slices& source, const Shuffled& s) {
+  TransferStats st;
+  const Slices moved = transfer_through_map(source, s.map, s.target, TransferMode::Exact, &st);
+  const Slices direct = slice(s.target, source.thickness, source.z_start);
+  EXPECT_EQ(st.transferred_layers + st.resliced_layers, direct.layers());
+  EXPECT_EQ(moved.fingerprint, mesh_fingerprint(s.target));
+  EXPECT_EQ(moved.points(), direct.points());
+  test::expect_same_sections(moved, direct);
+  for (size_t k = 0; k < std::min(moved.layers(), direct.layers()); ++k) {
+    EXPECT_EQ(encoded_layer(moved, k), encoded_layer(direct, k)) << "layer " << k;
+    EXPECT_TRUE(raster(moved, k) == raster(direct, k)) << "layer " << k;
+  }
+  // Without the encoding: the same points.
+  const Slices bare = transfer_through_map(source, s.map, s.target, TransferOptions(TransferMode::Exact, false));
+  EXPECT_TRUE(bare.face.empty() && bare.edge.empty() && bare.t.empty());
+  EXPECT_EQ(bare.contour_begin, moved.contour_begin);
+  EXPECT_TRUE(bare.xyz == moved.xyz);
+  return st;
+}
+
+class ThroughMapShapes : public ::testing::TestWithParam<std::string> {};
+
+}  // namespace
+
+TEST_P(ThroughMapShapes, ExactEqualsDirectSlicingOfAShuffledCopy) {
+  const Mesh base = test::make_family_base(family(GetParam(), false));
+  const Slices source = slice(base, 0.05);
+  const Shuffled s = shuffle(base, base, 3);
+  ASSERT_NE(s.map.target, s.map.source);  // really other connectivity
+  const TransferStats st = expect_exact_equals_direct(source, s);
+  EXPECT_EQ(st.transferred_layers, source.layers());
+  EXPECT_EQ(st.resliced_layers, 0u);
+}
+
+TEST_P(ThroughMapShapes, ExactEqualsDirectSlicingOfAShuffledMember) {
+  const test::FamilyOptions o = family(GetParam(), false);
+  const Mesh base = test::make_family_base(o);
+  const Slices source = slice(base, 0.05);
+  for (int i = 1; i <= 2; ++i) {
+    const Shuffled s = shuffle(base, test::make_family_member(base, o, i), 10 + i);
+    const TransferStats st = expect_exact_equals_direct(source, s);
+    EXPECT_EQ(st.resliced_layers, 0u) << "member " << i;
+  }
+}
+
+TEST_P(ThroughMapShapes, BarycentricMatchesDirectSlicingMasks) {
+  const test::FamilyOptions o = family(GetParam(), false);
+  const Mesh base = test::make_family_base(o);
+  const Slices source = slice(base, 0.05);
+  const Shuffled s = shuffle(base, test::make_family_member(base, o, 1), 5);
+  TransferStats st;
+  const Slices bary =
+      transfer_through_map(source, s.map, s.target, TransferOptions(TransferMode::Barycentric, false), &st);
+  const Slices direct = slice(s.target, source.thickness, source.z_start);
+  ASSERT_EQ(bary.layers(), direct.layers());
+  EXPECT_EQ(st.transferred_layers, bary.layers());
+  EXPECT_LT(st.max_plane_deviation, 1e-9);  // the member keeps every vertex's height
+  EXPECT_TRUE(bary.face.empty());
+  for (size_t k = 0; k < bary.layers(); ++k) {
+    EXPECT_EQ(bary.layer_z[k], direct.layer_z[k]);
+    EXPECT_GE(similarity(raster(bary, k), raster(direct, k)), 0.9999) << "layer " << k;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Shapes, ThroughMapShapes, ::testing::Values("arch", "ear", "handle"),
+                         [](const auto& info) { return info.param; });
+
+TEST(TransferThroughMap, ZChangedMemberMixesTracedAndReslicedLayers) {
+  const test::FamilyOptions o = family("ear", true);
+  const Mesh base = test::make_family_base(o);
+  const Slices source = slice(base, 0.05);
+  size_t transferred = 0, resliced = 0;
+  for (int i = 1; i <= 3; ++i) {
+    const Mesh member = test::make_family_member(base, o, i);
+    const TransferStats st = expect_exact_equals_direct(source, shuffle(base, member, 20 + i));
+    transferred += st.transferred_layers;
+    resliced += st.resliced_layers;
+  }
+  EXPECT_GT(transferred, 0u);
+  EXPECT_GT(resliced, 0u);
+}
+
+TEST(TransferThroughMap, LocalZEditLeavesMostLayersCertified) {
+  const test::FamilyOptions o = family("arch", false);
+  const Mesh base = test::make_family_base(o);
+  const double h = 0.05;
+  const Slices source = slice(base, h);
+  Mesh member = test::make_family_member(base, o, 2);
+  // Raise the top vertex by 3.2 layers: the member grows by 3 or 4 layers, which have no seeds
+  // in the source's slicing and are re-sliced; every other layer is traced and certified.
+  size_t top = 0;
+  for (size_t v = 0; v < member.vertices(); ++v)
+    if (member.V[3 * v + 2] > member.V[3 * top + 2]) top = v;
+  member.V[3 * top + 2] += 3.2 * h;
+  const TransferStats st = expect_exact_equals_direct(source, shuffle(base, member, 7));
+  EXPECT_GE(st.resliced_layers, 3u);
+  EXPECT_LE(st.resliced_layers, 4u);
+  EXPECT_EQ(st.transferred_layers, source.layers());
+}
+
+TEST(TransferThroughMap, BarycentricReportsPlaneDeviationWithinTheHeightChange) {
+  const test::FamilyOptions o = family("arch", true);
+  const Mesh base = test::make_family_base(o);
+  const Mesh member = test::make_family_member(base, o, 1);
+  double dz = 0;
+  for (size_t v = 0; v < base.vertices(); ++v) dz = std::max(dz, std::abs(member.V[3 * v + 2] - base.V[3 * v + 2]));
+  TransferStats st;
+  const Slices bary = transfer_through_map(slice(base, 0.05), shuffle(base, member, 9).map,
+                                           shuffle(base, member, 9).target,
+                                           TransferOptions(TransferMode::Barycentric, false), &st);
+  EXPECT_GT(st.max_plane_deviation, 1e-3);
+  EXPECT_LE(st.max_plane_deviation, dz);
+  for (size_t k = 0; k < bary.layers(); ++k)  // every point is placed on its plane
+    for (size_t p = bary.contour_begin[bary.layer_begin[k]]; p < bary.contour_begin[bary.layer_begin[k + 1]]; ++p)
+      ASSERT_EQ(bary.xyz[3 * p + 2], bary.layer_z[k]);
+}
+
+TEST(TransferThroughMap, AMapWithoutUsefulSeedsStillGivesDirectSlicing) {
+  const Mesh base = test::make_family_base(family("handle", false));
+  const Slices source = slice(base, 0.05);
+  Shuffled s = shuffle(base, base, 4);
+  std::fill(s.map.face.begin(), s.map.face.end(), 0u);  // every image on one face: seeds fail
+  const TransferStats st = expect_exact_equals_direct(source, s);
+  EXPECT_EQ(st.resliced_layers, source.layers());
+}
+
+TEST(TransferThroughMap, RefusesMismatchedInputWithClearMessages) {
+  const test::FamilyOptions o = family("arch", false);
+  const Mesh base = test::make_family_base(o);
+  const Slices source = slice(base, 0.1);
+  const Shuffled s = shuffle(base, base, 1);
+  auto message = [&](const Slices& enc, const SurfaceMap& map, const Mesh& target, TransferOptions opt) {
+    try {
+      transfer_through_map(enc, map, target, opt);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  // The map's target is the shuffled copy, not the base.
+  EXPECT_NE(message(source, s.map, base, TransferMode::Exact).find("not the map's target"), std::string::npos);
+  // An encoding of another mesh (other faces) than the map's source.
+  const Shuffled other = shuffle(base, base, 2);
+  const Slices other_source = slice(other.target, 0.1);
+  EXPECT_NE(message(other_source, s.map, s.target, TransferMode::Exact).find("other faces than the map's source"),
+            std::string::npos);
+  // Barycentric points are not on the target's edges: no target encoding.
+  EXPECT_NE(message(source, s.map, s.target, TransferOptions(TransferMode::Barycentric, true)).find("no target encoding"),
+            std::string::npos);
+  // A map that is not consistent (face id out of range).
+  SurfaceMap broken = s.map;
+  broken.face[5] = uint32_t(s.target.faces());
+  EXPECT_NE(message(source, broken, s.target, TransferMode::Exact), "accepted");
+  Slices contours_only = source;
+  contours_only.face.clear();
+  EXPECT_NE(message(contours_only, s.map, s.target, TransferMode::Exact).find("needs an encoding"), std::string::npos);
+}
