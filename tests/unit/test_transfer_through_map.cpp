@@ -5,14 +5,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
-#include <random>
 #include <string>
 #include <tuple>
 #include <vector>
 
 #include "family.h"
 #include "sections.h"
+#include "shuffle_mesh.h"
 #include "slicereuse/error.h"
 #include "slicereuse/fingerprint.h"
 #include "slicereuse/masks.h"
@@ -28,35 +27,23 @@ struct Shuffled {
   SurfaceMap map;  // source vertex i -> its renumbered self on target
 };
 
-// The mesh with vertex order, face order and each face's first corner shuffled (orientation
-// kept), and the exact map from `source` (whose faces `mesh` shares) onto it.
+// `mesh` (a member with the faces of `source`) shuffled (shuffle_mesh.h), and the exact map
+// from `source` onto it: vertex i lands on its new self, as corner (1, 0, 0) of a face using it.
 Shuffled shuffle(const Mesh& source, const Mesh& mesh, uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  const size_t nv = mesh.vertices(), nf = mesh.faces();
-  std::vector<uint32_t> vperm(nv), fperm(nf);
-  std::iota(vperm.begin(), vperm.end(), 0u);
-  std::iota(fperm.begin(), fperm.end(), 0u);
-  std::shuffle(vperm.begin(), vperm.end(), rng);
-  std::shuffle(fperm.begin(), fperm.end(), rng);
+  test::ShuffledMesh shuffled = test::shuffle_mesh(mesh, seed);
   Shuffled s;
-  s.target.V.resize(mesh.V.size());
-  s.target.F.resize(mesh.F.size());
-  for (size_t i = 0; i < nv; ++i)
-    for (int d = 0; d < 3; ++d) s.target.V[3 * vperm[i] + d] = mesh.V[3 * i + d];
+  s.target = std::move(shuffled.mesh);
   SurfaceMap& m = s.map;
+  const size_t nv = mesh.vertices();
   m.face.resize(nv);
   m.bary.assign(3 * nv, 0);
-  for (size_t f = 0; f < nf; ++f) {
-    const size_t r = rng() % 3;
+  for (size_t f = 0; f < mesh.faces(); ++f)
     for (size_t j = 0; j < 3; ++j) {
       const uint32_t v = mesh.F[3 * f + j];
-      const size_t corner = (j + r) % 3;
-      s.target.F[3 * fperm[f] + corner] = vperm[v];
-      m.face[v] = fperm[f];
+      m.face[v] = shuffled.new_face[f];
       std::fill_n(&m.bary[3 * v], 3, 0.0);
-      m.bary[3 * v + corner] = 1;
+      m.bary[3 * v + (j + shuffled.corner_shift[f]) % 3] = 1;
     }
-  }
   m.source = mesh_fingerprint(source);
   m.target = mesh_fingerprint(s.target);
   m.source_vertices = source.vertices();

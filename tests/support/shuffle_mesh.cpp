@@ -1,0 +1,46 @@
+#include "shuffle_mesh.h"
+
+#include <numeric>
+
+namespace slicereuse::test {
+namespace {
+
+struct SplitMix {
+  uint64_t state;
+  uint64_t next() {
+    uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+};
+
+std::vector<uint32_t> permutation(size_t n, SplitMix& rng) {
+  std::vector<uint32_t> p(n);
+  std::iota(p.begin(), p.end(), 0u);
+  for (size_t i = n; i > 1; --i) std::swap(p[i - 1], p[rng.next() % i]);
+  return p;
+}
+
+}  // namespace
+
+ShuffledMesh shuffle_mesh(const Mesh& mesh, uint64_t seed) {
+  SplitMix rng{seed};
+  const size_t nv = mesh.vertices(), nf = mesh.faces();
+  ShuffledMesh s;
+  s.new_index = permutation(nv, rng);
+  s.new_face = permutation(nf, rng);
+  s.corner_shift.resize(nf);
+  s.mesh.V.resize(mesh.V.size());
+  s.mesh.F.resize(mesh.F.size());
+  for (size_t i = 0; i < nv; ++i)
+    for (int d = 0; d < 3; ++d) s.mesh.V[3 * size_t(s.new_index[i]) + d] = mesh.V[3 * i + d];
+  for (size_t f = 0; f < nf; ++f) {
+    s.corner_shift[f] = uint8_t(rng.next() % 3);
+    for (size_t j = 0; j < 3; ++j)
+      s.mesh.F[3 * size_t(s.new_face[f]) + (j + s.corner_shift[f]) % 3] = s.new_index[mesh.F[3 * f + j]];
+  }
+  return s;
+}
+
+}  // namespace slicereuse::test
