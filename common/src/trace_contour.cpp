@@ -15,25 +15,36 @@ uint32_t exit_edge(const Mesh& mesh, uint32_t f, double zk) {
 }
 
 bool trace_contour(const Mesh& mesh, const std::vector<uint32_t>& links, double zk, uint32_t seed,
-                   uint32_t stamp_value, uint32_t* stamp, size_t max_points, TracedContours& out) {
-  const size_t first_point = out.points();
-  uint32_t f = seed;
+                   uint32_t stamp_value, uint32_t* stamp, ContourSink& sink) {
+  const double* V = mesh.V.data();
+  const uint32_t* F = mesh.F.data();
+  const size_t first = sink.cursor;
+  uint32_t f = seed, j = exit_edge(mesh, seed, zk);
+  if (j == kNoEdge) return false;
   for (;;) {
-    const uint32_t j = exit_edge(mesh, f, zk);
-    if (j == kNoEdge || stamp[f] == stamp_value || out.points() >= max_points) return false;
+    if (stamp[f] == stamp_value || sink.cursor == sink.end) return false;
     stamp[f] = stamp_value;
-    const uint32_t* c = &mesh.F[3 * size_t(f)];
-    const EdgePoint p = edge_point(&mesh.V[3 * size_t(c[j])], &mesh.V[3 * size_t(c[(j + 1) % 3])], zk);
-    out.xyz.insert(out.xyz.end(), {p.x, p.y, zk});
-    out.face.push_back(f);
-    out.edge.push_back(uint8_t(j));
-    out.t.push_back(p.t);
+    const uint32_t* c = F + 3 * size_t(f);
+    const EdgePoint p = edge_point(V + 3 * size_t(c[j]), V + 3 * size_t(c[(j + 1) % 3]), zk);
+    const size_t i = sink.cursor++;
+    sink.xyz[3 * i] = p.x;
+    sink.xyz[3 * i + 1] = p.y;
+    sink.xyz[3 * i + 2] = zk;
+    if (sink.face) {
+      sink.face[i] = f;
+      sink.edge[i] = uint8_t(j);
+      sink.t[i] = p.t;
+    }
     const uint32_t link = links[3 * size_t(f) + j];
     if (link == kUnlinked) return false;
     f = link >> 2;
     if (f == seed) break;
+    // f is entered by its edge sg, from corner sg (at or above) to sg+1 (below), as the slicer
+    // walks: the third corner alone decides the exit.
+    const uint32_t sg = link & 3, third = (sg + 2) % 3;
+    j = V[3 * size_t(F[3 * size_t(f) + third]) + 2] >= zk ? (sg + 1) % 3 : third;
   }
-  out.lengths.push_back(out.points() - first_point);
+  sink.lengths.push_back(sink.cursor - first);
   return true;
 }
 

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 #include "slicereuse/edge_links.h"
 #include "slicereuse/error.h"
@@ -39,41 +38,15 @@ uint32_t level_face_near(const Mesh& target, const std::vector<uint32_t>& links,
   return kNoSeed;
 }
 
-// Slices made of the certified layers' traced loops, in plane order.
-Slices gather_traced(std::vector<TracedContours>& traced, const std::vector<size_t>& certified,
-                     const std::vector<double>& planes, bool with_encoding, const Progress& progress) {
-  const size_t n = certified.size();
-  Slices out;
-  out.layer_begin.assign(1, 0);
-  out.contour_begin.assign(1, 0);
-  std::vector<size_t> point_begin(n + 1, 0);
-  for (size_t i = 0; i < n; ++i) {
-    const TracedContours& t = traced[certified[i]];
-    out.layer_z.push_back(planes[certified[i]]);
-    for (uint64_t len : t.lengths) out.contour_begin.push_back(out.contour_begin.back() + len);
-    out.layer_begin.push_back(out.contour_begin.size() - 1);
-    point_begin[i + 1] = point_begin[i] + t.points();
-  }
-  out.contour_open.assign(out.contour_begin.size() - 1, 0);
-  const size_t P = point_begin[n];
-  out.xyz.resize(3 * P);
-  if (with_encoding) {
-    out.face.resize(P);
-    out.edge.resize(P);
-    out.t.resize(P);
-  }
-  for_each_layer(n, progress, [&](size_t i) {
-    TracedContours& t = traced[certified[i]];
-    const size_t q = point_begin[i], m = t.points();
-    std::memcpy(&out.xyz[3 * q], t.xyz.data(), 3 * m * sizeof(double));
-    if (with_encoding) {
-      std::memcpy(&out.face[q], t.face.data(), m * sizeof(uint32_t));
-      std::memcpy(&out.edge[q], t.edge.data(), m);
-      std::memcpy(&out.t[q], t.t.data(), m * sizeof(double));
-    }
-    t = {};
-  });
-  return out;
+// A seed for the loop(s) that source point p's images lead to: the faces of its edge ends'
+// images, walked to the plane.
+template <class Ends>
+uint32_t seed_of(size_t p, const Ends& ends, const SurfaceMap& map, const Mesh& target,
+                 const std::vector<uint32_t>& links, double zk) {
+  uint32_t a, b;
+  ends(p, a, b);
+  const uint32_t seed = level_face_near(target, links, map.face[a], zk);
+  return seed != kNoSeed ? seed : level_face_near(target, links, map.face[b], zk);
 }
 
 Slices exact_through_map(const Slices& enc, const SurfaceMap& map, const Mesh& target, bool with_encoding,
@@ -81,39 +54,65 @@ Slices exact_through_map(const Slices& enc, const SurfaceMap& map, const Mesh& t
   std::vector<double> planes = target_planes(enc, target);
   const size_t L = planes.size(), Le = std::min(L, enc.layers());
   // The certificate: every traced loop closes, and the loops hold one point per face of the
-  // target that straddles the plane, so no loop of the target's section was missed.
+  // target that straddles the plane, so no loop of the target's section was missed. The counts
+  // also size each layer's slot in the output, so tracing writes in place.
   const std::vector<uint64_t> counts = straddling_face_counts(target, planes);
+  std::vector<uint64_t> slot(Le + 1, 0);
+  for (size_t k = 0; k < Le; ++k) slot[k + 1] = slot[k] + counts[k];
+  Slices traced;
+  traced.xyz.resize(3 * slot[Le]);
+  if (with_encoding) {
+    traced.face.resize(slot[Le]);
+    traced.edge.resize(slot[Le]);
+    traced.t.resize(slot[Le]);
+  }
   const EdgeLinks links = edge_links(target);
   const EndsFromFaces ends{enc.edge.data(), enc.face.data(), map.source_faces.data()};
-  std::vector<TracedContours> traced(L);
-  std::vector<uint8_t> ok(L, 0);
+  std::vector<std::vector<uint64_t>> lengths(Le);
+  std::vector<uint8_t> ok(Le, 0);
   std::vector<std::vector<uint32_t>> stamps(omp_get_max_threads());
   for_each_layer(Le, progress, [&](size_t k) {
     std::vector<uint32_t>& stamp = stamps[omp_get_thread_num()];
     if (stamp.empty()) stamp.assign(target.faces(), 0);
     const double zk = planes[k];
     const uint32_t s = uint32_t(k + 1);
-    TracedContours& out = traced[k];
+    ContourSink sink{&traced.xyz[3 * slot[k]], nullptr, nullptr, nullptr, 0, counts[k], {}};
+    if (with_encoding) {
+      sink.face = &traced.face[slot[k]];
+      sink.edge = &traced.edge[slot[k]];
+      sink.t = &traced.t[slot[k]];
+    }
+    // One seed per source contour usually finds every loop; all points are tried only when the
+    // section's topology differs from the source's.
     bool good = true;
-    for (size_t p = layer_point_begin(enc, k); good && out.points() < counts[k] && p < layer_point_end(enc, k); ++p) {
-      uint32_t a, b;
-      ends(p, a, b);
-      uint32_t seed = level_face_near(target, links.links, map.face[a], zk);
-      if (seed == kNoSeed) seed = level_face_near(target, links.links, map.face[b], zk);
-      if (seed == kNoSeed || stamp[seed] == s) continue;
-      good = trace_contour(target, links.links, zk, seed, s, stamp.data(), counts[k], out);
-    }
-    ok[k] = good && out.points() == counts[k];
-    if (!ok[k]) out = {};
+    auto try_seed = [&](size_t p) {
+      const uint32_t seed = seed_of(p, ends, map, target, links.links, zk);
+      if (seed != kNoSeed && stamp[seed] != s) good = trace_contour(target, links.links, zk, seed, s, stamp.data(), sink);
+    };
+    for (size_t c = enc.layer_begin[k]; good && sink.cursor < sink.end && c < enc.layer_begin[k + 1]; ++c)
+      try_seed(enc.contour_begin[c]);
+    for (size_t p = layer_point_begin(enc, k); good && sink.cursor < sink.end && p < layer_point_end(enc, k); ++p)
+      try_seed(p);
+    ok[k] = good && sink.cursor == sink.end;
+    lengths[k] = std::move(sink.lengths);
   });
-  std::vector<size_t> done_layer(L, kNoLayer), certified;
-  for (size_t k = 0; k < L; ++k)
+  // Layer offsets over the slots. A layer that failed keeps its slot as one placeholder contour,
+  // so the offsets of the others stay right; it is never picked (re-sliced instead).
+  traced.layer_z.assign(planes.begin(), planes.begin() + Le);
+  traced.layer_begin.assign(1, 0);
+  traced.contour_begin.assign(1, 0);
+  std::vector<size_t> done_layer(L, kNoLayer);
+  for (size_t k = 0; k < Le; ++k) {
     if (ok[k]) {
-      done_layer[k] = certified.size();
-      certified.push_back(k);
+      done_layer[k] = k;
+      for (uint64_t n : lengths[k]) traced.contour_begin.push_back(traced.contour_begin.back() + n);
+    } else if (counts[k] > 0) {
+      traced.contour_begin.push_back(slot[k + 1]);
     }
-  Slices done = gather_traced(traced, certified, planes, with_encoding, progress);
-  return splice_resliced(std::move(done), done_layer, std::move(planes), target, with_encoding, st, progress);
+    traced.layer_begin.push_back(traced.contour_begin.size() - 1);
+  }
+  traced.contour_open.assign(traced.contour_begin.size() - 1, 0);
+  return splice_resliced(std::move(traced), done_layer, std::move(planes), target, with_encoding, st, progress);
 }
 
 Slices barycentric_through_map(const Slices& enc, const SurfaceMap& map, const Mesh& target, TransferStats& st,

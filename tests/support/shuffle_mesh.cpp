@@ -1,6 +1,10 @@
 #include "shuffle_mesh.h"
 
+#include <algorithm>
 #include <numeric>
+
+#include "slicereuse/error.h"
+#include "slicereuse/fingerprint.h"
 
 namespace slicereuse::test {
 namespace {
@@ -41,6 +45,28 @@ ShuffledMesh shuffle_mesh(const Mesh& mesh, uint64_t seed) {
       s.mesh.F[3 * size_t(s.new_face[f]) + (j + s.corner_shift[f]) % 3] = s.new_index[mesh.F[3 * f + j]];
   }
   return s;
+}
+
+SurfaceMap map_onto_shuffled(const Mesh& source, const ShuffledMesh& shuffled) {
+  const size_t nv = source.vertices(), nf = source.faces();
+  if (shuffled.new_index.size() != nv || shuffled.new_face.size() != nf)
+    throw Error("map_onto_shuffled: the source is not the shuffled mesh's family");
+  SurfaceMap m;
+  m.face.resize(nv);
+  m.bary.assign(3 * nv, 0);
+  for (size_t f = 0; f < nf; ++f)
+    for (size_t j = 0; j < 3; ++j) {
+      const uint32_t v = source.F[3 * f + j];
+      m.face[v] = shuffled.new_face[f];
+      std::fill_n(&m.bary[3 * size_t(v)], 3, 0.0);
+      m.bary[3 * size_t(v) + (j + shuffled.corner_shift[f]) % 3] = 1;
+    }
+  m.source = mesh_fingerprint(source);
+  m.target = mesh_fingerprint(shuffled.mesh);
+  m.source_vertices = nv;
+  m.target_vertices = nv;
+  m.source_faces = source.F;
+  return m;
 }
 
 }  // namespace slicereuse::test

@@ -5,10 +5,14 @@
 // face f, its new face new_face[f] and the corner its corner 0 moved to (corner_shift[f]: input
 // corner j is output corner (j + corner_shift[f]) % 3). Deterministic in (mesh, seed) on every
 // platform (splitmix64, Fisher-Yates).
+// map_onto_shuffled: the exact SurfaceMap from `source` (a mesh with the faces of the shuffled
+// input, e.g. the family's base) onto the shuffled mesh: source vertex i lands on its new self,
+// as the corner with barycentric coordinate 1 of a face that uses it.
 #include <cstdint>
 #include <vector>
 
 #include "slicereuse/mesh.h"
+#include "slicereuse/surface_map.h"
 
 namespace slicereuse::test {
 
@@ -20,5 +24,7 @@ struct ShuffledMesh {
 };
 
 ShuffledMesh shuffle_mesh(const Mesh& mesh, uint64_t seed);
+
+SurfaceMap map_onto_shuffled(const Mesh& source, const ShuffledMesh& shuffled);
 
 }  // namespace slicereuse::test

@@ -27,28 +27,12 @@ struct Shuffled {
   SurfaceMap map;  // source vertex i -> its renumbered self on target
 };
 
-// `mesh` (a member with the faces of `source`) shuffled (shuffle_mesh.h), and the exact map
-// from `source` onto it: vertex i lands on its new self, as corner (1, 0, 0) of a face using it.
+// `mesh` (a member with the faces of `source`) shuffled, and the exact map onto it.
 Shuffled shuffle(const Mesh& source, const Mesh& mesh, uint64_t seed) {
   test::ShuffledMesh shuffled = test::shuffle_mesh(mesh, seed);
   Shuffled s;
+  s.map = test::map_onto_shuffled(source, shuffled);
   s.target = std::move(shuffled.mesh);
-  SurfaceMap& m = s.map;
-  const size_t nv = mesh.vertices();
-  m.face.resize(nv);
-  m.bary.assign(3 * nv, 0);
-  for (size_t f = 0; f < mesh.faces(); ++f)
-    for (size_t j = 0; j < 3; ++j) {
-      const uint32_t v = mesh.F[3 * f + j];
-      m.face[v] = shuffled.new_face[f];
-      std::fill_n(&m.bary[3 * v], 3, 0.0);
-      m.bary[3 * v + (j + shuffled.corner_shift[f]) % 3] = 1;
-    }
-  m.source = mesh_fingerprint(source);
-  m.target = mesh_fingerprint(s.target);
-  m.source_vertices = source.vertices();
-  m.target_vertices = nv;
-  m.source_faces = source.F;
   return s;
 }
 
