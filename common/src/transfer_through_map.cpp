@@ -115,12 +115,17 @@ Slices exact_through_map(const Slices& enc, const SurfaceMap& map, const Mesh& t
   return splice_resliced(std::move(traced), done_layer, std::move(planes), target, with_encoding, st, progress);
 }
 
+// Layers follow the target's top as in exact mode, so the result has direct slicing's layers:
+// the source's layers are carried up to it, and a taller target's extra layers, which no source
+// point reaches, are re-sliced directly (and counted so).
 Slices barycentric_through_map(const Slices& enc, const SurfaceMap& map, const Mesh& target, TransferStats& st,
                                const Progress& progress) {
+  std::vector<double> planes = target_planes(enc, target);
+  const size_t L = planes.size(), Le = std::min(L, enc.layers());
   Slices out = layout_of(enc);
   const EndsFromFaces ends{enc.edge.data(), enc.face.data(), map.source_faces.data()};
-  std::vector<double> deviation(enc.layers(), 0);
-  for_each_layer(enc.layers(), progress, [&](size_t k) {
+  std::vector<double> deviation(Le, 0);
+  for_each_layer(Le, progress, [&](size_t k) {
     const double zk = enc.layer_z[k];
     double worst = 0;
     for (size_t p = layer_point_begin(enc, k); p < layer_point_end(enc, k); ++p) {
@@ -137,9 +142,10 @@ Slices barycentric_through_map(const Slices& enc, const SurfaceMap& map, const M
     }
     deviation[k] = worst;
   });
-  st.transferred_layers = enc.layers();
   st.max_plane_deviation = deviation.empty() ? 0 : *std::max_element(deviation.begin(), deviation.end());
-  return out;
+  std::vector<size_t> done_layer(L, kNoLayer);
+  for (size_t k = 0; k < Le; ++k) done_layer[k] = k;
+  return splice_resliced(std::move(out), done_layer, std::move(planes), target, false, st, progress);
 }
 
 }  // namespace

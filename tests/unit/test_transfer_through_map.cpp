@@ -173,10 +173,21 @@ TEST(TransferThroughMap, LocalZEditLeavesMostLayersCertified) {
   for (size_t v = 0; v < member.vertices(); ++v)
     if (member.V[3 * v + 2] > member.V[3 * top + 2]) top = v;
   member.V[3 * top + 2] += 3.2 * h;
-  const TransferStats st = expect_exact_equals_direct(source, shuffle(base, member, 7));
+  const Shuffled s = shuffle(base, member, 7);
+  const TransferStats st = expect_exact_equals_direct(source, s);
   EXPECT_GE(st.resliced_layers, 3u);
   EXPECT_LE(st.resliced_layers, 4u);
   EXPECT_EQ(st.transferred_layers, source.layers());
+  // Barycentric mode has the same layers: the source's are carried, the extra ones re-sliced.
+  TransferStats bt;
+  const Slices bary =
+      transfer_through_map(source, s.map, s.target, TransferOptions(TransferMode::Barycentric, false), &bt);
+  const Slices direct = slice(s.target, h, source.z_start);
+  ASSERT_EQ(bary.layers(), direct.layers());
+  EXPECT_EQ(bt.transferred_layers, source.layers());
+  EXPECT_EQ(bt.resliced_layers, direct.layers() - source.layers());
+  for (size_t k = source.layers(); k < direct.layers(); ++k)
+    EXPECT_TRUE(raster(bary, k) == raster(direct, k)) << "layer " << k;
 }
 
 TEST(TransferThroughMap, BarycentricReportsPlaneDeviationWithinTheHeightChange) {

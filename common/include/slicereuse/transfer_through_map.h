@@ -5,7 +5,9 @@
 // Barycentric mode (the method as written): each encoded point p = (1-t) v_a + t v_b on source
 // edge (a, b) is carried through the map, (1-t) Gamma(a) + t Gamma(b), and placed on its layer's
 // plane z_k (in-plane constraint); max_plane_deviation reports how far the carried point was
-// from z_k before it was placed. The source's layers are kept as they are. The points lie inside
+// from z_k before it was placed. Layers run up to the target's own top (the same planes as
+// direct slicing of the target on the source's plate); a taller target's layers above the
+// source's have no points to carry and are re-sliced directly. The points lie inside
 // the target's faces, not on its edges, so this mode has no target encoding: it refuses
 // options.encoding = true.
 // Exact mode: the carried points tell which target faces each layer crosses (the faces of the
