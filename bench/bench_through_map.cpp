@@ -6,12 +6,7 @@
 // meaningful on a shared machine. Prints medians, traced/re-sliced layers and the ratios.
 // Usage: bench_through_map [--shape arch] [--faces 545000] [--height 14.484] [--thickness 0.001]
 //                          [--runs 5] [--members 3]
-#include <omp.h>
-
-#include <chrono>
 #include <cstdio>
-#include <functional>
-#include <vector>
 
 #include "bench_args.h"
 #include "family.h"
@@ -21,49 +16,32 @@
 
 using namespace slicereuse;
 
-namespace {
-
-double median_seconds(int runs, const std::function<Slices()>& job, size_t& points) {
-  std::vector<double> s;
-  for (int r = 0; r < runs; ++r) {
-    const auto t0 = std::chrono::steady_clock::now();
-    const Slices result = job();
-    s.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-    points = result.points();
-  }
-  return median_of(s);
-}
-
-}  // namespace
-
 int main(int argc, char** argv) {
   BenchArgs args = parse_bench_args(argc, argv);
   const ReuseBuffers reuse;
-  SliceOptions options;
-  options.thickness = args.thickness;
-  const Mesh base = test::make_family_base(args.family);
-  const Slices source = slice_layers(base, options);
-  std::printf("shape %s, %zu faces, %zu layers, threads %d, median of %d runs\n", args.family.shape.c_str(),
-              base.faces(), source.layers(), omp_get_max_threads(), args.runs);
+  const SlicedBase sliced = sliced_base(args);
+  const Mesh& base = sliced.base;
+  const Slices& source = sliced.source;
   std::printf("member  points      direct_s  exact_s  traced  resliced  bary_s  direct/exact  direct/bary\n");
   for (int m = 1; m <= args.members; ++m) {
     test::ShuffledMesh shuffled = test::shuffle_mesh(test::make_family_member(base, args.family, m), 1000 + m);
     const SurfaceMap map = test::map_onto_shuffled(base, shuffled);
     const Mesh& target = shuffled.mesh;
-    SliceOptions plate = options;
+    SliceOptions plate;
+    plate.thickness = source.thickness;
     plate.z_start = source.z_start;
-    size_t points = 0, exact_points = 0, bary_points = 0;
     TransferStats st;
-    const double direct = median_seconds(args.runs, [&] { return slice_layers(target, plate); }, points);
-    const double exact = median_seconds(
-        args.runs, [&] { return transfer_through_map(source, map, target, TransferMode::Exact, &st); }, exact_points);
-    const double bary = median_seconds(
-        args.runs,
-        [&] { return transfer_through_map(source, map, target, TransferOptions(TransferMode::Barycentric, false)); },
-        bary_points);
-    if (exact_points != points) std::printf("ERROR: exact transfer gave %zu points, direct %zu\n", exact_points, points);
-    std::printf("%6d  %10zu  %8.3f  %7.3f  %6zu  %8zu  %6.3f  %12.2f  %11.2f\n", m, points, direct, exact,
-                st.transferred_layers, st.resliced_layers, bary, direct / exact, direct / bary);
+    const Timing direct = time_runs(args.runs, [&] { return slice_layers(target, plate); });
+    const Timing exact =
+        time_runs(args.runs, [&] { return transfer_through_map(source, map, target, TransferMode::Exact, &st); });
+    const Timing bary = time_runs(args.runs, [&] {
+      return transfer_through_map(source, map, target, TransferOptions(TransferMode::Barycentric, false));
+    });
+    if (exact.points != direct.points)
+      std::printf("ERROR: exact transfer gave %zu points, direct slicing %zu\n", exact.points, direct.points);
+    std::printf("%6d  %10zu  %8.3f  %7.3f  %6zu  %8zu  %6.3f  %12.2f  %11.2f\n", m, direct.points, direct.seconds,
+                exact.seconds, st.transferred_layers, st.resliced_layers, bary.seconds, direct.seconds / exact.seconds,
+                direct.seconds / bary.seconds);
   }
   return 0;
 }

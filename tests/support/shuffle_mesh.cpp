@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <random>
 
 #include "slicereuse/error.h"
 #include "slicereuse/fingerprint.h"
@@ -9,27 +10,18 @@
 namespace slicereuse::test {
 namespace {
 
-struct SplitMix {
-  uint64_t state;
-  uint64_t next() {
-    uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-};
-
-std::vector<uint32_t> permutation(size_t n, SplitMix& rng) {
+// Fisher-Yates over mt19937_64, whose output the standard fixes (std::shuffle's is not).
+std::vector<uint32_t> permutation(size_t n, std::mt19937_64& rng) {
   std::vector<uint32_t> p(n);
   std::iota(p.begin(), p.end(), 0u);
-  for (size_t i = n; i > 1; --i) std::swap(p[i - 1], p[rng.next() % i]);
+  for (size_t i = n; i > 1; --i) std::swap(p[i - 1], p[rng() % i]);
   return p;
 }
 
 }  // namespace
 
 ShuffledMesh shuffle_mesh(const Mesh& mesh, uint64_t seed) {
-  SplitMix rng{seed};
+  std::mt19937_64 rng(seed);
   const size_t nv = mesh.vertices(), nf = mesh.faces();
   ShuffledMesh s;
   s.new_index = permutation(nv, rng);
@@ -40,7 +32,7 @@ ShuffledMesh shuffle_mesh(const Mesh& mesh, uint64_t seed) {
   for (size_t i = 0; i < nv; ++i)
     for (int d = 0; d < 3; ++d) s.mesh.V[3 * size_t(s.new_index[i]) + d] = mesh.V[3 * i + d];
   for (size_t f = 0; f < nf; ++f) {
-    s.corner_shift[f] = uint8_t(rng.next() % 3);
+    s.corner_shift[f] = uint8_t(rng() % 3);
     for (size_t j = 0; j < 3; ++j)
       s.mesh.F[3 * size_t(s.new_face[f]) + (j + s.corner_shift[f]) % 3] = s.new_index[mesh.F[3 * f + j]];
   }

@@ -4,7 +4,7 @@
 // Output: the shuffled mesh and where each input vertex went (new_index[i]) and, for each input
 // face f, its new face new_face[f] and the corner its corner 0 moved to (corner_shift[f]: input
 // corner j is output corner (j + corner_shift[f]) % 3). Deterministic in (mesh, seed) on every
-// platform (splitmix64, Fisher-Yates).
+// platform (mt19937_64, Fisher-Yates).
 // map_onto_shuffled: the exact SurfaceMap from `source` (a mesh with the faces of the shuffled
 // input, e.g. the family's base) onto the shuffled mesh: source vertex i lands on its new self,
 // as the corner with barycentric coordinate 1 of a face that uses it.
