@@ -52,5 +52,10 @@ Mesh make_family_base(const FamilyOptions& options);
 // above; index 0 returns the base unchanged. Deterministic in (base, options.seed,
 // options.z_change, index).
 Mesh make_family_member(const Mesh& base, const FamilyOptions& options, int index);
+// The deformation that make_family_member(base, options, index) applies to base's vertices,
+// applied to other points (3 per point), e.g. the vertices of another tessellation of the same
+// shape: the true images of a cross-parameterization test.
+std::vector<double> deform_like_family_member(const Mesh& base, const FamilyOptions& options, int index,
+                                              const std::vector<double>& points);
 
 }  // namespace slicereuse::test

@@ -36,10 +36,17 @@ struct ZBump {
 }  // namespace
 
 Mesh make_family_member(const Mesh& base, const FamilyOptions& o, int index) {
+  Mesh mesh = base;
+  mesh.V = deform_like_family_member(base, o, index, base.V);
+  return mesh;
+}
+
+std::vector<double> deform_like_family_member(const Mesh& base, const FamilyOptions& o, int index,
+                                              const std::vector<double>& points) {
   if (index < 0) throw Error("family: member index must be >= 0");
   if (base.V.empty()) throw Error("family: empty base mesh");
-  Mesh mesh = base;
-  if (index == 0) return mesh;
+  std::vector<double> out = points;
+  if (index == 0) return out;
 
   double lo[3], hi[3];
   for (int a = 0; a < 3; ++a) lo[a] = hi[a] = base.V[a];
@@ -87,10 +94,10 @@ Mesh make_family_member(const Mesh& base, const FamilyOptions& o, int index) {
     zbumps.push_back({c[0], c[1], 1 / (2 * sigma * sigma), rng.next() % 2 ? dz : -dz});
   }
 
-  double* V = mesh.V.data();
+  double* V = out.data();
 #pragma omp parallel for schedule(static)
-  for (long long i = 0; i < (long long)base.vertices(); ++i) {
-    const double* p = &base.V[3 * i];
+  for (long long i = 0; i < (long long)(points.size() / 3); ++i) {
+    const double* p = &points[3 * i];
     const double u = (p[2] - z0) / H, m = u - 0.5;
     const double x0 = (p[0] - cx) * (1 + sx0 + sx1 * m), y0 = (p[1] - cy) * (1 + sy0 + sy1 * m);
     const double th = rot + twist * m, c = std::cos(th), s = std::sin(th);
@@ -117,7 +124,7 @@ Mesh make_family_member(const Mesh& base, const FamilyOptions& o, int index) {
       V[3 * i + 2] = z0 + z;
     }
   }
-  return mesh;
+  return out;
 }
 
 }  // namespace slicereuse::test

@@ -1,0 +1,215 @@
+#include "slicereuse/lattice_registration.h"
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <cmath>
+
+#include "slicereuse/error.h"
+#include "slicereuse/vertex_normals.h"
+
+namespace slicereuse {
+
+DisplacementField::DisplacementField(const double lo[3], double spacing, const int dims[3], int components)
+    : h_(spacing), components_(components) {
+  for (int a = 0; a < 3; ++a) lo_[a] = lo[a], dims_[a] = std::max(2, dims[a]);
+  d_.assign(nodes() * size_t(components), 0.0);
+}
+
+void DisplacementField::cell_weights(const double p[3], uint32_t node[8], double w[8]) const {
+  int i[3];
+  double f[3];
+  for (int a = 0; a < 3; ++a) {
+    const double u = (p[a] - lo_[a]) / h_;
+    i[a] = std::clamp(int(std::floor(u)), 0, dims_[a] - 2);
+    f[a] = std::clamp(u - i[a], 0.0, 1.0);
+  }
+  for (int k = 0; k < 8; ++k) {
+    const int dx = k & 1, dy = (k >> 1) & 1, dz = k >> 2;
+    node[k] = uint32_t((size_t(i[2] + dz) * dims_[1] + (i[1] + dy)) * dims_[0] + (i[0] + dx));
+    w[k] = (dx ? f[0] : 1 - f[0]) * (dy ? f[1] : 1 - f[1]) * (dz ? f[2] : 1 - f[2]);
+  }
+}
+
+void DisplacementField::apply(const double p[3], double out[3]) const {
+  for (int a = 0; a < 3; ++a) out[a] = p[a];
+  if (d_.empty()) return;
+  uint32_t node[8];
+  double w[8];
+  cell_weights(p, node, w);
+  for (int k = 0; k < 8; ++k)
+    for (int c = 0; c < components_; ++c) out[c] += w[k] * d_[size_t(node[k]) * components_ + c];
+}
+
+namespace {
+
+// Lattice size and sample count: enough for the smooth deformations between family members,
+// small enough for a sparse factorization in milliseconds.
+constexpr double kNodes = 2500;
+constexpr size_t kSamples = 40000;
+
+inline double dot3(const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+}  // namespace
+
+DisplacementField register_on_lattice(const std::vector<double>& V, const std::vector<uint32_t>& F,
+                                      const SurfaceGrid& target, const std::vector<PointConstraint>& constraints,
+                                      bool in_plane, RegistrationStats* stats, const Progress& progress) {
+  const size_t nv = V.size() / 3;
+  const int C = in_plane ? 2 : 3;
+  // Lattice over the source's bounding box with about kNodes nodes, one cell of margin.
+  double lo[3], hi[3];
+  for (int a = 0; a < 3; ++a) lo[a] = hi[a] = V[a];
+  for (size_t i = 0; i < nv; ++i)
+    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], V[3 * i + a]), hi[a] = std::max(hi[a], V[3 * i + a]);
+  for (const PointConstraint& c : constraints)
+    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], c.source[a]), hi[a] = std::max(hi[a], c.source[a]);
+  const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2], 1e-9});
+  double h = extent / 4;
+  auto node_count = [&](double step) {
+    double n = 1;
+    for (int a = 0; a < 3; ++a) n *= std::ceil((hi[a] - lo[a]) / step) + 3;
+    return n;
+  };
+  while (node_count(h * 0.95) <= kNodes) h *= 0.95;
+  int dims[3];
+  for (int a = 0; a < 3; ++a) {
+    dims[a] = int(std::ceil((hi[a] - lo[a]) / h)) + 3;
+    lo[a] -= h;
+  }
+  DisplacementField field(lo, h, dims, C);
+  const size_t N = field.nodes();
+  const int* D = field.dims();
+
+  // Samples: every vertex up to kSamples, else an even stride; weights are vertex areas.
+  const size_t stride = std::max<size_t>(1, (nv + kSamples - 1) / kSamples);
+  std::vector<double> area(nv, 0.0);
+  for (size_t f = 0; f < F.size(); f += 3) {
+    const double *a = &V[3 * size_t(F[f])], *b = &V[3 * size_t(F[f + 1])], *c = &V[3 * size_t(F[f + 2])];
+    const double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+    const double A = std::sqrt(dot3(n, n)) / 6;
+    for (int j = 0; j < 3; ++j) area[F[f + j]] += A;
+  }
+  std::vector<uint32_t> sample;
+  double total_area = 0;
+  for (size_t i = 0; i < nv; i += stride)
+    if (area[i] > 0) sample.push_back(uint32_t(i)), total_area += area[i];
+  if (sample.empty()) throw Error("cross-parameterization: the source mesh has no area");
+  const size_t ns = sample.size();
+  std::vector<uint32_t> s_node(8 * ns);
+  std::vector<double> s_w(8 * ns);
+  for (size_t s = 0; s < ns; ++s) field.cell_weights(&V[3 * size_t(sample[s])], &s_node[8 * s], &s_w[8 * s]);
+  std::vector<std::array<uint32_t, 8>> c_node(constraints.size());
+  std::vector<std::array<double, 8>> c_w(constraints.size());
+  for (size_t k = 0; k < constraints.size(); ++k) field.cell_weights(constraints[k].source.data(), c_node[k].data(), c_w[k].data());
+
+  // The normal equations' matrix is the same for every coordinate and, since every sample
+  // keeps its weight (an unmatched one is held where it is), for every iteration of a level:
+  // one factorization per level, then two or three back substitutions per iteration.
+  const double constraint_weight = 0.05;
+  std::vector<Eigen::Triplet<double>> data;
+  data.reserve((ns + constraints.size()) * 64);
+  auto add_data = [&](const uint32_t* node, const double* w, double W) {
+    for (int k = 0; k < 8; ++k)
+      for (int l = 0; l < 8; ++l)
+        if (w[k] != 0 && w[l] != 0) data.emplace_back(int(node[k]), int(node[l]), W * w[k] * w[l]);
+  };
+  for (size_t s = 0; s < ns; ++s) add_data(&s_node[8 * s], &s_w[8 * s], area[sample[s]] / total_area);
+  for (size_t k = 0; k < constraints.size(); ++k) add_data(c_node[k].data(), c_w[k].data(), constraint_weight);
+  const Eigen::Index n_nodes = Eigen::Index(N);
+  Eigen::SparseMatrix<double> data_matrix(n_nodes, n_nodes), bend(n_nodes, n_nodes), identity(n_nodes, n_nodes);
+  data_matrix.setFromTriplets(data.begin(), data.end());
+  data = {};
+  // Bending energy: squared second differences along every lattice line, per coordinate.
+  std::vector<Eigen::Triplet<double>> bt;
+  for (size_t n = 0; n < N; ++n) {
+    const int c[3] = {int(n % D[0]), int(n / D[0] % D[1]), int(n / (size_t(D[0]) * D[1]))};
+    for (int a = 0; a < 3; ++a) {
+      if (c[a] == 0 || c[a] == D[a] - 1) continue;
+      const size_t e = a == 0 ? 1 : a == 1 ? size_t(D[0]) : size_t(D[0]) * D[1];
+      const size_t idx[3] = {n - e, n, n + e};
+      const double coef[3] = {1, -2, 1};
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) bt.emplace_back(int(idx[i]), int(idx[j]), coef[i] * coef[j]);
+    }
+  }
+  bend.setFromTriplets(bt.begin(), bt.end());
+  identity.setIdentity();
+
+  const double alpha0 = 1.0 / double(N);
+  const double alphas[] = {100 * alpha0, 10 * alpha0, alpha0, 0.1 * alpha0};
+  const int per_level = 3;
+  const int total_iterations = int(std::size(alphas)) * per_level;
+  const double beta = 0.1;     // point-to-point share, keeps sliding along walls in check
+  const double min_dot = 0.5;  // normals within 60 degrees
+  double trust = std::max(0.15 * std::sqrt(3.0) * extent, 10 * target.mean_edge());
+  const double trust_floor = 3 * target.mean_edge();
+
+  std::vector<double> P(V.size());
+  Eigen::MatrixXd rhs(Eigen::Index(N), C), values(Eigen::Index(N), C);
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
+  RegistrationStats st;
+  int iteration = 0;
+  for (double alpha : alphas) {
+    solver.compute(data_matrix + alpha * bend + (1e-9 * alpha) * identity);
+    if (solver.info() != Eigen::Success)
+      throw Error("cross-parameterization: the registration system could not be factorized");
+    for (int it = 0; it < per_level; ++it, ++iteration) {
+      report_progress(progress, double(iteration) / total_iterations, "registering");
+#pragma omp parallel for schedule(static)
+      for (long long i = 0; i < (long long)nv; ++i) field.apply(&V[3 * i], &P[3 * i]);
+      const std::vector<double> normal = vertex_normals(P, F);
+      // Each sample's goal: the current position moved toward its pair, point-to-plane plus a
+      // little point-to-point (the linearized goal of that energy), or kept when unpaired.
+      std::vector<double> goal(3 * ns);
+      double sq = 0, matched = 0;
+#pragma omp parallel for schedule(dynamic, 256) reduction(+ : sq, matched)
+      for (long long s = 0; s < (long long)ns; ++s) {
+        const size_t i = sample[s];
+        const double* p = &P[3 * i];
+        const SurfacePoint q = in_plane ? target.nearest_on_level(p, V[3 * i + 2], &normal[3 * i], min_dot, trust)
+                                        : target.nearest_on_surface(p, &normal[3 * i], min_dot, trust);
+        double* g = &goal[3 * s];
+        for (int a = 0; a < 3; ++a) g[a] = p[a];
+        if (q.face == kNoFace) continue;
+        const double W = area[i] / total_area;
+        const double r[3] = {q.xyz[0] - p[0], q.xyz[1] - p[1], in_plane ? 0.0 : q.xyz[2] - p[2]};
+        sq += W * dot3(r, r);
+        matched += W;
+        const double* tn = &target.face_normals()[3 * size_t(q.face)];
+        double n[3] = {tn[0], tn[1], in_plane ? 0.0 : tn[2]};
+        // In the plane, the level set's normal is the face normal's xy part; on nearly
+        // horizontal faces it is unreliable and the point-to-point term takes over.
+        const double len = std::sqrt(dot3(n, n));
+        const double gamma = in_plane ? std::min(1.0, len / 0.3) : 1.0;
+        if (len > 0)
+          for (double& x : n) x /= len;
+        const double rn = dot3(n, r);
+        for (int a = 0; a < 3; ++a) g[a] += (gamma * n[a] * rn + beta * r[a]) / (gamma + beta);
+      }
+      rhs.setZero();
+      for (size_t s = 0; s < ns; ++s) {
+        const double W = area[sample[s]] / total_area;
+        const size_t i = sample[s];
+        for (int k = 0; k < 8; ++k)
+          for (int c = 0; c < C; ++c) rhs(s_node[8 * s + k], c) += W * s_w[8 * s + k] * (goal[3 * s + c] - V[3 * i + c]);
+      }
+      for (size_t k = 0; k < constraints.size(); ++k)
+        for (int j = 0; j < 8; ++j)
+          for (int c = 0; c < C; ++c)
+            rhs(c_node[k][j], c) += constraint_weight * c_w[k][j] * (constraints[k].target[c] - constraints[k].source[c]);
+      st.rms = matched > 0 ? std::sqrt(sq / matched) : 0;
+      st.matched = matched;
+      st.iterations = iteration + 1;
+      values = solver.solve(rhs);
+      for (size_t n = 0; n < N; ++n)
+        for (int c = 0; c < C; ++c) field.values()[n * C + c] = values(Eigen::Index(n), c);
+      trust = std::max(trust_floor, std::min(trust, 4 * st.rms));
+    }
+  }
+  if (stats) *stats = st;
+  return field;
+}
+
+}  // namespace slicereuse
