@@ -108,8 +108,24 @@ double angle(const double* a, const double* b, const double* c) {  // at a
   return std::atan2(std::sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]), u[0] * v[0] + u[1] * v[1] + u[2] * v[2]);
 }
 
+// Whether the image of source face f is folded over: its normal faces away from the target's
+// normal where it lands (that of the target face nearest to the image's centroid), or it has
+// no area. -1 for a degenerate source face, which has no orientation to keep.
+int folded(const Mesh& source, const SurfaceGrid& grid, const std::vector<double>& image, size_t f) {
+  const uint32_t* F = &source.F[3 * f];
+  const double* s[3] = {&source.V[3 * size_t(F[0])], &source.V[3 * size_t(F[1])], &source.V[3 * size_t(F[2])]};
+  const double* m[3] = {&image[3 * size_t(F[0])], &image[3 * size_t(F[1])], &image[3 * size_t(F[2])]};
+  double ns[3], ni[3];
+  if (cross_area(s, ns) == 0) return -1;
+  cross_area(m, ni);
+  const double centroid[3] = {(m[0][0] + m[1][0] + m[2][0]) / 3, (m[0][1] + m[1][1] + m[2][1]) / 3,
+                              (m[0][2] + m[1][2] + m[2][2]) / 3};
+  const double* nt = &grid.face_normals()[3 * size_t(grid.nearest_on_surface(centroid, nullptr, -2, kInf).face)];
+  return !(ni[0] * nt[0] + ni[1] * nt[1] + ni[2] * nt[2] > 0);
+}
+
 // Height error, folded triangles, area and angle distortion of the map (image: 3 per vertex).
-void measure(const Mesh& source, const SurfaceMap& map, const SurfaceGrid& grid, const std::vector<double>& image,
+void measure(const Mesh& source, const SurfaceGrid& grid, const std::vector<double>& image,
              CrossParamQuality& q) {
   const size_t nv = source.vertices(), nf = source.faces();
   double max_dz = 0, sum_dz2 = 0;
@@ -122,25 +138,20 @@ void measure(const Mesh& source, const SurfaceMap& map, const SurfaceGrid& grid,
   q.rms_height_error = nv ? std::sqrt(sum_dz2 / double(nv)) : 0;
   uint64_t flipped = 0, measured = 0;
   double area_sum = 0, angle_sum = 0;
-  const std::vector<double>& tn = grid.face_normals();
 #pragma omp parallel for reduction(+ : flipped, measured, area_sum, angle_sum) schedule(static)
   for (long long f = 0; f < (long long)nf; ++f) {
     const uint32_t* F = &source.F[3 * f];
     const double* s[3] = {&source.V[3 * size_t(F[0])], &source.V[3 * size_t(F[1])], &source.V[3 * size_t(F[2])]};
     const double* m[3] = {&image[3 * size_t(F[0])], &image[3 * size_t(F[1])], &image[3 * size_t(F[2])]};
-    double ns[3], ni[3];
-    const double as = cross_area(s, ns), ai = cross_area(m, ni);
-    if (as == 0) continue;  // a degenerate source triangle has no orientation to keep
+    const int fold = folded(source, grid, image, size_t(f));
+    if (fold < 0) continue;
     ++measured;
-    // The target's orientation where the triangle lands: the normals of the faces its corners
-    // map to, summed. The image is folded over when it faces the other way (or has no area).
-    double nt[3] = {0, 0, 0};
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k) nt[k] += tn[3 * size_t(map.face[F[j]]) + k];
-    if (!(ni[0] * nt[0] + ni[1] * nt[1] + ni[2] * nt[2] > 0)) {
+    if (fold) {
       ++flipped;
       continue;
     }
+    double ns[3], ni[3];
+    const double as = cross_area(s, ns), ai = cross_area(m, ni);
     area_sum += std::abs(std::log(ai / as));
     for (int j = 0; j < 3; ++j)
       angle_sum += std::abs(angle(m[j], m[(j + 1) % 3], m[(j + 2) % 3]) - angle(s[j], s[(j + 1) % 3], s[(j + 2) % 3]));
@@ -215,10 +226,9 @@ CrossParamResult cross_parameterize(const Mesh& source, const Mesh& target, cons
   // near this height here (a lower ridge top) and the nearest point wins.
   const double tolerance = 2 * grid.mean_edge();
   const double reach = std::max(10 * reg.rms, 10 * grid.mean_edge());
-  uint64_t far = 0;
-#pragma omp parallel for schedule(dynamic, 512) reduction(+ : far)
-  for (long long i = 0; i < (long long)nv; ++i) {
-    double p[3] = {moved[3 * i], moved[3 * i + 1], in_plane ? source.V[3 * i + 2] : moved[3 * i + 2]};
+  // Places source vertex i's image at the target point for p (p's z is the vertex's own height
+  // in the plane); false when nothing faces the same way within reach.
+  auto place = [&](size_t i, const double p[3]) {
     const double* n = &normal[3 * i];
     const bool has_normal = n[0] != 0 || n[1] != 0 || n[2] != 0;
     SurfacePoint best = grid.nearest_on_surface(p, has_normal ? n : nullptr, 0.0, reach);
@@ -226,16 +236,58 @@ CrossParamResult cross_parameterize(const Mesh& source, const Mesh& target, cons
       const SurfacePoint level = grid.nearest_on_level(p, p[2], has_normal ? n : nullptr, 0.0, reach);
       if (level.face != kNoFace && (best.face == kNoFace || level.distance <= best.distance + tolerance)) best = level;
     }
-    if (best.face == kNoFace) {
-      ++far;
-      best = grid.nearest_on_surface(p, nullptr, -2, kInf);
-    }
+    const bool found = best.face != kNoFace;
+    if (!found) best = grid.nearest_on_surface(p, nullptr, -2, kInf);
     map.face[i] = best.face;
     for (int j = 0; j < 3; ++j) map.bary[3 * i + j] = best.bary[j], image[3 * i + j] = best.xyz[j];
+    return found;
+  };
+  uint64_t far = 0;
+#pragma omp parallel for schedule(dynamic, 512) reduction(+ : far)
+  for (long long i = 0; i < (long long)nv; ++i) {
+    const double p[3] = {moved[3 * i], moved[3 * i + 1], in_plane ? source.V[3 * i + 2] : moved[3 * i + 2]};
+    far += !place(size_t(i), p);
+  }
+  // Local untangling: where independent projections of neighbours fold a small triangle over
+  // (tight level-set curves, the soft height zone at a ridge top), each corner of a folded
+  // triangle is placed again from the mean image of its neighbours (a Laplacian step).
+  const size_t nf = source.faces();
+  std::vector<uint8_t> bad(nf);
+  for (int pass = 0; pass < 8; ++pass) {
+#pragma omp parallel for schedule(dynamic, 4096)
+    for (long long f = 0; f < (long long)nf; ++f) bad[f] = folded(source, grid, image, size_t(f)) > 0;
+    std::vector<uint8_t> mark(nv, 0);
+    std::vector<uint32_t> touched;
+    for (size_t f = 0; f < nf; ++f)
+      if (bad[f])
+        for (int j = 0; j < 3; ++j) {
+          const uint32_t v = source.F[3 * f + j];
+          if (!mark[v]) mark[v] = 1, touched.push_back(v);
+        }
+    // The mean image of each marked vertex's neighbours (its one-ring, through all its faces).
+    std::vector<double> sum(3 * nv, 0.0);
+    std::vector<uint32_t> count(nv, 0);
+    for (size_t f = 0; f < nf; ++f)
+      for (int j = 0; j < 3; ++j) {
+        const uint32_t v = source.F[3 * f + j];
+        if (!mark[v]) continue;
+        for (int k = 1; k < 3; ++k)
+          for (int a = 0; a < 3; ++a) sum[3 * size_t(v) + a] += image[3 * size_t(source.F[3 * f + (j + k) % 3]) + a];
+        count[v] += 2;
+      }
+    if (touched.empty()) break;
+#pragma omp parallel for schedule(dynamic, 64)
+    for (long long k = 0; k < (long long)touched.size(); ++k) {
+      const size_t v = touched[k];
+      double p[3];
+      for (int a = 0; a < 3; ++a) p[a] = sum[3 * v + a] / count[v];
+      if (in_plane) p[2] = source.V[3 * v + 2];
+      place(v, p);
+    }
   }
 
   report_progress(progress, 0.8, "measuring");
-  measure(source, map, grid, image, q);
+  measure(source, grid, image, q);
   // Without landmarks nothing but the registration vouches for the correspondence: refuse a
   // result where much of the source found no matching surface or the image folds over.
   const double far_share = double(far) / double(std::max<size_t>(1, nv));

@@ -107,7 +107,7 @@ DisplacementField register_on_lattice(const std::vector<double>& V, const std::v
   // The normal equations' matrix is the same for every coordinate and, since every sample
   // keeps its weight (an unmatched one is held where it is), for every iteration of a level:
   // one factorization per level, then two or three back substitutions per iteration.
-  const double constraint_weight = 0.05;
+  const double constraint_weight = 0.5;
   std::vector<Eigen::Triplet<double>> data;
   data.reserve((ns + constraints.size()) * 64);
   auto add_data = [&](const uint32_t* node, const double* w, double W) {

@@ -69,36 +69,26 @@ const void* section_data(const Slices& s, uint32_t id) {
 
 }  // namespace
 
-void write_binary(const std::string& path, const Slices& s, FileKind kind,
-                  const Progress& progress) {
-  const std::vector<uint32_t> ids = section_ids(kind);
-  const uint64_t L = s.layers(), C = s.contours(), P = s.points();
-  const size_t table_end = kFixedHeaderBytes + kSectionEntryBytes * ids.size();
+void write_container(const std::string& path, uint32_t kind, const unsigned char fields[kKindFieldBytes],
+                     const std::vector<SectionOut>& sections, const Progress& progress) {
+  const size_t table_end = kFixedHeaderBytes + kSectionEntryBytes * sections.size();
   std::vector<unsigned char> head(table_end + 8, 0);
   std::memcpy(head.data(), kBinaryMagic, sizeof kBinaryMagic);
   put<uint32_t>(head, 8, kFormatVersion);
-  put<uint32_t>(head, 12, uint32_t(kind));
-  put<double>(head, 16, s.thickness);
-  put<double>(head, 24, s.z_start);
-  put<uint64_t>(head, 32, L);
-  put<uint64_t>(head, 40, C);
-  put<uint64_t>(head, 48, P);
-  if (kind == FileKind::Encoding) {
-    put<uint64_t>(head, 56, s.fingerprint.faces);
-    put<uint64_t>(head, 64, s.fingerprint.hash);
-  }
-  put<uint32_t>(head, 72, uint32_t(ids.size()));
+  put<uint32_t>(head, 12, kind);
+  std::memcpy(head.data() + 16, fields, kKindFieldBytes);
+  put<uint32_t>(head, 72, uint32_t(sections.size()));
 
   uint64_t offset = head.size(), total = 0;
-  for (size_t i = 0; i < ids.size(); ++i) {
-    const uint64_t bytes = section_bytes(ids[i], L, C, P);
+  for (size_t i = 0; i < sections.size(); ++i) {
+    const SectionOut& sec = sections[i];
     const size_t at = kFixedHeaderBytes + kSectionEntryBytes * i;
-    put<uint32_t>(head, at, ids[i]);
+    put<uint32_t>(head, at, sec.id);
     put<uint64_t>(head, at + 8, offset);
-    put<uint64_t>(head, at + 16, bytes);
-    put<uint64_t>(head, at + 24, XXH3_64bits(section_data(s, ids[i]), bytes));
-    offset = align8(offset + bytes);
-    total += bytes;
+    put<uint64_t>(head, at + 16, sec.bytes);
+    put<uint64_t>(head, at + 24, XXH3_64bits(sec.data, sec.bytes));
+    offset = align8(offset + sec.bytes);
+    total += sec.bytes;
   }
   put<uint64_t>(head, table_end, XXH3_64bits(head.data(), table_end));
 
@@ -106,18 +96,35 @@ void write_binary(const std::string& path, const Slices& s, FileKind kind,
   file.write(head.data(), head.size());
   const char zeros[8] = {};
   uint64_t done = 0;
-  for (uint32_t id : ids) {
-    const auto* data = static_cast<const unsigned char*>(section_data(s, id));
-    const uint64_t bytes = section_bytes(id, L, C, P);
-    for (uint64_t at = 0; at < bytes; at += kPieceBytes) {
-      const uint64_t n = std::min(kPieceBytes, bytes - at);
+  for (const SectionOut& sec : sections) {
+    const auto* data = static_cast<const unsigned char*>(sec.data);
+    for (uint64_t at = 0; at < sec.bytes; at += kPieceBytes) {
+      const uint64_t n = std::min(kPieceBytes, sec.bytes - at);
       file.write(data + at, n);
       done += n;
       report_progress(progress, total ? double(done) / double(total) : 1.0, "writing");
     }
-    file.write(zeros, align8(bytes) - bytes);
+    file.write(zeros, align8(sec.bytes) - sec.bytes);
   }
   file.commit();
+}
+
+void write_binary(const std::string& path, const Slices& s, FileKind kind,
+                  const Progress& progress) {
+  const uint64_t L = s.layers(), C = s.contours(), P = s.points();
+  std::vector<unsigned char> fields(kKindFieldBytes, 0);  // header bytes 16..72
+  put<double>(fields, 0, s.thickness);
+  put<double>(fields, 8, s.z_start);
+  put<uint64_t>(fields, 16, L);
+  put<uint64_t>(fields, 24, C);
+  put<uint64_t>(fields, 32, P);
+  if (kind == FileKind::Encoding) {
+    put<uint64_t>(fields, 40, s.fingerprint.faces);
+    put<uint64_t>(fields, 48, s.fingerprint.hash);
+  }
+  std::vector<SectionOut> sections;
+  for (uint32_t id : section_ids(kind)) sections.push_back({id, section_data(s, id), section_bytes(id, L, C, P)});
+  write_container(path, uint32_t(kind), fields.data(), sections, progress);
 }
 
 }  // namespace slicereuse::detail

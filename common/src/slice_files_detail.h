@@ -40,6 +40,18 @@ std::vector<uint32_t> section_ids(FileKind kind);
 uint64_t section_bytes(uint32_t id, uint64_t layers, uint64_t contours, uint64_t points);
 inline uint64_t align8(uint64_t n) { return (n + 7) & ~uint64_t(7); }
 
+// Writes a binary container atomically: the fixed header with `kind` and the kind's own header
+// bytes [16, 72) (`fields`), the section table with checksums, then the sections in order.
+// Used by the slice files and the map files (map_files.cpp, kind 3).
+constexpr size_t kKindFieldBytes = 56;
+struct SectionOut {
+  uint32_t id;
+  const void* data;
+  uint64_t bytes;
+};
+void write_container(const std::string& path, uint32_t kind, const unsigned char fields[kKindFieldBytes],
+                     const std::vector<SectionOut>& sections, const Progress& progress);
+
 // s has been validated and carries the data of `kind`.
 void write_text(const std::string& path, const Slices& s, FileKind kind, const Progress& progress);
 void write_binary(const std::string& path, const Slices& s, FileKind kind,

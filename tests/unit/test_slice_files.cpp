@@ -17,10 +17,12 @@
 #include <vector>
 
 #include "slicereuse/atomic_file.h"
+#include "error_of.h"
 #include "slicereuse/error.h"
 #include "slicereuse/slice_files.h"
 
 using namespace slicereuse;
+using slicereuse::test::error_of;
 namespace fs = std::filesystem;
 
 namespace {
@@ -111,24 +113,6 @@ void spit(const std::string& path, const std::string& bytes) {
   fs::remove(path);
   std::ofstream(path, std::ios::binary) << bytes;
 }
-
-// The message of the Error that f throws ("" and a failure when it throws none).
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no Error thrown";
-  return "";
-}
-
-#define EXPECT_ERROR(expr, substring)                                 \
-  do {                                                                \
-    const std::string message_ = error_of([&] { (void)(expr); });     \
-    EXPECT_NE(message_.find(substring), std::string::npos)            \
-        << "message: " << message_ << "\nexpected to contain: " << substring; \
-  } while (0)
 
 class SliceFiles : public ::testing::Test {
  protected:

@@ -1,0 +1,105 @@
+// PickPoints (.pp) files as MeshLab 2020.09's editpickpoints writes them (attributes in any
+// order, active="0/1", older files without active), matched by name; every damage is reported.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "slicereuse/error.h"
+#include "slicereuse/pickpoints_file.h"
+
+using namespace slicereuse;
+namespace fs = std::filesystem;
+
+namespace {
+
+class PickPoints : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    char name[] = "/tmp/slicereuse-pp-XXXXXX";
+    ASSERT_NE(::mkdtemp(name), nullptr);
+    dir = name;
+  }
+  void TearDown() override { fs::remove_all(dir); }
+  std::string file(const std::string& name, const std::string& points) const {
+    const std::string p = dir + "/" + name;
+    std::ofstream(p) << "<!DOCTYPE PickedPoints>\n<PickedPoints>\n <DocumentData>\n  <DateTime time=\"10:00:00\" "
+                        "date=\"2026-11-23\"/>\n  <User name=\"me\"/>\n  <DataFileName name=\"a.ply\"/>\n  "
+                        "<templateName name=\"\"/>\n </DocumentData>\n"
+                     << points << "</PickedPoints>\n";
+    return p;
+  }
+  std::string error(const std::string& points) const {
+    try {
+      read_pickpoints_file(file("e.pp", points));
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return "(no error)";
+  }
+  std::string dir;
+};
+
+}  // namespace
+
+TEST_F(PickPoints, ReadsMeshLabFiles) {
+  const auto pts = read_pickpoints_file(file(
+      "a.pp", " <point y=\"2.5\" x=\"-1\" active=\"1\" z=\"1e-3\" name=\"tip\"/>\n"
+              " <point name='a &amp; b' z=\"3\" active=\"0\" x=\"4\" y=\"5\"/>\n"
+              " <!-- <point x=\"9\" y=\"9\" z=\"9\" name=\"comment\"/> -->\n"
+              " <point x=\"7\" y=\"8\" z=\"9\" name=\"old&#65;\"/>\n"));
+  ASSERT_EQ(pts.size(), 3u);
+  EXPECT_EQ(pts[0].name, "tip");
+  EXPECT_EQ(pts[0].xyz[0], -1);
+  EXPECT_EQ(pts[0].xyz[1], 2.5);
+  EXPECT_EQ(pts[0].xyz[2], 1e-3);
+  EXPECT_TRUE(pts[0].active);
+  EXPECT_EQ(pts[1].name, "a & b");
+  EXPECT_FALSE(pts[1].active);
+  EXPECT_EQ(pts[2].name, "oldA");
+  EXPECT_TRUE(pts[2].active);  // files without active: active
+}
+
+TEST_F(PickPoints, MatchesByNameSkippingInactivePoints) {
+  const std::string s = file("s.pp", " <point x=\"0\" y=\"0\" z=\"0\" name=\"a\"/>\n <point x=\"1\" y=\"0\" z=\"0\" name=\"b\"/>\n"
+                                     " <point x=\"2\" y=\"0\" z=\"0\" name=\"c\"/>\n <point x=\"3\" y=\"0\" z=\"0\" name=\"d\"/>\n");
+  const std::string t = file("t.pp", " <point x=\"12\" y=\"0\" z=\"0\" name=\"c\"/>\n <point x=\"10\" y=\"0\" z=\"0\" name=\"a\"/>\n"
+                                     " <point x=\"13\" y=\"0\" z=\"0\" name=\"d\" active=\"0\"/>\n <point x=\"11\" y=\"0\" z=\"0\" name=\"b\"/>\n");
+  const LandmarkPairs p = landmark_pairs(s, t);
+  ASSERT_EQ(p.names, (std::vector<std::string>{"a", "b", "c"}));
+  for (size_t k = 0; k < 3; ++k) EXPECT_EQ(p.target[k][0], p.source[k][0] + 10);
+  try {
+    landmark_pairs(s, t, 4);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("only 3 of the 4 active points"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("unmatched: 'd'"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(PickPoints, DamageIsReportedClearly) {
+  EXPECT_NE(error(" <point x=\"nan\" y=\"0\" z=\"0\" name=\"a\"/>\n").find("x = 'nan' is not a finite number"), std::string::npos);
+  EXPECT_NE(error(" <point x=\"1\" y=\"abc\" z=\"0\" name=\"a\"/>\n").find("y = 'abc' is not a finite number"), std::string::npos);
+  EXPECT_NE(error(" <point x=\"1\" y=\"0\" name=\"a\"/>\n").find("point 'a' has no z attribute"), std::string::npos);
+  EXPECT_NE(error(" <point x=\"1\" y=\"0\" z=\"0\"/>\n").find("without a name"), std::string::npos);
+  EXPECT_NE(error(" <point x=\"1\" y=\"0\" z=\"0\" name=\"a\"/>\n <point x=\"2\" y=\"0\" z=\"0\" name=\"a\"/>\n")
+                .find("line 10: two active points are named 'a'"),
+            std::string::npos);
+  EXPECT_NE(error(" <point x=\"1\" y=\"0\" z=\"0\" name=\"a\n").find("malformed XML"), std::string::npos);
+  EXPECT_NE(error(" <point x=1 y=\"0\" z=\"0\" name=\"a\"/>\n").find("is not quoted"), std::string::npos);
+  const std::string p = dir + "/x.pp";
+  std::ofstream(p) << "<Other><point x=\"1\" y=\"0\" z=\"0\" name=\"a\"/></Other>";
+  try {
+    read_pickpoints_file(p);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("not a MeshLab PickPoints file"), std::string::npos) << e.what();
+  }
+  try {
+    read_pickpoints_file(dir + "/missing.pp");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot open the PickPoints file"), std::string::npos) << e.what();
+  }
+}
