@@ -126,7 +126,8 @@ void check_family(const Slices& encoding, const Mesh& mesh) {
   if (fp != encoding.fingerprint)
     throw Error("the target mesh's faces differ from those of the mesh the encoding was made from (encoding: " +
                 describe_fingerprint(encoding.fingerprint) + "; target: " + describe_fingerprint(fp) +
-                "); a cross-parameterization map is needed for a target with other connectivity");
+                "); a target with other connectivity needs a cross-parameterization map (map file from Cross-Parameterize "
+                "Meshes)");
 }
 
 template <class Ends>
