@@ -10,11 +10,12 @@
 
 namespace slicereuse::plugin {
 
-// The four filters, called by run_filter.
+// The filters, called by run_filter.
 Result run_slice(const ParamValues& values, Host& host);
 Result run_transfer(const ParamValues& values, Host& host);
 Result run_export_masks(const ParamValues& values, Host& host);
 Result run_compare_masks(const ParamValues& values, Host& host);
+Result run_cross_parameterize(const ParamValues& values, Host& host);
 
 // Maps progress of one phase onto [from, to] of the whole filter.
 Progress sub_progress(const Progress& progress, double from, double to);
