@@ -102,6 +102,52 @@ def test_barycentric_transfer_masks(mapped, request):
     assert c["min_similarity"] >= MIN_BARYCENTRIC_S, f"worst layer {c['worst_layer']}"
 
 
+def _write_pp(path, names, points):
+    """A MeshLab PickPoints file with the given named points."""
+    rows = "".join(f' <point x="{float(x)!r}" y="{float(y)!r}" z="{float(z)!r}" active="1" name="{n}"/>\n'
+                   for n, (x, y, z) in zip(names, points))
+    path.write_text(f"<!DOCTYPE PickedPoints>\n<PickedPoints>\n{rows}</PickedPoints>\n")
+    return path
+
+
+def test_landmarks_from_pickpoints_files(pymeshlab, make_family, tmp_path):
+    """Landmarks picked in MeshLab (.pp, matched by name; listed in another order on the target)
+    steer the map; exact transfer through it still equals direct slicing of the target."""
+    plain = make_family("arch", 2, faces=6000)
+    shuffled = make_family("arch", 2, faces=6000, shuffle=True)
+    ms = pymeshlab.MeshSet()
+    ms.load_new_mesh(str(plain[0]))
+    source_v = ms.current_mesh().vertex_matrix()
+    ms.load_new_mesh(str(plain[1]))  # member 1 before renumbering: true images of source vertices
+    true_v = ms.current_mesh().vertex_matrix()
+    picks = list(range(0, len(source_v), len(source_v) // 8))[:8]
+    names = [f"p{i}" for i in picks]
+    _write_pp(tmp_path / "s.pp", names, [source_v[i] for i in picks])
+    _write_pp(tmp_path / "t.pp", names[::-1], [true_v[i] for i in picks][::-1])
+    ms.load_new_mesh(str(shuffled[1]))
+    target = ms.current_mesh_id()
+    ms.set_current_mesh(0)
+    ms.apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS, encoding_file=str(tmp_path / "s.srb"))
+    q = ms.apply_filter("cross_parameterize_meshes", source_mesh=0, target_mesh=target,
+                        source_landmarks=str(tmp_path / "s.pp"), target_landmarks=str(tmp_path / "t.pp"),
+                        map_file=str(tmp_path / "st.srb"))
+    assert q["flipped_triangles"] == 0 and q["genus"] == 0
+    t = ms.apply_filter("transfer_slicing_to_mesh", encoding_file=str(tmp_path / "s.srb"), target_mesh=target,
+                        map_file=str(tmp_path / "st.srb"), contour_file=str(tmp_path / "t.ctr"))
+    ms.set_current_mesh(target)
+    d = ms.apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS, z_start=0.0,
+                        contour_file=str(tmp_path / "d.ctr"))
+    assert t["transferred_layers"] > 0 and (t["points"], t["layers"]) == (d["points"], d["layers"])
+    # Landmark files whose names do not match are refused, naming the files and the names.
+    _write_pp(tmp_path / "other.pp", [f"q{i}" for i in picks], [true_v[i] for i in picks])
+    with pytest.raises(pymeshlab.PyMeshLabException, match="only 0 of the 8 active points .*other.pp"):
+        ms.apply_filter("cross_parameterize_meshes", source_mesh=0, target_mesh=target,
+                        source_landmarks=str(tmp_path / "s.pp"), target_landmarks=str(tmp_path / "other.pp"),
+                        map_file=str(tmp_path / "x.map"))
+    assert not (tmp_path / "x.map").exists()
+    ms.apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS)  # keep ms usable (README)
+
+
 def test_refusals(pymeshlab, make_family, tmp_path):
     arch = make_family("arch", 2, faces=3000)
     torus = make_family("handle", 1, faces=3000)
