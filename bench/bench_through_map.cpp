@@ -33,7 +33,7 @@ int main(int argc, char** argv) {
     TransferStats st;
     const Timing direct = time_runs(args.runs, [&] { return slice_layers(target, plate); });
     const Timing exact =
-        time_runs(args.runs, [&] { return transfer_through_map(source, map, target, TransferMode::Exact, &st); });
+        time_runs(args.runs, [&] { return transfer_through_map(source, map, target, TransferOptions(TransferMode::Exact), &st); });
     const Timing bary = time_runs(args.runs, [&] {
       return transfer_through_map(source, map, target, TransferOptions(TransferMode::Barycentric, false));
     });

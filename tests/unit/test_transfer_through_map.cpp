@@ -81,7 +81,7 @@ test::FamilyOptions family(const std::string& shape, test::ZChange z_change = te
 // the same plate: same loops, same encoding, identical masks. Returns the stats.
 TransferStats expect_exact_equals_direct(const Slices& source, const Shuffled& s) {
   TransferStats st;
-  const Slices moved = transfer_through_map(source, s.map, s.target, TransferMode::Exact, &st);
+  const Slices moved = transfer_through_map(source, s.map, s.target, TransferOptions(TransferMode::Exact), &st);
   const Slices direct = slice(s.target, source.thickness, source.z_start);
   EXPECT_EQ(st.transferred_layers + st.resliced_layers, direct.layers());
   EXPECT_EQ(moved.fingerprint, mesh_fingerprint(s.target));
@@ -236,11 +236,11 @@ TEST(TransferThroughMap, RefusesMismatchedInputWithClearMessages) {
     return std::string("accepted");
   };
   // The map's target is the shuffled copy, not the base.
-  EXPECT_NE(message(source, s.map, base, TransferMode::Exact).find("not the map's target"), std::string::npos);
+  EXPECT_NE(message(source, s.map, base, TransferOptions(TransferMode::Exact)).find("not the map's target"), std::string::npos);
   // An encoding of another mesh (other faces) than the map's source.
   const Shuffled other = shuffle(base, base, 2);
   const Slices other_source = slice(other.target, 0.1);
-  EXPECT_NE(message(other_source, s.map, s.target, TransferMode::Exact).find("other faces than the map's source"),
+  EXPECT_NE(message(other_source, s.map, s.target, TransferOptions(TransferMode::Exact)).find("other faces than the map's source"),
             std::string::npos);
   // Barycentric points are not on the target's edges: no target encoding.
   EXPECT_NE(message(source, s.map, s.target, TransferOptions(TransferMode::Barycentric, true)).find("no target encoding"),
@@ -248,8 +248,8 @@ TEST(TransferThroughMap, RefusesMismatchedInputWithClearMessages) {
   // A map that is not consistent (face id out of range).
   SurfaceMap broken = s.map;
   broken.face[5] = uint32_t(s.target.faces());
-  EXPECT_NE(message(source, broken, s.target, TransferMode::Exact), "accepted");
+  EXPECT_NE(message(source, broken, s.target, TransferOptions(TransferMode::Exact)), "accepted");
   Slices contours_only = source;
   contours_only.face.clear();
-  EXPECT_NE(message(contours_only, s.map, s.target, TransferMode::Exact).find("needs an encoding"), std::string::npos);
+  EXPECT_NE(message(contours_only, s.map, s.target, TransferOptions(TransferMode::Exact)).find("needs an encoding"), std::string::npos);
 }
