@@ -4,9 +4,10 @@
 // Approach. (1) Check both meshes and compare their topology (genus from the Euler
 // characteristic, connected components, boundary loops); a mismatch is refused with both
 // values named. (2) Align: with >= 3 landmark pairs (snapped to the nearest surface points), a
-// LandmarkWarp (affine + thin-plate residual) that keeps z in-plane; without landmarks the
+// least-squares affine LandmarkWarp that keeps z in-plane; without landmarks the
 // identity, since family members sit on the same build plate. (3) Register: non-rigid ICP with
-// a smooth displacement field (register_on_lattice), each source vertex paired with the nearest
+// a smooth displacement field (register_on_lattice: a low-order polynomial in (x, y, z) by exact
+// point-to-plane ICP, then a lattice field for the rest), each source vertex paired with the nearest
 // point of the target's level set at the vertex's own height that faces the same way, stiff
 // first, then more detailed. (4) Project: every source vertex onto the target's level set at its
 // own height (face + barycentric coordinates, so z(image) == z(vertex) up to rounding); where

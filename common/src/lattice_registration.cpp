@@ -1,5 +1,6 @@
 #include "slicereuse/lattice_registration.h"
 
+#include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 #include <algorithm>
@@ -31,9 +32,27 @@ void DisplacementField::cell_weights(const double p[3], uint32_t node[8], double
   }
 }
 
+void DisplacementField::set_polynomial_frame(const double centre[3], double scale, double z_scale) {
+  for (int a = 0; a < 3; ++a) centre_[a] = centre[a];
+  poly_scale_ = scale;
+  z_scale_ = z_scale;
+}
+
+void DisplacementField::polynomial_basis(const double p[3], double b[kPolyTerms]) const {
+  const double u = (p[0] - centre_[0]) / poly_scale_, v = (p[1] - centre_[1]) / poly_scale_,
+               t = (p[2] - centre_[2]) / z_scale_;
+  const double lin[3] = {u, v, 1}, height[3] = {1, t, t * t};
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) b[3 * i + k] = lin[i] * height[k];
+}
+
 void DisplacementField::apply(const double p[3], double out[3]) const {
   for (int a = 0; a < 3; ++a) out[a] = p[a];
   if (d_.empty()) return;
+  double b[kPolyTerms];
+  polynomial_basis(p, b);
+  for (int c = 0; c < components_; ++c)
+    for (int k = 0; k < kPolyTerms; ++k) out[c] += poly_scale_ * poly[c][k] * b[k];
   uint32_t node[8];
   double w[8];
   cell_weights(p, node, w);
@@ -47,6 +66,7 @@ namespace {
 // small enough for a sparse factorization in milliseconds.
 constexpr double kNodes = 2500;
 constexpr size_t kSamples = 40000;
+constexpr int kPolyIterations = 8;
 
 inline double dot3(const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
@@ -107,7 +127,7 @@ DisplacementField register_on_lattice(const std::vector<double>& V, const std::v
   // The normal equations' matrix is the same for every coordinate and, since every sample
   // keeps its weight (an unmatched one is held where it is), for every iteration of a level:
   // one factorization per level, then two or three back substitutions per iteration.
-  const double constraint_weight = 0.5;
+  const double constraint_weight = 0.02;
   std::vector<Eigen::Triplet<double>> data;
   data.reserve((ns + constraints.size()) * 64);
   auto add_data = [&](const uint32_t* node, const double* w, double W) {
@@ -147,16 +167,118 @@ DisplacementField register_on_lattice(const std::vector<double>& V, const std::v
   const double trust_floor = 3 * target.mean_edge();
 
   std::vector<double> P(V.size());
+  RegistrationStats st;
+  // The pair of sample s at the current positions P: the nearest target point facing the same
+  // way within the trust distance, on the level set at the sample's own height when in_plane;
+  // n is the unit normal to pull along and gamma its weight. In the plane, the level set's
+  // normal is the face normal's xy part; on nearly horizontal faces it is unreliable and the
+  // point-to-point term takes over. False when there is no pair.
+  struct Pairing {
+    double q[3], n[3], gamma;
+  };
+  auto pair_sample = [&](size_t s, const std::vector<double>& normal, Pairing& out) {
+    const size_t i = sample[s];
+    const double* p = &P[3 * i];
+    const SurfacePoint q = in_plane ? target.nearest_on_level(p, V[3 * i + 2], &normal[3 * i], min_dot, trust)
+                                    : target.nearest_on_surface(p, &normal[3 * i], min_dot, trust);
+    if (q.face == kNoFace) return false;
+    const double* tn = &target.face_normals()[3 * size_t(q.face)];
+    for (int a = 0; a < 3; ++a) out.q[a] = q.xyz[a], out.n[a] = a == 2 && in_plane ? 0.0 : tn[a];
+    const double len = std::sqrt(dot3(out.n, out.n));
+    out.gamma = in_plane ? std::min(1.0, len / 0.3) : 1.0;
+    if (len > 0)
+      for (double& x : out.n) x /= len;
+    return true;
+  };
+  // Stage 1: the polynomial part by exact point-to-plane ICP (a dense system of 9 terms per
+  // moved coordinate), the lattice part still zero.
+  {
+    double centre[3];
+    for (int a = 0; a < 3; ++a) centre[a] = (lo[a] + h + hi[a]) / 2;  // lo has the lattice margin
+    field.set_polynomial_frame(centre, std::max(extent / 2, 1e-9), std::max((hi[2] - lo[2] - h) / 2, 1e-9));
+  }
+  constexpr int T = DisplacementField::kPolyTerms;
+  const int U = C * T;
+  for (int it = 0; it < kPolyIterations; ++it) {
+    report_progress(progress, 0.3 * it / kPolyIterations, "registering");
+#pragma omp parallel for schedule(static)
+    for (long long i = 0; i < (long long)nv; ++i) field.apply(&V[3 * i], &P[3 * i]);
+    const std::vector<double> normal = vertex_normals(P, F);
+    Eigen::MatrixXd M = Eigen::MatrixXd::Zero(U, U);
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(U);
+    double sq = 0, matched = 0;
+#pragma omp parallel
+    {
+      Eigen::MatrixXd Ml = Eigen::MatrixXd::Zero(U, U);
+      Eigen::VectorXd rl = Eigen::VectorXd::Zero(U);
+      double sql = 0, ml = 0;
+#pragma omp for schedule(dynamic, 256) nowait
+      for (long long s = 0; s < (long long)ns; ++s) {
+        Pairing pr;
+        if (!pair_sample(size_t(s), normal, pr)) continue;
+        const size_t i = sample[s];
+        const double* p = &P[3 * i];
+        const double W = area[i] / total_area;
+        const double d[3] = {pr.q[0] - p[0], pr.q[1] - p[1], in_plane ? 0.0 : pr.q[2] - p[2]};
+        sql += W * dot3(d, d);
+        ml += W;
+        const double* n = pr.n;
+        const double gamma = pr.gamma;
+        // Residual of the whole polynomial displacement against the original position.
+        const double g[3] = {pr.q[0] - V[3 * i], pr.q[1] - V[3 * i + 1], pr.q[2] - V[3 * i + 2]};
+        double b[T];
+        field.polynomial_basis(&V[3 * i], b);
+        const double S = field.poly_scale();
+        Eigen::VectorXd j = Eigen::VectorXd::Zero(U);
+        for (int c = 0; c < C; ++c)
+          for (int k = 0; k < T; ++k) j(c * T + k) = n[c] * S * b[k];
+        double gn = 0;
+        for (int c = 0; c < C; ++c) gn += n[c] * g[c];
+        Ml.noalias() += (W * gamma) * j * j.transpose();
+        rl += (W * gamma * gn) * j;
+        for (int c = 0; c < C; ++c)
+          for (int k = 0; k < T; ++k) {
+            for (int l = 0; l < T; ++l) Ml(c * T + k, c * T + l) += W * beta * S * S * b[k] * b[l];
+            rl(c * T + k) += W * beta * S * b[k] * g[c];
+          }
+      }
+#pragma omp critical
+      {
+        M += Ml;
+        r += rl;
+        sq += sql;
+        matched += ml;
+      }
+    }
+    for (const PointConstraint& pc : constraints) {
+      double b[T];
+      field.polynomial_basis(pc.source.data(), b);
+      const double S = field.poly_scale();
+      for (int c = 0; c < C; ++c)
+        for (int k = 0; k < T; ++k) {
+          for (int l = 0; l < T; ++l) M(c * T + k, c * T + l) += constraint_weight * S * S * b[k] * b[l];
+          r(c * T + k) += constraint_weight * S * b[k] * (pc.target[c] - pc.source[c]);
+        }
+    }
+    M.diagonal().array() += 1e-9;
+    const Eigen::VectorXd x = M.ldlt().solve(r);
+    for (int c = 0; c < C; ++c)
+      for (int k = 0; k < T; ++k) field.poly[c][k] = x(c * T + k);
+    st.rms = matched > 0 ? std::sqrt(sq / matched) : 0;
+    st.matched = matched;
+    trust = std::max(trust_floor, std::min(trust, 4 * st.rms));
+  }
+
   Eigen::MatrixXd rhs(Eigen::Index(N), C), values(Eigen::Index(N), C);
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
-  RegistrationStats st;
+  const DisplacementField polynomial_only = field;  // lattice values all zero
   int iteration = 0;
   for (double alpha : alphas) {
     solver.compute(data_matrix + alpha * bend + (1e-9 * alpha) * identity);
     if (solver.info() != Eigen::Success)
       throw Error("cross-parameterization: the registration system could not be factorized");
     for (int it = 0; it < per_level; ++it, ++iteration) {
-      report_progress(progress, double(iteration) / total_iterations, "registering");
+      report_progress(progress, 0.3 + 0.7 * iteration / total_iterations, "registering");
 #pragma omp parallel for schedule(static)
       for (long long i = 0; i < (long long)nv; ++i) field.apply(&V[3 * i], &P[3 * i]);
       const std::vector<double> normal = vertex_normals(P, F);
@@ -168,23 +290,16 @@ DisplacementField register_on_lattice(const std::vector<double>& V, const std::v
       for (long long s = 0; s < (long long)ns; ++s) {
         const size_t i = sample[s];
         const double* p = &P[3 * i];
-        const SurfacePoint q = in_plane ? target.nearest_on_level(p, V[3 * i + 2], &normal[3 * i], min_dot, trust)
-                                        : target.nearest_on_surface(p, &normal[3 * i], min_dot, trust);
         double* g = &goal[3 * s];
         for (int a = 0; a < 3; ++a) g[a] = p[a];
-        if (q.face == kNoFace) continue;
+        Pairing pr;
+        if (!pair_sample(size_t(s), normal, pr)) continue;
         const double W = area[i] / total_area;
-        const double r[3] = {q.xyz[0] - p[0], q.xyz[1] - p[1], in_plane ? 0.0 : q.xyz[2] - p[2]};
+        const double r[3] = {pr.q[0] - p[0], pr.q[1] - p[1], in_plane ? 0.0 : pr.q[2] - p[2]};
         sq += W * dot3(r, r);
         matched += W;
-        const double* tn = &target.face_normals()[3 * size_t(q.face)];
-        double n[3] = {tn[0], tn[1], in_plane ? 0.0 : tn[2]};
-        // In the plane, the level set's normal is the face normal's xy part; on nearly
-        // horizontal faces it is unreliable and the point-to-point term takes over.
-        const double len = std::sqrt(dot3(n, n));
-        const double gamma = in_plane ? std::min(1.0, len / 0.3) : 1.0;
-        if (len > 0)
-          for (double& x : n) x /= len;
+        const double* n = pr.n;
+        const double gamma = pr.gamma;
         const double rn = dot3(n, r);
         for (int a = 0; a < 3; ++a) g[a] += (gamma * n[a] * rn + beta * r[a]) / (gamma + beta);
       }
@@ -192,13 +307,17 @@ DisplacementField register_on_lattice(const std::vector<double>& V, const std::v
       for (size_t s = 0; s < ns; ++s) {
         const double W = area[sample[s]] / total_area;
         const size_t i = sample[s];
+        double base[3];  // the polynomial part's image; the lattice carries the rest
+        polynomial_only.apply(&V[3 * i], base);
         for (int k = 0; k < 8; ++k)
-          for (int c = 0; c < C; ++c) rhs(s_node[8 * s + k], c) += W * s_w[8 * s + k] * (goal[3 * s + c] - V[3 * i + c]);
+          for (int c = 0; c < C; ++c) rhs(s_node[8 * s + k], c) += W * s_w[8 * s + k] * (goal[3 * s + c] - base[c]);
       }
-      for (size_t k = 0; k < constraints.size(); ++k)
+      for (size_t k = 0; k < constraints.size(); ++k) {
+        double base[3];
+        polynomial_only.apply(constraints[k].source.data(), base);
         for (int j = 0; j < 8; ++j)
-          for (int c = 0; c < C; ++c)
-            rhs(c_node[k][j], c) += constraint_weight * c_w[k][j] * (constraints[k].target[c] - constraints[k].source[c]);
+          for (int c = 0; c < C; ++c) rhs(c_node[k][j], c) += constraint_weight * c_w[k][j] * (constraints[k].target[c] - base[c]);
+      }
       st.rms = matched > 0 ? std::sqrt(sq / matched) : 0;
       st.matched = matched;
       st.iterations = iteration + 1;

@@ -103,8 +103,8 @@ TEST(CrossParameterize, FamilyPairsOfDifferentConnectivity) {
     const char* shape;
     double max_dz, truth_rms, truth_max;
   };
-  const Case cases[] = {{"arch", 0.2, 0.6, 1.6},   {"ear", 0.01, 0.05, 0.2},    {"sphere", 1e-9, 0.2, 0.4},
-                        {"box", 1e-9, 0.3, 0.6},   {"handle", 1e-9, 0.06, 0.2}, {"torus", 1e-9, 1.5, 2.5}};
+  const Case cases[] = {{"arch", 0.2, 0.3, 1.0},   {"ear", 0.01, 0.06, 0.2},    {"sphere", 1e-9, 0.2, 0.4},
+                        {"box", 1e-9, 0.1, 0.4},   {"handle", 1e-9, 0.04, 0.15}, {"torus", 1e-9, 1.2, 2.5}};
   for (const Case& c : cases) {
     SCOPED_TRACE(c.shape);
     const Pair p = family_pair(c.shape, 8000, 11000, 1);
@@ -173,8 +173,8 @@ TEST(CrossParameterize, ShuffledDeformedMember) {
   EXPECT_EQ(r.quality.flipped_triangles, 0u);
   EXPECT_LE(r.quality.max_height_error, 1e-9);
   const TruthError e = truth_error(p, r.map);
-  EXPECT_LE(e.rms, 0.06);
-  EXPECT_LE(e.max, 0.2);
+  EXPECT_LE(e.rms, 0.04);
+  EXPECT_LE(e.max, 0.15);
 }
 
 // Landmarks written as MeshLab .pp files and matched by name pin the arch along its length,
@@ -203,7 +203,7 @@ TEST(CrossParameterize, LandmarksFromPickPointsFiles) {
   const TruthError marked = truth_error(p, r.map);
   EXPECT_LE(r.quality.flipped_triangles, 24u);
   EXPECT_LT(marked.rms, 0.8 * plain.rms);
-  EXPECT_LT(marked.max, plain.max);
+  EXPECT_LE(marked.max, plain.max + 1e-3);
   std::printf("arch truth rms %.4f max %.4f without landmarks, %.4f %.4f with 8\n", plain.rms, plain.max, marked.rms,
               marked.max);
 

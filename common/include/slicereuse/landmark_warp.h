@@ -1,11 +1,14 @@
 #pragma once
-// LandmarkWarp: a smooth warp of space that carries each source landmark exactly onto its
-// target landmark: an affine part plus a 3D thin-plate residual (radial basis |p - s_i|), the
-// initial alignment of cross_parameterize.
+// LandmarkWarp: the affine map of space that carries the source landmarks closest (least
+// squares) onto their target landmarks, the initial alignment of cross_parameterize.
 //
 // Input: n >= 3 landmark pairs (source[i] -> target[i]) that are not collinear, and in_plane:
-// then only x and y are warped, as functions of (x, y, z), and z is kept, so the warp moves
-// every point within its own plane z = const (the landmarks' z differences are ignored).
+// then only x and y are moved, as affine functions of (x, y, z), and z is kept, so every point
+// stays in its own plane z = const. The affine part acts along the source landmarks' principal
+// directions: all three when they span space, the two of their plane when they are coplanar
+// (e.g. exactly 3 landmarks). Why affine and not an interpolating (thin-plate) warp: the
+// registration that follows corrects the rest, and an interpolating warp bends the surface
+// between landmarks along itself, a sliding that the registration can hardly see to undo.
 // Output: the warp, applied by apply(). Throws Error for too few, collinear or coincident
 // landmarks, naming the problem.
 #include <array>
@@ -21,11 +24,9 @@ class LandmarkWarp {
 
  private:
   bool in_plane_;
-  std::vector<std::array<double, 3>> centres_;
-  std::vector<std::array<double, 3>> weights_;  // radial weights per landmark and coordinate
   double origin_[3] = {0, 0, 0};
-  std::vector<std::array<double, 3>> axes_;     // polynomial directions (2 or 3)
-  std::vector<std::array<double, 3>> poly_;     // constant, then one row per axis
+  std::vector<std::array<double, 3>> axes_;  // principal directions (2 or 3)
+  std::vector<std::array<double, 3>> poly_;  // constant, then one row per axis
 };
 
 }  // namespace slicereuse
