@@ -92,8 +92,8 @@ def test_barycentric_transfer_masks(mapped, request):
     if shape == "arch":
         # Strict: when the map gets accurate enough, this fails as XPASS and the mark must go.
         request.applymarker(pytest.mark.xfail(strict=True, reason=(
-            "the map of the i7 core is not yet accurate enough on the arch (6000 faces): "
-            "S = 0.9991 to 0.9995 on most layers, worst at the bottom; handle and ear reach 0.9999")))
+            "the cross-parameterization is not yet accurate enough on the arch (6000 faces): "
+            "S = 0.9996 to 0.9999 on most layers; handle and ear reach 0.9999 on every layer")))
     b = ms.apply_filter("transfer_slicing_to_mesh", encoding_file=str(tmp / "s.srb"), target_mesh=target,
                         mode="barycentric", map_file=str(tmp / "st.map"), contour_file=str(tmp / "b.srb"))
     assert b["transferred_layers"] > 0 and 0 <= b["max_plane_deviation"] < 0.05
