@@ -62,13 +62,13 @@ def test_quality_report(mapped):
 
 
 def test_patch_colours_correspond(mapped):
-    ms, source, target, *_ = mapped
+    ms, source, target, q, *_ = mapped
     s, t = ms.mesh(source), ms.mesh(target)
     assert s.has_vertex_color() and t.has_vertex_color()
-    # The same set of patch colours on both meshes, more than one of them.
+    # One distinct colour per patch, and the same set of colours on both meshes.
     colours = lambda m: {tuple(c) for c in (m.vertex_color_matrix() * 255).round().astype(int)}
+    assert len(colours(s)) == q["patches"] > 1
     assert colours(s) == colours(t)
-    assert len(colours(s)) > 1
 
 
 def test_exact_transfer_equals_direct_slicing(mapped):
