@@ -3,11 +3,8 @@
 // machine. Prints per member: points, re-sliced layers, median seconds, and the speed-up.
 // Usage: bench_transfer [--shape arch] [--faces 545000] [--height 14.484] [--thickness 0.001]
 //                       [--runs 5] [--members 3]
-#include <omp.h>
-
 #include <chrono>
 #include <cstdio>
-#include <functional>
 #include <vector>
 
 #include "bench_args.h"
@@ -17,39 +14,14 @@
 
 using namespace slicereuse;
 
-namespace {
-
-struct Timing {
-  double seconds;  // median
-  size_t points;   // of the last run's result
-};
-
-// Runs job `runs` times, keeping only one result alive at a time.
-Timing time_runs(int runs, const std::function<Slices()>& job) {
-  std::vector<double> s;
-  size_t points = 0;
-  for (int r = 0; r < runs; ++r) {
-    const auto t0 = std::chrono::steady_clock::now();
-    const Slices result = job();
-    s.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-    points = result.points();
-  }
-  return {median_of(s), points};
-}
-
-}  // namespace
-
 int main(int argc, char** argv) {
   BenchArgs args = parse_bench_args(argc, argv);
   // A family pipeline reuses its output buffers from member to member; without this both sides
   // would mostly measure the kernel zeroing gigabytes of fresh pages.
   const ReuseBuffers reuse;
-  SliceOptions options;
-  options.thickness = args.thickness;
-  const Mesh base = test::make_family_base(args.family);
-  const Slices source = slice_layers(base, options);
-  std::printf("shape %s, %zu faces, %zu layers, threads %d, median of %d runs\n", args.family.shape.c_str(),
-              base.faces(), source.layers(), omp_get_max_threads(), args.runs);
+  const SlicedBase sliced = sliced_base(args);
+  const Mesh& base = sliced.base;
+  const Slices& source = sliced.source;
   // Computed once per encoding, they serve every member (see encoded_edge_ends).
   Buffer<uint32_t> ends;
   std::vector<double> ends_seconds;
@@ -67,7 +39,8 @@ int main(int argc, char** argv) {
     args.family.z_change = z_change;
     for (int i = 1; i < args.members; ++i) {
       const Mesh member = test::make_family_member(base, args.family, i);
-      SliceOptions same_plate = options;
+      SliceOptions same_plate;
+      same_plate.thickness = source.thickness;
       same_plate.z_start = source.z_start;
       TransferStats stats;
       const Timing direct = time_runs(args.runs, [&] { return slice_layers(member, same_plate); });

@@ -32,14 +32,15 @@ struct ParamSpec {
   std::string file_filter;         // FileOpen/FileSave, e.g. "*.enc *.srb"
 };
 
-enum class FilterId { SliceWithEncoding, TransferSlicing, ExportMasks, CompareMasks, MakePrintJob };
+enum class FilterId { SliceWithEncoding, TransferSlicing, ExportMasks, CompareMasks, MakePrintJob,
+                      CrossParameterize };
 
 // Which meshes a filter works on (MeshLab's arity): none (files only), the current mesh, or the
 // meshes its Mesh parameters name.
 enum class Arity { None, CurrentMesh, MeshParameters };
 
 // The menus a filter appears in (bits; MeshLab's FilterClass has one value per menu).
-enum FilterClass : unsigned { kLayerClass = 1, kMeasureClass = 2 };
+enum FilterClass : unsigned { kLayerClass = 1, kMeasureClass = 2, kRemeshingClass = 4 };
 
 struct FilterSpec {
   FilterId id;
@@ -50,6 +51,9 @@ struct FilterSpec {
   unsigned filter_class;    // FilterClass bits
   bool needs_faces;         // precondition: the current mesh must have faces
   std::vector<ParamSpec> params;
+  // Post-condition: the filter colours the vertices of the meshes its Mesh parameters name
+  // (Host::set_vertex_colors), so the host must redraw them with their colours.
+  bool colors_vertices = false;
 };
 
 const std::vector<FilterSpec>& filter_specs();
@@ -100,6 +104,9 @@ class Host {
   // Adds a new layer showing polylines: points xyz (3n), segments as point index pairs.
   virtual void add_polyline_layer(const std::string& name, const std::vector<double>& xyz,
                                   const std::vector<uint32_t>& segments) = 0;
+  // Colours the vertices of a Mesh parameter's mesh: rgba holds 4 bytes per vertex, in the order
+  // of mesh_at's vertices; Error if the count differs.
+  virtual void set_vertex_colors(int ref, const std::vector<uint8_t>& rgba) = 0;
   virtual void log(const std::string& line) = 0;
   virtual Progress progress() = 0;
 };

@@ -19,6 +19,7 @@ Result run_transfer(const ParamValues& values, Host& host);
 Result run_export_masks(const ParamValues& values, Host& host);
 Result run_compare_masks(const ParamValues& values, Host& host);
 Result run_print_job(const ParamValues& values, Host& host);
+Result run_cross_parameterize(const ParamValues& values, Host& host);
 
 // Parameters that several filters share, read and checked once (errors name the parameter).
 SliceOptions read_slice_options(const ParamValues& values);        // layer_thickness, z_start

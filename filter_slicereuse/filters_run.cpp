@@ -15,6 +15,7 @@ Result run_filter(FilterId id, const ParamValues& values, Host& host) {
     case FilterId::ExportMasks: return run_export_masks(values, host);
     case FilterId::CompareMasks: return run_compare_masks(values, host);
     case FilterId::MakePrintJob: return run_print_job(values, host);
+    case FilterId::CrossParameterize: return run_cross_parameterize(values, host);
   }
   throw Error("unknown filter id " + std::to_string(int(id)));
 }

@@ -1,4 +1,4 @@
-// The four filters' names, descriptions, meshes they need, and parameters (see filter_api.h).
+// The filters' names, descriptions, meshes they need, and parameters (see filter_api.h).
 #include "filter_api.h"
 #include "slicereuse/error.h"
 
@@ -90,18 +90,21 @@ FilterSpec transfer_spec() {
                std::string(
                    "<p>Computes the layer contours of a customized family member from the "
                    "encoding of a member that was sliced before (<i>Slice Mesh with "
-                   "Encoding</i>), instead of slicing it again. The target mesh must have "
-                   "exactly the same triangles as the sliced one (same connectivity, only vertex "
-                   "positions differ); this is checked with a fingerprint of the faces.</p>"
+                   "Encoding</i>), instead of slicing it again. Without a map, the target mesh "
+                   "must have exactly the same triangles as the sliced one (same connectivity, "
+                   "only vertex positions differ); this is checked with a fingerprint of the "
+                   "faces. A target with other triangles (remeshed, renumbered, another scan) "
+                   "needs a <i>map file</i> from <i>Cross-Parameterize Meshes</i>.</p>"
                    "<p><b>exact</b> mode moves every point along its mesh edge to where the same "
-                   "plane cuts that edge on the target; a layer whose edges no longer straddle "
-                   "its plane the same way is re-sliced directly on the target, so the result "
-                   "equals slicing the target. <b>barycentric</b> mode applies the encoded area "
-                   "coordinates to the target's faces (the method's Eq. 2); points may leave the "
-                   "layer plane where the target changed in z, and the largest such deviation "
-                   "(mm) is reported.</p>"
-                   "<p>Writes the target's contour file and its own encoding, so it can be a "
-                   "source later. Both appear together or not at all.</p>") +
+                   "plane cuts that edge on the target; through a map, it traces the target's "
+                   "own contour from the faces the mapped points land on. A layer it cannot "
+                   "certify is re-sliced directly on the target, so the result equals slicing "
+                   "the target. <b>barycentric</b> mode applies the encoded area coordinates to "
+                   "the target's faces (the method's Eq. 2), or carries each point through the "
+                   "map and places it on its layer's plane; the largest distance of a point from "
+                   "its plane before that (mm) is reported.</p>"
+                   "<p>Writes the target's contour file and, in exact mode, its own encoding, so "
+                   "it can be a source later. Both appear together or not at all.</p>") +
                    kReference,
                Arity::MeshParameters,
                kLayerClass,
@@ -111,22 +114,25 @@ FilterSpec transfer_spec() {
       file_param("encoding_file", ParamType::FileOpen, "Source encoding file", "*.enc *.srb",
                  "Encoding file written by Slice Mesh with Encoding for a member of the family."),
       param("target_mesh", ParamType::Mesh, "Target mesh",
-                "The family member that receives the slicing; it must have the same faces as "
-                "the sliced mesh. In a .mlx script: the 0-based index of the mesh as loaded."),
+                "The family member that receives the slicing: with the sliced mesh's faces, or "
+                "the target of map_file. In a .mlx script: the 0-based index of the mesh as "
+                "loaded."),
       enum_param("mode", "Mode", {"exact", "barycentric"},
                  "exact: identical to slicing the target (points stay on the planes); "
                  "barycentric: the paper's area-coordinate mapping, fastest, points may leave "
                  "the planes."),
-      param("map_file", ParamType::String, "Cross-parameterization map",
-                "Map between meshes of different connectivity; not supported yet, leave empty "
-                "(the target must have the source's faces)."),
+      file_param("map_file", ParamType::FileOpen, "Cross-parameterization map", "*.map *.srb",
+                 "Map from the sliced mesh onto a target with other faces, written by "
+                 "Cross-Parameterize Meshes (.map text or .srb binary). Empty: the target must "
+                 "have the sliced mesh's faces."),
       file_param("contour_file", ParamType::FileSave, "Contour file", "*.ctr *.srb",
                  "Where to write the target's contour points (text .ctr unless the name ends "
                  "in .srb). Empty: not written."),
       file_param("target_encoding_file", ParamType::FileSave, "Target encoding file",
                  "*.enc *.srb",
                  "Where to write the target's own encoding (text .enc unless the name ends in "
-                 ".srb). Empty: not written."),
+                 ".srb). Empty: not written. Through a map, exact mode only (barycentric points "
+                 "do not lie on the target's edges)."),
   };
   return f;
 }
@@ -252,11 +258,61 @@ FilterSpec compare_spec() {
   return f;
 }
 
+// Remeshing class: MeshLab lists its own maps between meshes there (Iso Parametrization and its
+// transfer between meshes), while Texture holds filters that make UV coordinates and images.
+FilterSpec crossparam_spec() {
+  FilterSpec f{FilterId::CrossParameterize, "Cross-Parameterize Meshes", "cross_parameterize_meshes",
+               std::string(
+                   "<p>Computes a map between two members of a product family whose meshes differ "
+                   "in connectivity (other vertex count, triangles or order: a remeshed model, "
+                   "another scan), so that <i>Transfer Slicing to Mesh</i> can reuse the source's "
+                   "slicing on the target. Each source vertex gets a point on the target (face "
+                   "and barycentric coordinates), written to the map file (.map text or .srb "
+                   "binary; see docs/formats.md) with both meshes' fingerprints.</p>"
+                   "<p>With <b>in-plane</b> on (the method's constraint), a point at height h "
+                   "maps to a point at height h on the target, so each source layer maps into the "
+                   "same layer of the target. Corresponding landmarks (MeshLab PickPoints .pp "
+                   "files, matched by point name; a landmark snaps to the nearest surface point) "
+                   "steer the correspondence; without them it is found automatically. Meshes "
+                   "of different genus cannot be mapped and are refused.</p>"
+                   "<p>Reports flipped triangles (0 for a bijective map), the maximum and RMS "
+                   "height error of mapped vertices (mm), area and angle distortion, and the "
+                   "time. Colours both meshes per vertex by corresponding patch: the same colour "
+                   "marks corresponding regions, to check the map at a glance.</p>") +
+                   kReference,
+               Arity::MeshParameters,
+               kRemeshingClass,
+               true,
+               {}};
+  f.colors_vertices = true;
+  f.params = {
+      param("source_mesh", ParamType::Mesh, "Source mesh",
+            "The sliced family member (whose encoding will be transferred). In a .mlx script: "
+            "the 0-based index of the mesh as loaded."),
+      param("target_mesh", ParamType::Mesh, "Target mesh",
+            "The member with other connectivity that the source is mapped onto. In a .mlx "
+            "script: the 0-based index of the mesh as loaded."),
+      file_param("source_landmarks", ParamType::FileOpen, "Source landmarks", "*.pp",
+                 "PickPoints file (.pp) of landmarks on the source, matched to the target's by "
+                 "name. Empty (with target_landmarks empty): found automatically."),
+      file_param("target_landmarks", ParamType::FileOpen, "Target landmarks", "*.pp",
+                 "PickPoints file (.pp) of the corresponding landmarks on the target, with the "
+                 "same names. Empty (with source_landmarks empty): found automatically."),
+      number_param("in_plane", ParamType::Bool, "In-plane", 1,
+                   "Keep heights: a source point at height h maps to height h on the target, so "
+                   "layers map onto the same layers (the method's in-plane constraint)."),
+      file_param("map_file", ParamType::FileSave, "Map file", "*.map *.srb",
+                 "Where to write the map (text .map unless the name ends in .srb), for "
+                 "Transfer Slicing to Mesh's map_file."),
+  };
+  return f;
+}
+
 }  // namespace
 
 const std::vector<FilterSpec>& filter_specs() {
-  static const std::vector<FilterSpec> specs = {slice_spec(), transfer_spec(), masks_spec(),
-                                                compare_spec(), print_job_spec()};
+  static const std::vector<FilterSpec> specs = {slice_spec(), transfer_spec(), masks_spec(), compare_spec(),
+                                                print_job_spec(), crossparam_spec()};
   return specs;
 }
 

@@ -1,9 +1,12 @@
-// "Transfer Slicing to Mesh": a source encoding applied to a family member with the same faces.
+// "Transfer Slicing to Mesh": a source encoding applied to a family member with the same faces,
+// or, through a map file from Cross-Parameterize Meshes, to a member with other faces.
 #include "filters_common.h"
 #include "slicereuse/atomic_file.h"
 #include "slicereuse/error.h"
+#include "slicereuse/map_files.h"
 #include "slicereuse/slice_files.h"
 #include "slicereuse/transfer_contours.h"
+#include "slicereuse/transfer_through_map.h"
 
 namespace slicereuse::plugin {
 // The transfer and print job filters have no format parameter: the output name decides, .srb
@@ -17,9 +20,6 @@ FileFormat format_for_name(const std::string& path) {
 
 Result run_transfer(const ParamValues& values, Host& host) {
   const auto start = std::chrono::steady_clock::now();
-  if (!values.text("map_file").empty())
-    throw Error("map_file: cross-parameterization maps are not supported yet; leave it empty "
-                "and use a target with the source's faces");
   const double mode_index = values.number("mode");
   if (mode_index != 0 && mode_index != 1)
     throw Error(format("mode must be 0 (exact) or 1 (barycentric), got %g", mode_index));
@@ -28,15 +28,19 @@ Result run_transfer(const ParamValues& values, Host& host) {
   if (encoding_file.empty()) throw Error("encoding_file is empty: choose the source's encoding file");
   const std::string& contour_file = values.text("contour_file");
   const std::string& target_encoding_file = values.text("target_encoding_file");
+  const std::string& map_file = values.text("map_file");
   check_outputs({{"contour_file", contour_file}, {"target_encoding_file", target_encoding_file}});
 
   const Progress progress = host.progress();
-  const Slices encoding = read_encoding_file(encoding_file, sub_progress(progress, 0, 0.2));
+  const Slices encoding = read_encoding_file(encoding_file, sub_progress(progress, 0, 0.1));
+  const SurfaceMap map = map_file.empty() ? SurfaceMap() : read_map_file(map_file, sub_progress(progress, 0.1, 0.2));
   const Mesh target = host.mesh_at(int(values.number("target_mesh")));
   TransferStats stats;
   const auto transfer_start = std::chrono::steady_clock::now();
-  const Slices s = transfer_contours(encoding, target, TransferOptions(mode, !target_encoding_file.empty()), &stats,
-                                     sub_progress(progress, 0.2, 0.6));
+  const TransferOptions options(mode, !target_encoding_file.empty());
+  const Slices s = map_file.empty()
+                       ? transfer_contours(encoding, target, options, &stats, sub_progress(progress, 0.2, 0.6))
+                       : transfer_through_map(encoding, map, target, options, &stats, sub_progress(progress, 0.2, 0.6));
   const double transfer_seconds = seconds_since(transfer_start);
   StagedOutputs outputs;
   if (!contour_file.empty())
@@ -50,6 +54,7 @@ Result run_transfer(const ParamValues& values, Host& host) {
   const double seconds = seconds_since(start);
   std::string line = format("Transfer Slicing to Mesh: %zu points in %zu layers, %zu transferred, %zu re-sliced",
                             s.points(), s.layers(), stats.transferred_layers, stats.resliced_layers);
+  if (!map_file.empty()) line += ", through the map";
   if (mode == TransferMode::Barycentric)
     line += format(", max plane deviation %.3g mm", stats.max_plane_deviation);
   host.log(line + format(", %.3f s (transfer %.3f s)", seconds, transfer_seconds));

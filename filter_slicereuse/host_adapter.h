@@ -8,12 +8,13 @@
 //   read_parameters<Api>(params, md, list)      RichParameters -> ParamValues; Error names the
 //                                                parameter if it is missing or of another type
 //   DocumentHost<Api>                           Host over a MeshDocument (meshes, new layers,
+//                                                vertex colours,
 //                                                log, progress clamped and throttled)
 //   failure_of(context, body)                   runs body; the message for the host's error path
 //                                                if it threw (never an exception type name)
 //   result_line(python_name, result)            the machine-readable log line of a result
 //   result_variants(result)                     Result -> pymeshlab's result dict
-//   meshlab_arity / meshlab_class / meshlab_preconditions / run_logged:
+//   meshlab_arity / meshlab_class / meshlab_preconditions / meshlab_postconditions / run_logged:
 //                                                the filter plugin's declarations and apply
 //
 // Another plugin of the same generation (e.g. the io_encoding IO plugin) uses the parameter,
@@ -198,6 +199,15 @@ class DocumentHost : public Host {
     Api::add_layer(md_, to_qstring(name), [&](CMeshO& m) { fill_polyline_mesh(m, xyz, segments); });
   }
 
+  // Marks the colours as present (MM_VERTCOLOR) so that the GUI draws them; the filter's
+  // post-condition (meshlab_postconditions) makes it refresh them.
+  void set_vertex_colors(int ref, const std::vector<uint8_t>& rgba) override {
+    MeshModel* m = Api::mesh_by_ref(md_, ref);
+    if (m == nullptr) throw Error("there is no mesh with " + std::string(Api::kMeshRef) + " " + std::to_string(ref));
+    m->updateDataMask(MeshModel::MM_VERTCOLOR);
+    set_vertex_colors_vcg(m->cm, rgba);
+  }
+
   void log(const std::string& line) override { Api::log(logger_, line); }
 
   Progress progress() override { return progress_of(cb_); }
@@ -296,11 +306,17 @@ typename Plugin::FilterClass meshlab_class(const FilterSpec& f) {
   int c = 0;
   if (f.filter_class & kLayerClass) c |= Plugin::Layer;
   if (f.filter_class & kMeasureClass) c |= Plugin::Measure;
+  if (f.filter_class & kRemeshingClass) c |= Plugin::Remeshing;
   return typename Plugin::FilterClass(c);
 }
 
 inline int meshlab_preconditions(const FilterSpec& f) {
   return f.needs_faces ? int(MeshModel::MM_FACENUMBER) : int(MeshModel::MM_NONE);
+}
+
+// What a filter changes in the meshes it names (the GUI refreshes exactly that).
+inline int meshlab_postconditions(const FilterSpec& f) {
+  return f.colors_vertices ? int(MeshModel::MM_VERTCOLOR) : int(MeshModel::MM_NONE);
 }
 
 // Applies filter id to md: reads the parameters, runs the filter, logs the result line.

@@ -6,6 +6,8 @@
 // mesh_from_vcg: live vertices and faces in storage order, deleted ones skipped and indices
 //   compacted. Coordinates are taken as stored (cm.Tr is ignored, like most MeshLab filters).
 //   Two members with the same faces therefore give the same F, whatever the scalar type.
+// set_vertex_colors_vcg: colours the live vertices, in mesh_from_vcg's order, from rgba (4 bytes
+//   per vertex); Error if the counts differ.
 // fill_polyline_mesh: turns points xyz (3n) and segments (point index pairs) into an edge mesh.
 #include <cstdint>
 #include <limits>
@@ -59,6 +61,19 @@ Mesh mesh_from_vcg(const MeshT& m) {
       out.F.push_back(live_index_of(m, index, face.cV(j), "mesh face", f));
   }
   return out;
+}
+
+template <class MeshT>
+void set_vertex_colors_vcg(MeshT& m, const std::vector<uint8_t>& rgba) {
+  if (rgba.size() != 4 * size_t(m.vn))
+    throw Error("internal error: " + std::to_string(rgba.size() / 4) + " vertex colours for " +
+                std::to_string(m.vn) + " vertices");
+  size_t i = 0;
+  for (auto& v : m.vert)
+    if (!v.IsD()) {
+      v.C() = vcg::Color4b(rgba[i], rgba[i + 1], rgba[i + 2], rgba[i + 3]);
+      i += 4;
+    }
 }
 
 template <class MeshT>

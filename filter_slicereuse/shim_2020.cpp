@@ -28,8 +28,9 @@ class FilterSliceReusePlugin : public QObject, public MeshFilterInterface {
   FilterClass getClass(QAction* a) override { return meshlab_class<MeshFilterInterface>(spec(a)); }
   FILTER_ARITY filterArity(QAction* a) const override { return meshlab_arity<MeshFilterInterface>(spec(a)); }
   int getPreConditions(QAction* a) const override { return meshlab_preconditions(spec(a)); }
-  // No filter changes an existing mesh (slicing may add a new layer).
-  int postCondition(QAction*) const override { return MeshModel::MM_NONE; }
+  // Only Cross-Parameterize Meshes changes existing meshes (their vertex colours); slicing may
+  // add a new layer.
+  int postCondition(QAction* a) const override { return meshlab_postconditions(spec(a)); }
 
   void initParameterSet(QAction* a, MeshDocument& md, RichParameterList& list) override {
     add_parameters<MeshLab2020>(spec(a).params, md, list);

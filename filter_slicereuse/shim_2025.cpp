@@ -28,8 +28,9 @@ class SliceReusePlugin : public QObject, public FilterPlugin {
   FilterClass getClass(const QAction* a) const override { return meshlab_class<FilterPlugin>(spec(ID(a))); }
   FilterArity filterArity(const QAction* a) const override { return meshlab_arity<FilterPlugin>(spec(ID(a))); }
   int getPreConditions(const QAction* a) const override { return meshlab_preconditions(spec(ID(a))); }
-  // The filters read meshes and write files; the only document change is an added layer.
-  int postCondition(const QAction*) const override { return MeshModel::MM_NONE; }
+  // The filters read meshes and write files; the document changes are an added layer and
+  // Cross-Parameterize Meshes' vertex colours.
+  int postCondition(const QAction* a) const override { return meshlab_postconditions(spec(ID(a))); }
 
   RichParameterList initParameterList(const QAction* a, const MeshDocument& md) override {
     RichParameterList list;
@@ -40,7 +41,7 @@ class SliceReusePlugin : public QObject, public FilterPlugin {
   std::map<std::string, QVariant> applyFilter(const QAction* a, const RichParameterList& list,
                                               MeshDocument& md, unsigned int& postConditionMask,
                                               vcg::CallBackPos* cb) override {
-    postConditionMask = MeshModel::MM_NONE;
+    postConditionMask = meshlab_postconditions(spec(ID(a)));
     Result result;
     if (const auto failure = run_logged<MeshLab2025>(ID(a), md, list, *this, cb, result))
       throw MLException(to_qstring(*failure));

@@ -1,9 +1,11 @@
 // gen_family: writes a mass-customization family (see support/family.h) as PLY files.
 //   gen_family --shape {arch,ear,handle,box,sphere,torus} --faces N --members M
-//              [--z-change | --z-band] --height MM --seed S --out DIR
+//              [--z-change | --z-band] [--shuffle] --height MM --seed S --out DIR
 // --z-change: z changes everywhere (ZChange::Everywhere); --z-band: only within one band of
 // heights (ZChange::Band).
 // writes DIR/member_000.ply (the base) ... and prints "path vertices faces" per file.
+// --shuffle renumbers the vertices and reorders and rotates the faces of every member but the
+// base (shuffle_mesh.h): the same surfaces with other connectivity in indices.
 #include <charconv>
 #include <cstdio>
 #include <cstring>
@@ -12,6 +14,7 @@
 
 #include "family.h"
 #include "shapes.h"
+#include "shuffle_mesh.h"
 #include "slicereuse/error.h"
 
 using namespace slicereuse;
@@ -33,9 +36,14 @@ int main(int argc, char** argv) {
   try {
     test::FamilyOptions o;
     int members = 1;
+    bool shuffle = false;
     std::string out;
     for (int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
+      if (a == "--shuffle") {
+        shuffle = true;
+        continue;
+      }
       if (a == "--z-change" || a == "--z-band") {
         o.z_change = a == "--z-change" ? test::ZChange::Everywhere : test::ZChange::Band;
         continue;
@@ -58,7 +66,9 @@ int main(int argc, char** argv) {
       char name[32];
       std::snprintf(name, sizeof name, "member_%03d.ply", m);
       const std::string path = (std::filesystem::path(out) / name).string();
-      test::write_ply(path, test::make_family_member(base, o, m));
+      Mesh member = test::make_family_member(base, o, m);
+      if (shuffle && m > 0) member = test::shuffle_mesh(member, o.seed * 1000 + uint64_t(m)).mesh;
+      test::write_ply(path, member);
       std::printf("%s %zu %zu\n", path.c_str(), base.vertices(), base.faces());
       std::fflush(stdout);
     }

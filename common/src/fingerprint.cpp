@@ -2,6 +2,8 @@
 
 #include <xxhash.h>
 
+#include <cstdio>
+
 namespace slicereuse {
 
 Fingerprint mesh_fingerprint(const Mesh& mesh) {
@@ -10,6 +12,12 @@ Fingerprint mesh_fingerprint(const Mesh& mesh) {
   fp.faces = mesh.faces();
   fp.hash = XXH3_64bits(mesh.F.data(), mesh.F.size() * sizeof(uint32_t));
   return fp;
+}
+
+std::string describe_fingerprint(const Fingerprint& fp) {
+  char hash[17];
+  std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(fp.hash));
+  return std::to_string(fp.faces) + " faces, hash " + hash;
 }
 
 }  // namespace slicereuse

@@ -2,83 +2,20 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstring>
 #include <string>
 
 #include "slicereuse/edge_point.h"
 #include "slicereuse/error.h"
 #include "slicereuse/fingerprint.h"
-#include "slicereuse/layer_planes.h"
-#include "slicereuse/parallel_blocks.h"
-#include "slicereuse/slice_layers.h"
 #include "slicereuse/straddling_faces.h"
+#include "slicereuse/transfer_layers.h"
 
 namespace slicereuse {
 namespace {
 
-constexpr size_t kLayersPerBlock = 64;
-constexpr uint32_t kNextCorner[3] = {1, 2, 0};
-
-std::string describe(const Fingerprint& fp) {
-  char hash[17];
-  std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(fp.hash));
-  return std::to_string(fp.faces) + " faces, hash " + hash;
-}
-
-size_t first_point(const Slices& s, size_t k) { return s.contour_begin[s.layer_begin[k]]; }
-size_t end_point(const Slices& s, size_t k) { return s.contour_begin[s.layer_begin[k + 1]]; }
-
-void for_each_layer(size_t L, const Progress& progress, const std::function<void(size_t)>& body) {
-  parallel_blocks(
-      (L + kLayersPerBlock - 1) / kLayersPerBlock,
-      [&](size_t b) {
-        for (size_t k = b * kLayersPerBlock; k < std::min(L, (b + 1) * kLayersPerBlock); ++k) body(k);
-      },
-      progress, "transferring");
-}
-
-Slices slice_all(const Mesh& target, std::vector<double> planes, bool with_encoding, TransferStats& st,
-                 const Progress& progress) {
-  st.resliced_layers = planes.size();
-  st.transferred_layers = 0;
-  return slice_planes(target, std::move(planes), progress, with_encoding);
-}
-
-// Slices with enc's layers and contours, and room for their points.
-Slices same_layout(const Slices& enc) {
-  Slices out;
-  out.layer_z = enc.layer_z;
-  out.layer_begin = enc.layer_begin;
-  out.contour_begin = enc.contour_begin;
-  out.contour_open = enc.contour_open;
-  out.xyz.resize(3 * enc.points());
-  return out;
-}
-
-// The planes direct slicing of the target uses: the source's (every member sits on the same
-// build plate) up to the target's own top, so a taller member gets its extra layers and a
-// shorter one no empty ones.
-std::vector<double> target_planes(const Slices& enc, const Mesh& target) {
-  if (!(enc.thickness > 0)) return enc.layer_z;
-  std::vector<double> planes = layer_planes(enc.z_start, enc.thickness, z_range(target).max);
-  std::copy_n(enc.layer_z.begin(), std::min(planes.size(), enc.layers()), planes.begin());
-  return planes;
-}
-
-// The two vertex ids of encoded point p's edge (corner j, corner j+1 of its face): looked up in
-// the faces, or read from encoded_edge_ends.
-struct EndsFromFaces {
-  const uint8_t* edge;
-  const uint32_t* face;
-  const uint32_t* F;
-  void operator()(size_t p, uint32_t& a, uint32_t& b) const {
-    const uint32_t* corners = F + 3 * size_t(face[p]);
-    a = corners[edge[p]];
-    b = corners[kNextCorner[edge[p]]];
-  }
-};
-
+// The two vertex ids of encoded point p's edge, read from encoded_edge_ends (EndsFromFaces,
+// transfer_layers.h, looks them up in the faces).
 struct EndsFromPairs {
   const uint32_t* ends;
   void operator()(size_t p, uint32_t& a, uint32_t& b) const {
@@ -96,7 +33,7 @@ bool transfer_layer(const Slices& enc, const Ends& ends, const Mesh& target, siz
   const double* V = target.V.data();
   double* xyz = out.xyz.data();
   bool good = true;
-  const size_t p0 = first_point(enc, k), p1 = end_point(enc, k);
+  const size_t p0 = layer_point_begin(enc, k), p1 = layer_point_end(enc, k);
   for (size_t p = p0; p < p1; ++p) {
     uint32_t ia, ib;
     ends(p, ia, ib);
@@ -114,50 +51,6 @@ bool transfer_layer(const Slices& enc, const Ends& ends, const Mesh& target, siz
     std::memcpy(&out.edge[p0], &enc.edge[p0], p1 - p0);
   }
   return good;
-}
-
-// Layer k of the result is layer pick[k].layer of *pick[k].from.
-struct Pick {
-  const Slices* from;
-  size_t layer;
-};
-
-Slices assemble(const std::vector<Pick>& pick, std::vector<double> planes, bool with_encoding,
-                const Progress& progress) {
-  const size_t L = pick.size();
-  Slices out;
-  out.layer_z = std::move(planes);
-  out.layer_begin.assign(1, 0);
-  out.contour_begin.assign(1, 0);
-  std::vector<size_t> point_begin(L + 1, 0);
-  for (size_t k = 0; k < L; ++k) {
-    const Slices& s = *pick[k].from;
-    const size_t sk = pick[k].layer;
-    for (size_t c = s.layer_begin[sk]; c < s.layer_begin[sk + 1]; ++c) {
-      out.contour_open.push_back(s.contour_open[c]);
-      out.contour_begin.push_back(out.contour_begin.back() + s.contour_begin[c + 1] - s.contour_begin[c]);
-    }
-    out.layer_begin.push_back(out.contour_open.size());
-    point_begin[k + 1] = out.contour_begin.back();
-  }
-  const size_t P = point_begin[L];
-  out.xyz.resize(3 * P);
-  if (with_encoding) {
-    out.face.resize(P);
-    out.edge.resize(P);
-    out.t.resize(P);
-  }
-  for_each_layer(L, progress, [&](size_t k) {
-    const Slices& s = *pick[k].from;
-    const size_t p0 = first_point(s, pick[k].layer), n = end_point(s, pick[k].layer) - p0, q = point_begin[k];
-    std::memcpy(&out.xyz[3 * q], &s.xyz[3 * p0], 3 * n * sizeof(double));
-    if (with_encoding) {
-      std::memcpy(&out.face[q], &s.face[p0], n * sizeof(uint32_t));
-      std::memcpy(&out.edge[q], &s.edge[p0], n);
-      std::memcpy(&out.t[q], &s.t[p0], n * sizeof(double));
-    }
-  });
-  return out;
 }
 
 template <class Ends>
@@ -183,7 +76,7 @@ Slices transfer_exact(const Slices& enc, const Ends& ends, const Mesh& target, b
   std::vector<uint8_t> ok(L, 0);
   size_t candidates = 0;
   for (size_t k = 0; k < Le; ++k) {
-    ok[k] = counts[k] == end_point(enc, k) - first_point(enc, k);
+    ok[k] = counts[k] == layer_point_end(enc, k) - layer_point_begin(enc, k);
     for (size_t c = enc.layer_begin[k]; ok[k] && c < enc.layer_begin[k + 1]; ++c) {
       const size_t p0 = enc.contour_begin[c], p1 = enc.contour_begin[c + 1];
       ok[k] = !enc.contour_open[c] && crosses(p0, enc.layer_z[k]) && crosses((p0 + p1) / 2, enc.layer_z[k]);
@@ -192,8 +85,8 @@ Slices transfer_exact(const Slices& enc, const Ends& ends, const Mesh& target, b
   }
   // A member that changed in z can fail most layers; transferring the rest and splicing would
   // then cost more than slicing every layer (the result is the same by construction).
-  if (2 * candidates < L) return slice_all(target, std::move(planes), with_encoding, st, progress);
-  Slices moved = same_layout(enc);
+  if (2 * candidates < L) return slice_every_plane(target, std::move(planes), with_encoding, st, progress);
+  Slices moved = layout_of(enc);
   if (with_encoding) {
     moved.face.resize(enc.points());
     moved.edge.resize(enc.points());
@@ -205,35 +98,21 @@ Slices transfer_exact(const Slices& enc, const Ends& ends, const Mesh& target, b
                             : transfer_layer<false>(enc, ends, target, k, moved);
   });
 
-  std::vector<size_t> redo;
-  std::vector<double> redo_planes;
-  for (size_t k = 0; k < L; ++k)
-    if (!ok[k]) {
-      redo.push_back(k);
-      redo_planes.push_back(planes[k]);
-    }
-  if (redo.empty() && L == enc.layers()) {
-    st.transferred_layers = L;
-    return moved;
-  }
-  if (2 * redo.size() > L) return slice_all(target, std::move(planes), with_encoding, st, progress);
-  st.resliced_layers = redo.size();
-  st.transferred_layers = L - redo.size();
-  Slices fresh = slice_planes(target, std::move(redo_planes), progress, with_encoding);
-  std::vector<Pick> pick(L);
-  for (size_t k = 0, r = 0; k < L; ++k) pick[k] = r < redo.size() && redo[r] == k ? Pick{&fresh, r++} : Pick{&moved, k};
-  return assemble(pick, std::move(planes), with_encoding, progress);
+  std::vector<size_t> done_layer(L, kNoLayer);
+  for (size_t k = 0; k < Le; ++k)
+    if (ok[k]) done_layer[k] = k;
+  return splice_resliced(std::move(moved), done_layer, std::move(planes), target, with_encoding, st, progress);
 }
 
 template <class Ends>
 Slices transfer_barycentric(const Slices& enc, const Ends& ends, const Mesh& target, bool with_encoding,
                             TransferStats& st, const Progress& progress) {
-  Slices out = same_layout(enc);
+  Slices out = layout_of(enc);
   const double* V = target.V.data();
   std::vector<double> deviation(enc.layers(), 0);
   for_each_layer(enc.layers(), progress, [&](size_t k) {
     double worst = 0;
-    for (size_t p = first_point(enc, k); p < end_point(enc, k); ++p) {
+    for (size_t p = layer_point_begin(enc, k); p < layer_point_end(enc, k); ++p) {
       uint32_t ia, ib;
       ends(p, ia, ib);
       const double* a = V + 3 * size_t(ia);
@@ -260,8 +139,9 @@ void check_family(const Slices& encoding, const Mesh& mesh) {
   const Fingerprint fp = mesh_fingerprint(mesh);
   if (fp != encoding.fingerprint)
     throw Error("the target mesh's faces differ from those of the mesh the encoding was made from (encoding: " +
-                describe(encoding.fingerprint) + "; target: " + describe(fp) +
-                "); a cross-parameterization map is needed for a target with other connectivity");
+                describe_fingerprint(encoding.fingerprint) + "; target: " + describe_fingerprint(fp) +
+                "); a target with other connectivity needs a cross-parameterization map (map file from Cross-Parameterize "
+                "Meshes)");
 }
 
 template <class Ends>

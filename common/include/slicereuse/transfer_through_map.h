@@ -5,14 +5,23 @@
 // Barycentric mode (the method as written): each encoded point p = (1-t) v_a + t v_b on source
 // edge (a, b) is carried through the map, (1-t) Gamma(a) + t Gamma(b), and placed on its layer's
 // plane z_k (in-plane constraint); max_plane_deviation reports how far the carried point was
-// from z_k before it was placed.
-// Exact mode: the carried points tell which target faces each layer crosses; the target's own
-// contour at z_k is traced from those seeds through the target's adjacency (no search for
-// starting faces), and the layer is certified as transfer_contours does (every traced loop
-// closes and the target has exactly as many straddling faces on the plane as traced points);
-// layers that fail are re-sliced directly. The result equals direct slicing of the target.
+// from z_k before it was placed. Layers run up to the target's own top (the same planes as
+// direct slicing of the target on the source's plate); a taller target's layers above the
+// source's have no points to carry and are re-sliced directly. The points lie inside
+// the target's faces, not on its edges, so this mode has no target encoding: it refuses
+// options.encoding = true.
+// Exact mode: the carried points tell which target faces each layer crosses (the faces of the
+// images of an encoded edge's two ends, walked at most a few faces to the plane); the target's
+// own contour at z_k is traced from those seeds through the target's adjacency (trace_contour.h,
+// no search for starting faces), and the layer is certified: every traced loop closes and the
+// loops hold exactly as many points as the target has faces straddling the plane
+// (straddling_faces.h), so no loop was missed. Layers that fail are re-sliced directly; layers
+// run up to the target's own top as in transfer_contours (transfer_layers.h). The result equals
+// direct slicing of the target, bit for bit up to the order of loops and their start points, and
+// with options.encoding it carries the target's own encoding (face, edge, t of the target).
 //
-// Throws Error when the encoding is not of the map's source, or target is not the map's target.
+// Throws Error when the encoding is not of the map's source, target is not the map's target,
+// the map is inconsistent (validate_surface_map), or barycentric mode is asked for an encoding.
 #include "slicereuse/mesh.h"
 #include "slicereuse/progress.h"
 #include "slicereuse/slices.h"
