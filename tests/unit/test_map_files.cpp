@@ -14,9 +14,12 @@
 #include "slicereuse/error.h"
 #include "slicereuse/fingerprint.h"
 #include "slicereuse/map_files.h"
+#include "test_files.h"
 
 using namespace slicereuse;
 using slicereuse::test::error_of;
+using slicereuse::test::slurp;
+using slicereuse::test::spit;
 namespace fs = std::filesystem;
 
 namespace {
@@ -39,24 +42,7 @@ SurfaceMap sample_map() {
   return map;
 }
 
-class MapFiles : public ::testing::Test {
- protected:
-  void SetUp() override {
-    char name[] = "/tmp/slicereuse-map-files-XXXXXX";
-    ASSERT_NE(::mkdtemp(name), nullptr);
-    dir = name;
-  }
-  void TearDown() override { fs::remove_all(dir); }
-  std::string path(const std::string& name) const { return dir + "/" + name; }
-  std::string bytes(const std::string& p) const {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
-  void put(const std::string& p, const std::string& b) const { std::ofstream(p, std::ios::binary) << b; }
-  std::string dir;
-};
+class MapFiles : public test::FileTest {};
 
 void expect_equal(const SurfaceMap& a, const SurfaceMap& b) {
   EXPECT_EQ(a.source, b.source);
@@ -76,8 +62,8 @@ TEST_F(MapFiles, RoundTripsAreExact) {
     write_map_file(path(name), map);
     expect_equal(read_map_file(path(name)), map);
   }
-  EXPECT_EQ(bytes(path("m.srb")).substr(0, 4), "\x89SRB");
-  EXPECT_EQ(bytes(path("m.map")).substr(0, 18), "# slicereuse map 1");
+  EXPECT_EQ(slurp(path("m.srb")).substr(0, 4), "\x89SRB");
+  EXPECT_EQ(slurp(path("m.map")).substr(0, 18), "# slicereuse map 1");
   for (const auto& e : fs::directory_iterator(dir)) EXPECT_EQ(e.path().string().find(".tmp-"), std::string::npos);
 }
 
@@ -96,63 +82,63 @@ TEST_F(MapFiles, InvalidMapIsNotWritten) {
 
 TEST_F(MapFiles, BinaryTruncatedOrCorruptedAnywhereIsRejected) {
   write_map_file(path("m.srb"), sample_map());
-  const std::string good = bytes(path("m.srb"));
+  const std::string good = slurp(path("m.srb"));
   for (size_t n = 0; n < good.size(); n += 1 + n / 3) {
-    put(path("t.srb"), good.substr(0, n));
+    spit(path("t.srb"), good.substr(0, n));
     EXPECT_THROW(read_map_file(path("t.srb")), Error) << "truncated to " << n;
   }
-  EXPECT_ERROR((put(path("t.srb"), good.substr(0, 100)), read_map_file(path("t.srb"))), "truncated file");
+  EXPECT_ERROR((spit(path("t.srb"), good.substr(0, 100)), read_map_file(path("t.srb"))), "truncated file");
   for (size_t at = 0; at < good.size(); at += 1 + at / 5) {
     std::string b = good;
     b[at] ^= 0x10;
-    put(path("c.srb"), b);
+    spit(path("c.srb"), b);
     EXPECT_THROW(read_map_file(path("c.srb")), Error) << "byte " << at;
   }
   std::string b = good;
   b[b.size() - 3] ^= 1;
-  put(path("c.srb"), b);
+  spit(path("c.srb"), b);
   EXPECT_ERROR(read_map_file(path("c.srb")), "section bary: checksum mismatch");
 }
 
 TEST_F(MapFiles, AbsurdCountsAreRejectedBeforeAllocating) {
   write_map_file(path("m.srb"), sample_map());
-  std::string b = bytes(path("m.srb"));
+  std::string b = slurp(path("m.srb"));
   const uint64_t huge = uint64_t(1) << 60;
   std::memcpy(&b[16], &huge, 8);  // source vertices
   const size_t table_end = 80 + 32 * 3;
   const uint64_t sum = XXH3_64bits(b.data(), table_end);
   std::memcpy(&b[table_end], &sum, 8);
-  put(path("a.srb"), b);
+  spit(path("a.srb"), b);
   EXPECT_ERROR(read_map_file(path("a.srb")), "more than the file's");
   write_map_file(path("m.map"), sample_map());
-  std::string t = bytes(path("m.map"));
+  std::string t = slurp(path("m.map"));
   const size_t at = t.find("# source ") + 9;
   t.replace(at, t.find(' ', at) - at, "99999999999");
-  put(path("a.map"), t);
+  spit(path("a.map"), t);
   EXPECT_ERROR(read_map_file(path("a.map")), "more than the file can hold");
 }
 
 TEST_F(MapFiles, TextDamageIsRejectedWithLineNumbers) {
   write_map_file(path("m.map"), sample_map());
-  const std::string good = bytes(path("m.map"));
-  put(path("t.map"), good.substr(0, good.rfind('\n', good.size() / 2) + 1));
+  const std::string good = slurp(path("m.map"));
+  spit(path("t.map"), good.substr(0, good.rfind('\n', good.size() / 2) + 1));
   EXPECT_ERROR(read_map_file(path("t.map")), "truncated file?");
-  put(path("t.map"), good.substr(0, good.size() / 2));
+  spit(path("t.map"), good.substr(0, good.size() / 2));
   EXPECT_THROW(read_map_file(path("t.map")), Error);
   std::string b = good;
   b.replace(b.find("\nv ") + 1, 1, "x");
-  put(path("t.map"), b);
+  spit(path("t.map"), b);
   EXPECT_ERROR(read_map_file(path("t.map")), "expected a vertex line");
   b = good;
   const size_t v = b.find("\nv ") + 3;
   b.replace(v, b.find(' ', v) - v, "nan");
-  put(path("t.map"), b);
+  spit(path("t.map"), b);
   EXPECT_ERROR(read_map_file(path("t.map")), "expected a target face id");
-  put(path("t.map"), good + "v 0 1 0 0\n");
+  spit(path("t.map"), good + "v 0 1 0 0\n");
   EXPECT_ERROR(read_map_file(path("t.map")), "unexpected line after the last vertex line");
-  put(path("t.map"), "hello\n");
+  spit(path("t.map"), "hello\n");
   EXPECT_ERROR(read_map_file(path("t.map")), "not a slicereuse map file");
-  put(path("t.map"), "# slicereuse map 2\n");
+  spit(path("t.map"), "# slicereuse map 2\n");
   EXPECT_ERROR(read_map_file(path("t.map")), "line 1: the first line must be");
   EXPECT_ERROR(read_map_file(path("missing.map")), "cannot open the map file");
 }
@@ -160,12 +146,12 @@ TEST_F(MapFiles, TextDamageIsRejectedWithLineNumbers) {
 TEST_F(MapFiles, WrongFingerprintsAreRejected) {
   SurfaceMap map = sample_map();
   write_map_file(path("m.map"), map);
-  std::string t = bytes(path("m.map"));
+  std::string t = slurp(path("m.map"));
   // Another source hash: the faces in the file no longer match it.
   const size_t line = t.find("# source ");
   const size_t hash_at = t.find('\n', line) - 16;
   t[hash_at] = t[hash_at] == '0' ? '1' : '0';
-  put(path("f.map"), t);
+  spit(path("f.map"), t);
   EXPECT_ERROR(read_map_file(path("f.map")), "do not match its source fingerprint");
   // The map's target is not this mesh.
   test::FamilyOptions o;
@@ -173,5 +159,5 @@ TEST_F(MapFiles, WrongFingerprintsAreRejected) {
   o.faces = 700;
   EXPECT_ERROR(check_map_target(map, test::make_family_base(o)), "is not the map's target");
   // An empty file is no map file.
-  EXPECT_ERROR((put(path("e.srb"), ""), read_map_file(path("e.srb"))), "not a slicereuse map file");
+  EXPECT_ERROR((spit(path("e.srb"), ""), read_map_file(path("e.srb"))), "not a slicereuse map file");
 }

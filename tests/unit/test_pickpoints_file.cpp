@@ -8,20 +8,15 @@
 
 #include "slicereuse/error.h"
 #include "slicereuse/pickpoints_file.h"
+#include "temp_folder.h"
 
 using namespace slicereuse;
 namespace fs = std::filesystem;
 
 namespace {
 
-class PickPoints : public ::testing::Test {
+class PickPoints : public test::TempFolderTest {
  protected:
-  void SetUp() override {
-    char name[] = "/tmp/slicereuse-pp-XXXXXX";
-    ASSERT_NE(::mkdtemp(name), nullptr);
-    dir = name;
-  }
-  void TearDown() override { fs::remove_all(dir); }
   std::string file(const std::string& name, const std::string& points) const {
     const std::string p = dir + "/" + name;
     std::ofstream(p) << "<!DOCTYPE PickedPoints>\n<PickedPoints>\n <DocumentData>\n  <DateTime time=\"10:00:00\" "
