@@ -14,6 +14,7 @@
 #include <string>
 #include <string_view>
 
+#include "input_file.h"
 #include "slicereuse/buffer.h"
 #include "slicereuse/cli_file.h"
 #include "slicereuse/error.h"
@@ -375,21 +376,13 @@ void walk_binary(Reader& r, const char* b, const char* e, Sink& sink, const Prog
   }
 }
 
-struct FileCloser {
-  void operator()(FILE* f) const { std::fclose(f); }
-};
-
 }  // namespace
 
 Slices read_cli_file(const std::string& path, const Progress& progress) {
   Buffer<char> data;
   {
-    std::unique_ptr<FILE, FileCloser> f(std::fopen(path.c_str(), "rb"));
-    if (!f) throw Error("cannot open '" + path + "': " + std::strerror(errno));
-    struct stat st;
-    if (::fstat(::fileno(f.get()), &st) != 0 || !S_ISREG(st.st_mode))
-      throw Error("cannot read '" + path + "': not a regular file");
-    data.resize(size_t(st.st_size));
+    const detail::InputFile f = detail::open_input_file(path, "the CLI file");
+    data.resize(size_t(f.size()));
     if (!data.empty() && std::fread(data.data(), 1, data.size(), f.get()) != data.size())
       throw Error("cannot read '" + path + "': " + std::strerror(errno));
   }

@@ -15,6 +15,7 @@
 #include <memory>
 #include <string_view>
 
+#include "input_file.h"
 #include "slice_files_binary_layout.h"
 #include "slicereuse/atomic_file.h"
 #include "slicereuse/error.h"
@@ -276,10 +277,6 @@ SurfaceMap read_text(const std::string& path, const std::vector<char>& data) {
   return m;
 }
 
-struct FileCloser {
-  void operator()(FILE* f) const { std::fclose(f); }
-};
-
 }  // namespace
 
 void write_map_file(const std::string& path, const SurfaceMap& map, const Progress& progress) {
@@ -295,12 +292,8 @@ void write_map_file(const std::string& path, const SurfaceMap& map, const Progre
 }
 
 SurfaceMap read_map_file(const std::string& path, const Progress& progress) {
-  std::unique_ptr<FILE, FileCloser> f(std::fopen(path.c_str(), "rb"));
-  if (!f) throw Error("cannot open the map file '" + path + "': " + std::strerror(errno));
-  struct stat st;
-  if (::fstat(::fileno(f.get()), &st) != 0 || !S_ISREG(st.st_mode))
-    throw Error("cannot read '" + path + "': not a regular file");
-  const uint64_t size = uint64_t(st.st_size);
+  const detail::InputFile f = detail::open_input_file(path, "the map file");
+  const uint64_t size = f.size();
   char head[sizeof kBinaryMagic] = {};
   const size_t got = std::fread(head, 1, sizeof head, f.get());
   std::rewind(f.get());

@@ -5,10 +5,9 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <map>
-#include <sstream>
 
+#include "input_file.h"
 #include "slicereuse/error.h"
 
 namespace slicereuse {
@@ -60,11 +59,13 @@ bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; 
 }  // namespace
 
 std::vector<PickedPoint> read_pickpoints_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("cannot open the PickPoints file '" + path + "': " + std::strerror(errno));
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
+  std::string text;
+  {
+    const detail::InputFile in = detail::open_input_file(path, "the PickPoints file");
+    text.resize(size_t(in.size()));
+    if (!text.empty() && std::fread(text.data(), 1, text.size(), in.get()) != text.size())
+      throw Error("cannot read '" + path + "': " + std::strerror(errno));
+  }
   auto fail = [&](size_t at, const std::string& what) -> void {
     const size_t line = 1 + size_t(std::count(text.begin(), text.begin() + std::min(at, text.size()), '\n'));
     throw Error("'" + path + "', line " + std::to_string(line) + ": " + what);

@@ -8,6 +8,7 @@
 
 #include <xxhash.h>
 
+#include "input_file.h"
 #include "slice_files_binary_layout.h"
 #include "slicereuse/error.h"
 
@@ -35,17 +36,9 @@ void write_file(const std::string& path, const Slices& s, FileFormat format, Fil
     detail::write_text(path, s, kind, progress);
 }
 
-struct FileCloser {
-  void operator()(FILE* f) const { std::fclose(f); }
-};
-
 Slices read_file(const std::string& path, FileKind kind, const Progress& progress) {
-  std::unique_ptr<FILE, FileCloser> f(std::fopen(path.c_str(), "rb"));
-  if (!f) throw Error("cannot open '" + path + "': " + std::strerror(errno));
-  struct stat st;
-  if (::fstat(::fileno(f.get()), &st) != 0 || !S_ISREG(st.st_mode))
-    throw Error("cannot read '" + path + "': not a regular file");
-  const uint64_t size = uint64_t(st.st_size);
+  const detail::InputFile f = detail::open_input_file(path);
+  const uint64_t size = f.size();
 
   char head[sizeof detail::kBinaryMagic] = {};
   const size_t got = std::fread(head, 1, sizeof head, f.get());
@@ -80,14 +73,10 @@ Slices read_encoding_file(const std::string& path, const Progress& progress) {
 }
 
 FileIdentity slice_file_identity(const std::string& path) {
-  std::unique_ptr<FILE, FileCloser> f(std::fopen(path.c_str(), "rb"));
-  if (!f) throw Error("cannot open '" + path + "': " + std::strerror(errno));
-  struct stat st;
-  if (::fstat(::fileno(f.get()), &st) != 0 || !S_ISREG(st.st_mode))
-    throw Error("cannot read '" + path + "': not a regular file");
+  const detail::InputFile f = detail::open_input_file(path);
   FileIdentity id;
-  id.size = uint64_t(st.st_size);
-  id.mtime_ns = int64_t(st.st_mtim.tv_sec) * 1000000000 + st.st_mtim.tv_nsec;
+  id.size = f.size();
+  id.mtime_ns = int64_t(f.st.st_mtim.tv_sec) * 1000000000 + f.st.st_mtim.tv_nsec;
   unsigned char head[detail::kFixedHeaderBytes];
   const size_t got = std::fread(head, 1, sizeof head, f.get());
   if (got == sizeof head && std::memcmp(head, detail::kBinaryMagic, sizeof detail::kBinaryMagic) == 0) {

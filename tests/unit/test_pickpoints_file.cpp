@@ -97,4 +97,10 @@ TEST_F(PickPoints, DamageIsReportedClearly) {
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("cannot open the PickPoints file"), std::string::npos) << e.what();
   }
+  try {
+    read_pickpoints_file(dir);  // a folder opens as a stream, but is no file to read
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("not a regular file"), std::string::npos) << e.what();
+  }
 }
