@@ -33,7 +33,6 @@ class PickPoints : public test::TempFolderTest {
     }
     return "(no error)";
   }
-  std::string dir;
 };
 
 }  // namespace
