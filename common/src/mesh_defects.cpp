@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "slicereuse/format.h"
+#include "slicereuse/mesh_topology.h"
 
 namespace slicereuse {
 namespace {
@@ -26,14 +27,11 @@ MeshDefects find_mesh_defects(const Mesh& mesh) {
     if (!std::isfinite(V[3 * v]) || !std::isfinite(V[3 * v + 1]) || !std::isfinite(V[3 * v + 2]))
       count(d.non_finite_vertices, d.first_non_finite_vertex, v);
 
-  // Sorted corner triples find duplicates; sorted undirected edges count faces per edge.
+  // Sorted corner triples find duplicates.
   std::vector<std::pair<std::array<uint32_t, 3>, uint32_t>> faces;
-  std::vector<std::pair<uint32_t, uint32_t>> edges;
   faces.reserve(mesh.faces());
-  edges.reserve(3 * mesh.faces());
   for (uint32_t f = 0; f < mesh.faces(); ++f) {
     std::array<uint32_t, 3> c{F[3 * f], F[3 * f + 1], F[3 * f + 2]};
-    for (int j = 0; j < 3; ++j) edges.emplace_back(std::minmax(c[j], c[(j + 1) % 3]));
     std::sort(c.begin(), c.end());
     if (c[0] == c[1] || c[1] == c[2]) {
       count(d.repeated_vertex_faces, d.first_repeated_vertex_face, f);
@@ -52,16 +50,9 @@ MeshDefects find_mesh_defects(const Mesh& mesh) {
   for (size_t i = 1; i < faces.size(); ++i)
     if (faces[i].first == faces[i - 1].first) count(d.duplicate_faces, d.first_duplicate_face, faces[i].second);
 
-  std::sort(edges.begin(), edges.end());
-  for (size_t i = 0; i < edges.size();) {
-    size_t j = i;
-    while (j < edges.size() && edges[j] == edges[i]) ++j;
-    if (edges[i].first != edges[i].second) {
-      if (j - i == 1) ++d.boundary_edges;
-      if (j - i >= 3) ++d.non_manifold_edges;
-    }
-    i = j;
-  }
+  const MeshTopology t = mesh_topology(mesh);
+  d.boundary_edges = t.boundary_edges;
+  d.non_manifold_edges = t.nonmanifold_edges;
   return d;
 }
 

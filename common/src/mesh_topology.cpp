@@ -24,10 +24,12 @@ MeshTopology mesh_topology(const Mesh& mesh) {
   MeshTopology t;
   t.faces = nf;
   // Undirected edges as sorted (min, max) vertex pairs: equal keys are the uses of one edge.
-  std::vector<uint64_t> keys(3 * nf);
+  // A face naming one vertex twice has a "side" from that vertex to itself: no edge of the surface.
+  std::vector<uint64_t> keys;
+  keys.reserve(3 * nf);
   for (size_t h = 0; h < 3 * nf; ++h) {
     const uint64_t u = mesh.F[h], v = mesh.F[h - h % 3 + (h % 3 + 1) % 3];
-    keys[h] = std::min(u, v) << 32 | std::max(u, v);
+    if (u != v) keys.push_back(std::min(u, v) << 32 | std::max(u, v));
   }
   std::sort(keys.begin(), keys.end());
   std::vector<uint8_t> used(nv, 0);
