@@ -34,7 +34,7 @@ std::string utc_timestamp(std::time_t now) {
   return buf;
 }
 
-std::string config_ini(const Sl1Job& j, const std::string& job, std::time_t now) {
+std::string config_ini(const Sl1Job& j, const std::string& job, std::time_t now, double used_material_ml) {
   const size_t fade = std::min(FADED_LAYERS, j.layers);
   const double print_s = double(fade) * FIRST_EXPOSURE_S + double(j.layers - fade) * EXPOSURE_S +
                          double(j.layers) * TILT_S;
@@ -56,7 +56,7 @@ std::string config_ini(const Sl1Job& j, const std::string& job, std::time_t now)
          "printerProfile = slicereuse\n"
          "printerVariant = default\n"
          "prusaSlicerVersion = slicereuse\n"
-         "usedMaterial = " + num(std::round(j.used_material_ml * 1000) / 1000) + "\n";
+         "usedMaterial = " + num(std::round(used_material_ml * 1000) / 1000) + "\n";
 }
 
 std::string prusaslicer_ini(const Sl1Job& j) {
@@ -175,10 +175,20 @@ void add_entry(zip_t* za, const std::string& name, zip_source_t* src, bool store
 
 void write_sl1(const std::string& path, const Sl1Job& job, const LayerPng& layer_png) {
   const std::time_t now = std::time(nullptr);
-  // Declared before the archive: zip_discard (on any error) calls layer_cb to free each layer
+  const std::string name = job_name(path);
+  // Entry k < layers is layer k's PNG; entry `layers` is config.ini, made when libzip reaches
+  // it, after the last layer, when the material is known.
+  std::vector<uint8_t> config;
+  const LayerPng entry_bytes = [&](size_t k) -> const std::vector<uint8_t>& {
+    if (k < job.layers) return layer_png(k);
+    const std::string text = config_ini(job, name, now, job.used_material_ml ? job.used_material_ml() : 0.0);
+    config.assign(text.begin(), text.end());
+    return config;
+  };
+  // Declared before the archive: zip_discard (on any error) calls layer_cb to free each entry's
   // source, so the entries must outlive the archive.
-  Layers layers{&layer_png, now, nullptr, {}};
-  std::vector<LayerEntry> entries(job.layers);
+  Layers layers{&entry_bytes, now, nullptr, {}};
+  std::vector<LayerEntry> entries(job.layers + 1);
   // libzip writes the archive on zip_close to a temporary file next to the staged one and
   // renames it onto it; the staged file then replaces path.
   StagedOutputs outputs;
@@ -192,17 +202,15 @@ void write_sl1(const std::string& path, const Sl1Job& job, const LayerPng& layer
   }
   std::unique_ptr<zip_t, void (*)(zip_t*)> archive(za, zip_discard);
 
-  const std::string name = job_name(path);
-  const std::string config = config_ini(job, name, now), slicer = prusaslicer_ini(job);
-  add_entry(za, "config.ini", zip_source_buffer(za, config.data(), config.size(), 0), false, path);
+  const std::string slicer = prusaslicer_ini(job);
   add_entry(za, "prusaslicer.ini", zip_source_buffer(za, slicer.data(), slicer.size(), 0), false,
             path);
-
-  for (size_t k = 0; k < job.layers; ++k) {
+  for (size_t k = 0; k <= job.layers; ++k) {
     entries[k].layers = &layers;
     entries[k].k = k;
-    add_entry(za, mask_layer_file_name(name, k), zip_source_function(za, layer_cb, &entries[k]),
-              true, path);
+    const bool is_config = k == job.layers;
+    add_entry(za, is_config ? std::string("config.ini") : mask_layer_file_name(name, k),
+              zip_source_function(za, layer_cb, &entries[k]), !is_config, path);
   }
   if (zip_close(za) != 0) {
     if (layers.failure) std::rethrow_exception(layers.failure);

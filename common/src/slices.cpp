@@ -64,7 +64,7 @@ double contour_area(const Slices& s, size_t c) {
   return area;
 }
 
-void validate_slices(const Slices& s) {
+void validate_slices(const Slices& s, bool check_points) {
   if (!std::isfinite(s.z_start)) throw Error("z_start is not finite");
   if (!std::isfinite(s.thickness) || s.thickness <= 0)
     throw Error("layer thickness " + real(s.thickness) + " is not a positive number");
@@ -85,12 +85,13 @@ void validate_slices(const Slices& s) {
     if (s.xyz.size() != 3 * P)
       throw Error("xyz has " + num(s.xyz.size()) + " numbers, expected 3 per point (" +
                   num(3 * P) + ")");
-    check_finite(s.xyz, "xyz");
+    if (check_points) check_finite(s.xyz, "xyz");
   }
   if (s.face.empty() && s.edge.empty() && s.t.empty()) return;
   if (s.face.size() != P || s.edge.size() != P || s.t.size() != P)
     throw Error("encoding arrays face/edge/t have " + num(s.face.size()) + "/" +
                 num(s.edge.size()) + "/" + num(s.t.size()) + " entries, expected " + num(P));
+  if (!check_points) return;
   bool bad = false;
 #pragma omp parallel for reduction(|| : bad) schedule(static)
   for (long long p = 0; p < static_cast<long long>(P); ++p)

@@ -18,6 +18,7 @@
 #include "slicereuse/mask_png.h"
 #include "slicereuse/mask_stack.h"
 #include "slicereuse/masks.h"
+#include "error_of.h"
 #include "temp_folder.h"
 
 namespace fs = std::filesystem;
@@ -369,6 +370,34 @@ TEST_F(MaskFiles, Sl1ConfigCarriesTheDisplay) {
                            "display_orientation = landscape\n", "display_mirror_x = 0\n",
                            "display_mirror_y = 1\n", "printer_technology = SLA\n"})
     EXPECT_NE(slicer.find(line), std::string::npos) << line;
+}
+
+TEST_F(MaskFiles, Sl1ConfigCarriesTheResinVolumeSummedWhileTheLayersAreMade) {
+  // 1 mm layers: a 10 x 10 mm square, then the same square with a 4 x 4 mm hole: 184 mm^3.
+  const Slices s = make_slices({{rect(-5, -5, 5, 5)}, {rect(-5, -5, 5, 5), rect(-2, -2, 2, 2, true)}}, 1.0);
+  export_masks(s, small_display(), dir + "/v.sl1");
+  int err = 0;
+  zip_t* z = zip_open((dir + "/v.sl1").c_str(), ZIP_RDONLY, &err);
+  ASSERT_NE(z, nullptr);
+  zip_stat_t st;
+  ASSERT_EQ(zip_stat(z, "config.ini", 0, &st), 0);
+  std::string config(st.size, '\0');
+  zip_file_t* f = zip_fopen(z, "config.ini", 0);
+  ASSERT_EQ(zip_fread(f, config.data(), st.size), zip_int64_t(st.size));
+  zip_fclose(f);
+  zip_discard(z);
+  EXPECT_NE(config.find("usedMaterial = 0.184\n"), std::string::npos) << config;
+}
+
+TEST_F(MaskFiles, ANonFinitePointIsRefusedAndNothingIsWritten) {
+  Slices s = sample_stack();
+  s.xyz[3 * (s.points() - 2) + 1] = std::nan("");
+  for (const char* name : {"/n.sl1", "/n"}) {
+    const std::string e = test::error_of([&] { export_masks(s, small_display(), dir + name); });
+    EXPECT_NE(e.find("is not a finite number"), std::string::npos) << e;
+    EXPECT_NE(e.find("layer 2"), std::string::npos) << e;
+    EXPECT_FALSE(fs::exists(dir + name));
+  }
 }
 
 TEST_F(MaskFiles, ReexportIntoFolderReplacesOldLayers) {

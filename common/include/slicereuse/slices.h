@@ -63,6 +63,9 @@ double contour_area(const Slices& s, size_t c);
 // not starting at 0, not increasing (every contour has at least one point) or not ending at the
 // array sizes, array lengths that disagree, an open flag other than 0 or 1, an edge > 2, t
 // outside (0, 1], a face id >= fingerprint.faces, or non-finite numbers.
-void validate_slices(const Slices& s);
+// With check_points false, only the layout is checked (sizes and offsets, not the per-point
+// values), in time independent of the point count: for a caller that checks each layer's points
+// while it reads them anyway (export_masks).
+void validate_slices(const Slices& s, bool check_points = true);
 
 }  // namespace slicereuse
