@@ -31,9 +31,6 @@ void log_display_warning(Host& host, const char* filter, const MaskExportStats& 
 // Binary when the name ends in .srb, text otherwise.
 FileFormat format_for_name(const std::string& path);
 
-// Maps progress of one phase onto [from, to] of the whole filter.
-Progress sub_progress(const Progress& progress, double from, double to);
-
 // Checks that every non-empty output path can be written and that no two are the same file,
 // naming the parameter in the error; called before any work is done.
 void check_outputs(const std::vector<std::pair<const char*, std::string>>& named_paths);

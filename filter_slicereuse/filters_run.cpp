@@ -20,13 +20,6 @@ Result run_filter(FilterId id, const ParamValues& values, Host& host) {
   throw Error("unknown filter id " + std::to_string(int(id)));
 }
 
-Progress sub_progress(const Progress& progress, double from, double to) {
-  if (!progress) return {};
-  return [progress, from, to](double f, const char* phase) {
-    return progress(from + (to - from) * f, phase);
-  };
-}
-
 void check_outputs(const std::vector<std::pair<const char*, std::string>>& named_paths) {
   namespace fs = std::filesystem;
   std::vector<std::pair<const char*, fs::path>> seen;

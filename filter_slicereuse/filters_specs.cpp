@@ -203,7 +203,11 @@ FilterSpec print_job_spec() {
                    "<p>The last encoding file read stays in memory (one entry, checked against "
                    "the file's size, modification time and checksum), so a script or a "
                    "pymeshlab loop over a family's members reads it only once. A member whose "
-                   "layers fail their certificate (e.g. changed in z) is sliced directly.</p>") +
+                   "layers fail their certificate (e.g. changed in z) is sliced directly.</p>"
+                   "<p>When directly sliced contours would take more than a quarter of the memory "
+                   "still available (a large part at a very fine layer), the mesh is sliced and "
+                   "its masks made a range of layers at a time, so memory stays bounded; the log "
+                   "says how many ranges.</p>") +
                    kReference,
                Arity::CurrentMesh,
                kLayerClass,

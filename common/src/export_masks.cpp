@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cstring>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -118,18 +119,68 @@ class StackSummary {
   LayerSummary extent_;
 };
 
-void encode_layer(const Slices& s, size_t k, const PrinterProfile& p, int bits,
+// The stack an export works on: one Slices, or ranges of layers made on demand (SliceChunks),
+// each dropped before the next is made. Layer numbers are the stack's; a range's own slices
+// count from 0.
+class Stack {
+ public:
+  explicit Stack(const Slices& s) : whole_(&s), first_{0, s.layers()}, thickness_(s.thickness) {}
+  explicit Stack(const SliceChunks& c) : chunks_(&c), first_(c.first), thickness_(c.thickness) {
+    if (first_.size() < 2 || first_.front() != 0 ||
+        std::adjacent_find(first_.begin(), first_.end(), std::greater_equal<size_t>()) != first_.end())
+      throw Error("mask export: the layer ranges must start at layer 0 and each hold at least one layer");
+  }
+
+  size_t layers() const { return first_.back(); }
+  size_t ranges() const { return first_.size() - 1; }
+  size_t begin(size_t i) const { return first_[i]; }
+  size_t end(size_t i) const { return first_[i + 1]; }
+  double thickness() const { return thickness_; }
+  // Where range i's share of the export begins, and where its encoding begins within it: a range
+  // made on demand spends the first half of its share being made.
+  double share_begin(size_t i) const { return double(begin(i)) / double(layers()); }
+  double encoding_begin(size_t i) const {
+    return whole_ ? share_begin(i) : 0.5 * (share_begin(i) + double(end(i)) / double(layers()));
+  }
+
+  // Range i's slices, checked; the previous range's are freed first.
+  const Slices& range(size_t i, const Progress& progress) {
+    if (whole_) return *whole_;
+    held_ = Slices();
+    held_ = chunks_->make(i, sub_progress(progress, share_begin(i), encoding_begin(i)));
+    if (held_.layers() != end(i) - begin(i))
+      throw Error(format("mask export: layer range %zu holds %zu layers, expected %zu", i, held_.layers(),
+                         end(i) - begin(i)));
+    check(held_);
+    return held_;
+  }
+
+  static void check(const Slices& s) {
+    validate_slices(s, false);  // the points: summarize_layer
+    if (!s.has_points()) throw Error("mask export needs contour points, but the slices carry only an encoding");
+  }
+
+ private:
+  const Slices* whole_ = nullptr;
+  const SliceChunks* chunks_ = nullptr;
+  std::vector<size_t> first_;
+  double thickness_ = 0;
+  Slices held_;
+};
+
+// Layer `local` of range s, layer `k` of the stack.
+void encode_layer(const Slices& s, size_t local, size_t k, const PrinterProfile& p, int bits,
                   std::vector<uint8_t>& png, StackSummary& summary) {
-  summary.add(k, summarize_layer(s, k));
+  summary.add(k, summarize_layer(s, local));
   if (bits == 8 && !p.antialiasing) {  // binary 8-bit (.sl1): straight from the runs
     thread_local MaskRuns runs;
-    rasterize_layer_runs(s, k, p, runs);
+    rasterize_layer_runs(s, local, p, runs);
     encode_mask_png(runs, png);
     return;
   }
   thread_local Buffer<uint8_t> image;
   image.resize(size_t(p.width_px) * size_t(p.height_px));
-  rasterize_layer(s, k, p, image.data());
+  rasterize_layer(s, local, p, image.data());
   encode_mask_png(image.data(), p.width_px, p.height_px, bits, png);
 }
 
@@ -153,76 +204,114 @@ void write_file(const std::string& path, const std::vector<uint8_t>& data) {
 // The images are written into a staged folder that replaces the target (or moves its images
 // into an existing target) only when all are written; images of a former, longer export there
 // are removed then.
-void export_folder(const Slices& s, const PrinterProfile& p, const std::string& folder,
-                   StackSummary& summary, const Progress& progress) {
+void export_folder(Stack& stack, const PrinterProfile& p, const std::string& folder, StackSummary& summary,
+                   size_t& open_contours, const Progress& progress) {
   StagedOutputs outputs;
   const std::string staged = outputs.folder(folder);
-  parallel_blocks(
-      s.layers(),
-      [&](size_t k) {
-        thread_local std::vector<uint8_t> png;
-        encode_layer(s, k, p, p.antialiasing ? 8 : 1, png, summary);
-        // Plain writes: the staged folder as a whole is what appears atomically.
-        write_file(staged + "/" + mask_layer_file_name(FOLDER_PREFIX, k), png);
-      },
-      progress, PHASE);
+  for (size_t i = 0; i < stack.ranges(); ++i) {
+    const Slices& s = stack.range(i, progress);
+    open_contours += s.open_contours();
+    const size_t first = stack.begin(i);
+    parallel_blocks(
+        s.layers(),
+        [&](size_t local) {
+          thread_local std::vector<uint8_t> png;
+          encode_layer(s, local, first + local, p, p.antialiasing ? 8 : 1, png, summary);
+          // Plain writes: the staged folder as a whole is what appears atomically.
+          write_file(staged + "/" + mask_layer_file_name(FOLDER_PREFIX, first + local), png);
+        },
+        sub_progress(progress, stack.encoding_begin(i), double(stack.end(i)) / double(stack.layers())), PHASE);
+  }
   // Last chance to cancel: once committed, the export is done and no longer reports.
   report_progress(progress, 1, PHASE);
   outputs.commit();
-  for (size_t k = s.layers();; ++k) {
+  for (size_t k = stack.layers();; ++k) {
     const std::string stale = folder + "/" + mask_layer_file_name(FOLDER_PREFIX, k);
     if (::unlink(stale.c_str()) != 0) break;
   }
 }
 
-// Encodes layers on all cores, a window ahead of write_sl1, which asks for them in order.
+// Encodes layers on all cores, a window ahead of write_sl1, which asks for them in order: range
+// by range, the next one made when write_sl1 first asks for one of its layers.
 // Always 8-bit: PrusaSlicer's SL1 import decodes only 8-bit greyscale PNGs (1-bit layers would
 // import as empty).
 class Sl1Layers {
  public:
-  Sl1Layers(const Slices& s, const PrinterProfile& p, StackSummary& summary, const Progress& progress)
-      : s_(s), progress_(progress),
-        items_(s.layers(), size_t(16) * size_t(omp_get_max_threads()),
-               [&s, &p, &summary](size_t k, std::vector<uint8_t>& png) { encode_layer(s, k, p, 8, png, summary); }) {}
+  Sl1Layers(Stack& stack, const PrinterProfile& p, StackSummary& summary, size_t& open_contours,
+            const Progress& progress)
+      : stack_(stack), p_(p), summary_(summary), open_contours_(open_contours), progress_(progress) {}
 
   const std::vector<uint8_t>& operator()(size_t k) {
-    if (k % 64 == 0) report_progress(progress_, double(k) / double(s_.layers()), PHASE);
-    return items_.get(k);
+    if (!items_ || k >= stack_.end(range_)) next_range();
+    const size_t local = k - stack_.begin(range_);
+    if (local % 64 == 0) {
+      const double from = stack_.encoding_begin(range_), to = double(stack_.end(range_)) / double(stack_.layers());
+      report_progress(progress_, from + (to - from) * double(local) / double(stack_.end(range_) - stack_.begin(range_)),
+                      PHASE);
+    }
+    return items_->get(local);
   }
 
  private:
-  const Slices& s_;
+  void next_range() {
+    if (items_) ++range_;
+    items_.reset();  // all of the range's layers were taken: its workers are idle
+    const Slices& s = stack_.range(range_, progress_);
+    open_contours_ += s.open_contours();
+    const size_t first = stack_.begin(range_);
+    items_ = std::make_unique<OrderedParallel>(
+        s.layers(), size_t(16) * size_t(omp_get_max_threads()),
+        [this, &s, first](size_t local, std::vector<uint8_t>& png) {
+          encode_layer(s, local, first + local, p_, 8, png, summary_);
+        });
+  }
+
+  Stack& stack_;
+  const PrinterProfile& p_;
+  StackSummary& summary_;
+  size_t& open_contours_;
   const Progress& progress_;
-  OrderedParallel items_;
+  size_t range_ = 0;
+  std::unique_ptr<OrderedParallel> items_;
 };
+
+MaskExportStats export_stack(Stack& stack, const PrinterProfile& profile, const std::string& output_path,
+                             const Progress& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  validate_printer_profile(profile);
+  if (stack.layers() == 0) throw Error("mask export: the slices have no layers");
+  if (output_path.empty()) throw Error("mask export: no output path given");
+  report_progress(progress, 0, PHASE);
+  StackSummary summary(stack.layers());
+  MaskExportStats stats;
+  if (is_sl1(output_path)) {
+    Sl1Layers encoder(stack, profile, summary, stats.ignored_open_contours, progress);
+    write_sl1(output_path,
+              Sl1Job{profile, stack.layers(), stack.thickness(),
+                     [&] { return summary.used_material_ml(stack.thickness()); }},
+              std::ref(encoder));
+  } else {
+    export_folder(stack, profile, output_path, summary, stats.ignored_open_contours, progress);
+  }
+  stats.layers = stack.layers();
+  summary.measure_extent(profile, stats);
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return stats;
+}
 
 }  // namespace
 
 MaskExportStats export_masks(const Slices& s, const PrinterProfile& profile,
                              const std::string& output_path, const Progress& progress) {
-  const auto start = std::chrono::steady_clock::now();
-  validate_printer_profile(profile);
-  validate_slices(s, false);  // the points: summarize_layer
-  if (!s.has_points())
-    throw Error("mask export needs contour points, but the slices carry only an encoding");
-  if (s.layers() == 0) throw Error("mask export: the slices have no layers");
-  if (output_path.empty()) throw Error("mask export: no output path given");
-  report_progress(progress, 0, PHASE);
-  StackSummary summary(s.layers());
-  if (is_sl1(output_path)) {
-    Sl1Layers encoder(s, profile, summary, progress);
-    write_sl1(output_path,
-              Sl1Job{profile, s.layers(), s.thickness, [&] { return summary.used_material_ml(s.thickness); }},
-              std::ref(encoder));
-  } else {
-    export_folder(s, profile, output_path, summary, progress);
-  }
-  MaskExportStats stats;
-  stats.layers = s.layers();
-  stats.ignored_open_contours = s.open_contours();
-  summary.measure_extent(profile, stats);
-  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return stats;
+  Stack::check(s);
+  Stack stack(s);
+  return export_stack(stack, profile, output_path, progress);
+}
+
+MaskExportStats export_masks(const SliceChunks& chunks, const PrinterProfile& profile,
+                             const std::string& output_path, const Progress& progress) {
+  Stack stack(chunks);
+  return export_stack(stack, profile, output_path, progress);
 }
 
 }  // namespace slicereuse

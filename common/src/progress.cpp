@@ -8,4 +8,9 @@ void report_progress(const Progress& progress, double fraction, const char* phas
   if (progress && !progress(fraction, phase)) throw Cancelled();
 }
 
+Progress sub_progress(const Progress& progress, double from, double to) {
+  if (!progress) return {};
+  return [progress, from, to](double f, const char* phase) { return progress(from + (to - from) * f, phase); };
+}
+
 }  // namespace slicereuse

@@ -275,11 +275,18 @@ void stitch_blocks(const std::vector<BlockContours>& blocks, size_t L, Slices& o
 
 }  // namespace
 
-Slices slice_layers(const Mesh& mesh, const SliceOptions& options, const Progress& progress) {
+std::vector<double> slicing_planes(const Mesh& mesh, const SliceOptions& options, double* z_start) {
   validate_mesh(mesh);
   const ZRange z = z_range(mesh);
-  const double z_start = std::isnan(options.z_start) ? z.min : options.z_start;
-  Slices out = slice_planes(mesh, layer_planes(z_start, options.thickness, z.max), progress, options.encoding);
+  const double start = std::isnan(options.z_start) ? z.min : options.z_start;
+  if (z_start) *z_start = start;
+  return layer_planes(start, options.thickness, z.max);
+}
+
+Slices slice_layers(const Mesh& mesh, const SliceOptions& options, const Progress& progress) {
+  double z_start = 0;
+  std::vector<double> planes = slicing_planes(mesh, options, &z_start);
+  Slices out = slice_planes(mesh, std::move(planes), progress, options.encoding);
   out.z_start = z_start;
   out.thickness = options.thickness;
   return out;

@@ -7,6 +7,7 @@
 // Placement: the model's XY origin sits at the display centre, shifted by offset_x/y_mm;
 // row 0 is the top of the image (largest y). mirror_x / mirror_y flip the image.
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,20 @@ struct MaskExportStats {
 // a Prusa SL1 archive of the same PNGs plus config.ini. Multithreaded; only a few layers are
 // held in memory at a time. Atomic: nothing is left under the final name on failure.
 MaskExportStats export_masks(const Slices& s, const PrinterProfile& profile,
+                             const std::string& output_path, const Progress& progress = {});
+
+// A stack too large to hold at once, made a range of layers at a time (layer_chunks.h):
+// make(i, progress) returns the slices of layers [first[i], first[i + 1]), counted from 0 within
+// the range. Export calls it once per range, in order, on the calling thread, and frees each
+// range's slices before it makes the next, so memory holds one range (plus a few images).
+struct SliceChunks {
+  std::vector<size_t> first;  // range starts, then the layer count
+  double thickness = 0;
+  std::function<Slices(size_t i, const Progress& progress)> make;
+};
+
+// The same export of the stack the ranges make up, equal to exporting it whole.
+MaskExportStats export_masks(const SliceChunks& chunks, const PrinterProfile& profile,
                              const std::string& output_path, const Progress& progress = {});
 
 struct LayerSimilarity {

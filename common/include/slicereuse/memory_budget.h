@@ -12,7 +12,8 @@ namespace slicereuse {
 
 void check_memory_for(uint64_t bytes, const std::string& what, const std::string& advice);
 
-// MemAvailable in bytes, or 0 when unknown.
+// MemAvailable in bytes, or less when the process's memory control group (cgroup v1 or v2, e.g. a
+// container's limit) allows less; 0 when unknown.
 uint64_t available_memory();
 
 }  // namespace slicereuse

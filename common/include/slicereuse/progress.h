@@ -12,4 +12,7 @@ using Progress = std::function<bool(double fraction, const char* phase)>;
 // Calls progress (if set) and throws Cancelled when it returns false.
 void report_progress(const Progress& progress, double fraction, const char* phase);
 
+// Progress of one part of a job mapped onto [from, to] of the whole; empty when progress is.
+Progress sub_progress(const Progress& progress, double from, double to);
+
 }  // namespace slicereuse

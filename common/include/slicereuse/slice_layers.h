@@ -30,6 +30,10 @@ struct SliceOptions {
 
 Slices slice_layers(const Mesh& mesh, const SliceOptions& options, const Progress& progress = {});
 
+// The planes slice_layers(mesh, options) slices at, and (when z_start is not null) the z_start it
+// records: options.z_start, or the lowest vertex's z when that is NaN.
+std::vector<double> slicing_planes(const Mesh& mesh, const SliceOptions& options, double* z_start = nullptr);
+
 // The same for any increasing list of plane heights (layer_z = planes; z_start and thickness
 // are left 0): transfer_contours re-slices just the layers it cannot certify.
 Slices slice_planes(const Mesh& mesh, std::vector<double> planes, const Progress& progress = {},

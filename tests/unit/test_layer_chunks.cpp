@@ -1,0 +1,178 @@
+// Layer ranges for stacks too large to hold at once (layer_chunks.h), and mask export a range
+// at a time (export_masks of SliceChunks), which must equal the export of the whole stack.
+#include <gtest/gtest.h>
+#include <zip.h>
+
+#include <filesystem>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "error_of.h"
+#include "family.h"
+#include "slicereuse/error.h"
+#include "slicereuse/layer_chunks.h"
+#include "slicereuse/layer_planes.h"
+#include "slicereuse/masks.h"
+#include "slicereuse/slice_layers.h"
+#include "temp_folder.h"
+
+using namespace slicereuse;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Job {
+  Mesh mesh;
+  std::vector<double> planes;
+  Slices whole;
+  PrinterProfile profile;
+};
+
+Job arch_job() {
+  Job j;
+  test::FamilyOptions o;
+  o.faces = 20000;
+  j.mesh = test::make_family_base(o);
+  j.planes = layer_planes(0, 0.05, o.height);
+  j.whole = slice_planes(j.mesh, j.planes, {}, false);
+  j.whole.thickness = 0.05;
+  // The arch centred on the default 1024 x 768 display at 75 um.
+  double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+  for (size_t v = 0; v < j.mesh.vertices(); ++v)
+    for (int d = 0; d < 2; ++d) {
+      lo[d] = std::min(lo[d], j.mesh.V[3 * v + d]);
+      hi[d] = std::max(hi[d], j.mesh.V[3 * v + d]);
+    }
+  j.profile.offset_x_mm = -(lo[0] + hi[0]) / 2;
+  j.profile.offset_y_mm = -(lo[1] + hi[1]) / 2;
+  return j;
+}
+
+size_t points_of_layers(const Slices& s, size_t k0, size_t k1) {
+  return s.contour_begin[s.layer_begin[k1]] - s.contour_begin[s.layer_begin[k0]];
+}
+
+SliceChunks chunks_of(const Job& j, std::vector<size_t> first) {
+  SliceChunks c;
+  c.first = std::move(first);
+  c.thickness = 0.05;
+  c.make = [&j, f = c.first](size_t i, const Progress& progress) {
+    Slices s = slice_planes(j.mesh, std::vector<double>(j.planes.begin() + long(f[i]), j.planes.begin() + long(f[i + 1])),
+                            progress, false);
+    s.thickness = 0.05;
+    return s;
+  };
+  return c;
+}
+
+std::string config_ini(const std::string& sl1) {
+  int err = 0;
+  zip_t* z = zip_open(sl1.c_str(), ZIP_RDONLY, &err);
+  EXPECT_NE(z, nullptr);
+  zip_stat_t st;
+  EXPECT_EQ(zip_stat(z, "config.ini", 0, &st), 0);
+  std::string text(st.size, '\0');
+  zip_file_t* f = zip_fopen(z, "config.ini", 0);
+  EXPECT_EQ(zip_fread(f, text.data(), st.size), zip_int64_t(st.size));
+  zip_fclose(f);
+  zip_discard(z);
+  return text.substr(text.find("usedMaterial"), text.find('\n', text.find("usedMaterial")) - text.find("usedMaterial"));
+}
+
+class ChunkedMaskExport : public test::TempFolderTest {};
+
+}  // namespace
+
+TEST(LayerChunks, CountsTheSlicedPointsAndEachRangeFitsTheBudget) {
+  const Job j = arch_job();
+  const size_t L = j.planes.size(), P = j.whole.points();
+  ASSERT_EQ(j.whole.open_contours(), 0u);  // closed: one point per crossed face, exactly
+  EXPECT_EQ(layer_chunks(j.mesh, j.planes, 0, 24), (std::vector<size_t>{0, L}));
+  EXPECT_EQ(layer_chunks(j.mesh, j.planes, 24 * P, 24), (std::vector<size_t>{0, L}));
+  const std::vector<size_t> tight = layer_chunks(j.mesh, j.planes, 24 * P - 1, 24);
+  EXPECT_EQ(tight.size(), 3u);
+
+  const uint64_t budget = 24 * P / 5;
+  const std::vector<size_t> first = layer_chunks(j.mesh, j.planes, budget, 24);
+  ASSERT_GE(first.size(), 7u);  // at least 6 ranges: each at most a fifth of the points
+  ASSERT_LE(first.size(), 8u);
+  EXPECT_EQ(first.front(), 0u);
+  EXPECT_EQ(first.back(), L);
+  size_t total = 0;
+  for (size_t i = 0; i + 1 < first.size(); ++i) {
+    ASSERT_LT(first[i], first[i + 1]);
+    const size_t points = points_of_layers(j.whole, first[i], first[i + 1]);
+    EXPECT_LE(24 * points, budget) << "range " << i;
+    // Full: one more layer would not have fitted.
+    if (first[i + 1] < L) EXPECT_GT(24 * points_of_layers(j.whole, first[i], first[i + 1] + 1), budget);
+    total += points;
+  }
+  EXPECT_EQ(total, P);
+  // A budget below one layer: every layer is a range of its own.
+  EXPECT_EQ(layer_chunks(j.mesh, j.planes, 1, 24).size(), L + 1);
+}
+
+TEST_F(ChunkedMaskExport, EqualsTheExportOfTheWholeStack) {
+  const Job j = arch_job();
+  const std::vector<size_t> first = layer_chunks(j.mesh, j.planes, 24 * j.whole.points() / 4, 24);
+  ASSERT_GE(first.size(), 6u);
+  const SliceChunks chunks = chunks_of(j, first);
+  for (const char* ext : {".sl1", ""}) {
+    const std::string whole = dir + "/whole" + ext, ranged = dir + "/ranged" + ext;
+    size_t made = 0;
+    SliceChunks counted = chunks;
+    counted.make = [&](size_t i, const Progress& p) {
+      EXPECT_EQ(i, made++);  // once per range, in order
+      return chunks.make(i, p);
+    };
+    const MaskExportStats a = export_masks(j.whole, j.profile, whole);
+    const MaskExportStats b = export_masks(counted, j.profile, ranged);
+    EXPECT_EQ(made, first.size() - 1);
+    EXPECT_EQ(b.layers, a.layers);
+    EXPECT_EQ(b.ignored_open_contours, a.ignored_open_contours);
+    EXPECT_EQ(b.min_x, a.min_x);
+    EXPECT_EQ(b.max_x, a.max_x);
+    EXPECT_EQ(b.min_y, a.min_y);
+    EXPECT_EQ(b.max_y, a.max_y);
+    EXPECT_FALSE(b.outside_display);
+    const StackComparison c = compare_mask_stacks(whole, ranged, "");
+    EXPECT_EQ(c.layers.size(), j.planes.size());
+    EXPECT_EQ(c.min_similarity, 1.0);
+    EXPECT_EQ(c.differing_pixels, 0u);
+    if (*ext) EXPECT_EQ(config_ini(ranged), config_ini(whole));
+  }
+}
+
+TEST_F(ChunkedMaskExport, CancellingWhileARangeIsMadeLeavesNothing) {
+  const Job j = arch_job();
+  const SliceChunks chunks = chunks_of(j, layer_chunks(j.mesh, j.planes, 24 * j.whole.points() / 3, 24));
+  for (const char* name : {"/c.sl1", "/c"}) {
+    bool making = false;
+    SliceChunks cancelled = chunks;
+    cancelled.make = [&](size_t i, const Progress& p) {
+      making = i == 1;
+      return chunks.make(i, p);
+    };
+    EXPECT_THROW(export_masks(cancelled, j.profile, dir + name, [&](double, const char*) { return !making; }),
+                 Cancelled);
+    EXPECT_FALSE(fs::exists(dir + name));
+  }
+  EXPECT_TRUE(fs::is_empty(dir));
+}
+
+TEST_F(ChunkedMaskExport, RefusesRangesThatDoNotTileTheStack) {
+  const Job j = arch_job();
+  const size_t L = j.planes.size();
+  for (const std::vector<size_t>& first : std::vector<std::vector<size_t>>{{}, {0}, {1, L}, {0, 5, 5, L}, {0, 7, 3, L}})
+    EXPECT_NE(test::error_of([&] { export_masks(chunks_of(j, first), j.profile, dir + "/x.sl1"); })
+                  .find("layer ranges"),
+              std::string::npos);
+  // A range that does not hold the layers it was asked for.
+  SliceChunks wrong = chunks_of(j, {0, 10, L});
+  const auto make = wrong.make;
+  wrong.make = [make](size_t i, const Progress& p) { return make(i == 1 ? 0 : i, p); };
+  EXPECT_NE(test::error_of([&] { export_masks(wrong, j.profile, dir + "/y.sl1"); }).find("holds 10 layers"),
+            std::string::npos);
+  EXPECT_TRUE(fs::is_empty(dir));
+}
