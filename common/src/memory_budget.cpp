@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <cstring>
 
@@ -79,6 +80,22 @@ uint64_t cgroup_headroom() {
   return headroom;
 }
 
+// SLICEREUSE_MEMORY_LIMIT: what a person allows the plugin to plan for (bytes, or with a K, M or G
+// suffix, powers of 1024), e.g. to leave room for other jobs. UINT64_MAX when not set.
+uint64_t user_limit() {
+  const char* text = std::getenv("SLICEREUSE_MEMORY_LIMIT");
+  if (text == nullptr || *text == '\0') return UINT64_MAX;
+  char* end = nullptr;
+  const double n = std::strtod(text, &end);
+  const std::string unit(end);
+  const double scale = unit.empty() ? 1 : unit == "K" ? 0x1p10 : unit == "M" ? 0x1p20 : unit == "G" ? 0x1p30 : 0;
+  if (end == text || !(n > 0) || scale == 0 || !(n * scale < 0x1p63))
+    throw Error(format("SLICEREUSE_MEMORY_LIMIT is '%s', which is not a memory size such as 4G, 500M or "
+                       "1000000 bytes",
+                       text));
+  return uint64_t(n * scale);
+}
+
 }  // namespace
 
 uint64_t available_memory() {
@@ -90,7 +107,7 @@ uint64_t available_memory() {
     if (std::sscanf(line, "MemAvailable: %llu kB", &kib) == 1) break;
   std::fclose(f);
   if (kib == 0) return 0;
-  return std::min(uint64_t(kib) * 1024, cgroup_headroom());
+  return std::min({uint64_t(kib) * 1024, cgroup_headroom(), user_limit()});
 }
 
 void check_memory_for(uint64_t bytes, const std::string& what, const std::string& advice) {

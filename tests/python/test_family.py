@@ -147,3 +147,41 @@ def test_print_job_reads_the_encoding_once(pymeshlab, make_family, tmp_path):
     assert job(members[3])["encoding_cached"] == 0
     encoding.rename(tmp_path / "moved.srb")
     assert job(members[1], tmp_path / "moved.srb")["encoding_cached"] == 0
+
+
+def test_print_job_within_a_memory_limit_slices_a_range_at_a_time(pymeshlab, make_family, tmp_path, monkeypatch):
+    """A direct print job whose contours would take more than a quarter of the memory it may use
+    (here capped by SLICEREUSE_MEMORY_LIMIT) is sliced and exported a range of layers at a time;
+    the archive equals the one made from the whole stack: the same layer images byte for byte and
+    the same resin volume."""
+    member = make_family("arch", 1)[0]
+    ms = pymeshlab.MeshSet()
+    ms.load_new_mesh(str(member))
+    whole = ms.apply_filter("make_print_job", layer_thickness=THICKNESS, output_path=str(tmp_path / "whole.sl1"))
+    assert whole["layer_ranges"] == 1 and whole["layers"] == 80
+    stack_bytes = 24 * whole["points"]
+    monkeypatch.setenv("SLICEREUSE_MEMORY_LIMIT", str(4 * stack_bytes // 3))  # a quarter: 1/3 of the stack
+    ranged = ms.apply_filter("make_print_job", layer_thickness=THICKNESS, output_path=str(tmp_path / "ranged.sl1"))
+    assert 3 <= ranged["layer_ranges"] <= 5, ranged
+    assert (ranged["layers"], ranged["points"], ranged["resliced_layers"]) == (80, whole["points"], 80)
+    images = lambda sl1: [png for _, png in sorted(layer_pngs(sl1).items())]  # names carry the job's name
+    assert images(tmp_path / "ranged.sl1") == images(tmp_path / "whole.sl1")
+
+    def used_material(sl1):
+        with zipfile.ZipFile(sl1) as z:
+            return [l for l in z.read("config.ini").decode().splitlines() if l.startswith("usedMaterial")]
+
+    assert used_material(tmp_path / "ranged.sl1") == used_material(tmp_path / "whole.sl1") != []
+    # A contour file needs the whole stack: it is sliced whole (it fits the 4/3 of the stack).
+    kept = ms.apply_filter("make_print_job", layer_thickness=THICKNESS, output_path=str(tmp_path / "kept.sl1"),
+                           contour_file=str(tmp_path / "kept.srb"))
+    assert kept["layer_ranges"] == 1 and (tmp_path / "kept.srb").exists()
+    # Below the stack itself, slicing it whole is refused with the figures; nothing is written.
+    monkeypatch.setenv("SLICEREUSE_MEMORY_LIMIT", str(stack_bytes // 2))
+    with pytest.raises(pymeshlab.PyMeshLabException, match=r"needs .* GB of memory, but only .* GB are available"):
+        ms.apply_filter("make_print_job", layer_thickness=THICKNESS, output_path=str(tmp_path / "no.sl1"),
+                        contour_file=str(tmp_path / "no.srb"))
+    assert not (tmp_path / "no.sl1").exists() and not (tmp_path / "no.srb").exists()
+    monkeypatch.setenv("SLICEREUSE_MEMORY_LIMIT", "plenty")
+    with pytest.raises(pymeshlab.PyMeshLabException, match="SLICEREUSE_MEMORY_LIMIT is 'plenty'"):
+        ms.apply_filter("make_print_job", layer_thickness=THICKNESS, output_path=str(tmp_path / "no.sl1"))

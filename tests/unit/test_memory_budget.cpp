@@ -1,0 +1,51 @@
+// available_memory and check_memory_for: the smallest of MemAvailable, the cgroup's headroom and
+// SLICEREUSE_MEMORY_LIMIT, and refusals that give the figures.
+#include <gtest/gtest.h>
+#include <stdlib.h>
+
+#include <string>
+
+#include "error_of.h"
+#include "slicereuse/memory_budget.h"
+
+using namespace slicereuse;
+
+namespace {
+
+// Sets SLICEREUSE_MEMORY_LIMIT for one test and removes it afterwards.
+class MemoryLimit : public ::testing::Test {
+ protected:
+  void TearDown() override { ::unsetenv("SLICEREUSE_MEMORY_LIMIT"); }
+  static void set(const char* value) { ::setenv("SLICEREUSE_MEMORY_LIMIT", value, 1); }
+};
+
+}  // namespace
+
+TEST_F(MemoryLimit, CapsWhatIsAvailable) {
+  const uint64_t machine = available_memory();
+  ASSERT_GT(machine, uint64_t(64) << 20);  // /proc/meminfo is readable here
+  set("64M");
+  EXPECT_EQ(available_memory(), uint64_t(64) << 20);
+  set("0.5G");
+  EXPECT_EQ(available_memory(), std::min(machine, uint64_t(512) << 20));
+  set("1000000");
+  EXPECT_EQ(available_memory(), 1000000u);
+  set("1000000000G");  // more than the machine has: the machine's figure
+  EXPECT_LE(available_memory(), machine + (uint64_t(256) << 20));
+}
+
+TEST_F(MemoryLimit, RefusesAJobAboveItWithTheFigures) {
+  set("1G");
+  EXPECT_NO_THROW(check_memory_for(uint64_t(1) << 29, "slicing 10 layers", "use a thicker layer"));
+  const std::string e =
+      test::error_of([] { check_memory_for(uint64_t(3) << 30, "slicing 10 layers", "use a thicker layer"); });
+  EXPECT_EQ(e, "slicing 10 layers needs 3.2 GB of memory, but only 1.1 GB are available; use a thicker layer");
+}
+
+TEST_F(MemoryLimit, AValueThatIsNoSizeIsNamed) {
+  for (const char* bad : {"lots", "4GB", "-1G", "0", "1e30G", "G"}) {
+    set(bad);
+    const std::string e = test::error_of([] { available_memory(); });
+    EXPECT_NE(e.find("SLICEREUSE_MEMORY_LIMIT is '" + std::string(bad) + "'"), std::string::npos) << e;
+  }
+}
