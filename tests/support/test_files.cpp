@@ -1,5 +1,7 @@
 #include "test_files.h"
 
+#include <zip.h>
+
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -79,6 +81,27 @@ void expect_same_structure(const Slices& a, const Slices& b) {
 std::string slurp(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+std::string zip_entry(const std::string& archive, const std::string& name) {
+  int err = 0;
+  zip_t* z = zip_open(archive.c_str(), ZIP_RDONLY, &err);
+  if (z == nullptr) {
+    ADD_FAILURE() << "cannot open " << archive;
+    return "";
+  }
+  zip_stat_t st;
+  std::string bytes;
+  if (zip_stat(z, name.c_str(), 0, &st) == 0) {
+    bytes.resize(st.size);
+    zip_file_t* f = zip_fopen(z, name.c_str(), 0);
+    EXPECT_EQ(zip_fread(f, bytes.data(), st.size), zip_int64_t(st.size));
+    zip_fclose(f);
+  } else {
+    ADD_FAILURE() << archive << " has no entry " << name;
+  }
+  zip_discard(z);
+  return bytes;
 }
 
 void spit(const std::string& path, const std::string& bytes) {

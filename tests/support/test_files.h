@@ -39,6 +39,8 @@ std::string slurp(const std::string& path);
 // Removes first: truncating a file in place makes ext4 flush it to disk on close, which slows
 // the tests that rewrite a file thousands of times by an order of magnitude.
 void spit(const std::string& path, const std::string& bytes);
+// The bytes of one entry of a zip archive (an .sl1); "" and a test failure when it is missing.
+std::string zip_entry(const std::string& archive, const std::string& name);
 
 // TempFolderTest (a fresh folder per test) that can also list what atomic writers left behind.
 class FileTest : public TempFolderTest {

@@ -20,6 +20,7 @@
 #include "slicereuse/masks.h"
 #include "error_of.h"
 #include "temp_folder.h"
+#include "test_files.h"
 
 namespace fs = std::filesystem;
 using namespace slicereuse;
@@ -348,20 +349,8 @@ TEST_F(MaskFiles, Sl1ConfigCarriesTheDisplay) {
   PrinterProfile p = small_display();
   p.mirror_y = true;
   export_masks(sample_stack(), p, dir + "/x.sl1");
-  int err = 0;
-  zip_t* z = zip_open((dir + "/x.sl1").c_str(), ZIP_RDONLY, &err);
-  ASSERT_NE(z, nullptr);
-  auto entry = [&](const char* name) {
-    zip_stat_t st;
-    EXPECT_EQ(zip_stat(z, name, 0, &st), 0);
-    std::string text(st.size, '\0');
-    zip_file_t* f = zip_fopen(z, name, 0);
-    EXPECT_EQ(zip_fread(f, text.data(), st.size), zip_int64_t(st.size));
-    zip_fclose(f);
-    return text;
-  };
-  const std::string config = entry("config.ini"), slicer = entry("prusaslicer.ini");
-  zip_discard(z);
+  const std::string config = test::zip_entry(dir + "/x.sl1", "config.ini"),
+                    slicer = test::zip_entry(dir + "/x.sl1", "prusaslicer.ini");
   for (const char* line : {"jobDir = x\n", "numFast = 3\n", "numSlow = 0\n", "layerHeight = 0.1\n",
                            "action = print\n", "printerModel = SL1\n"})
     EXPECT_NE(config.find(line), std::string::npos) << line;
@@ -376,16 +365,7 @@ TEST_F(MaskFiles, Sl1ConfigCarriesTheResinVolumeSummedWhileTheLayersAreMade) {
   // 1 mm layers: a 10 x 10 mm square, then the same square with a 4 x 4 mm hole: 184 mm^3.
   const Slices s = make_slices({{rect(-5, -5, 5, 5)}, {rect(-5, -5, 5, 5), rect(-2, -2, 2, 2, true)}}, 1.0);
   export_masks(s, small_display(), dir + "/v.sl1");
-  int err = 0;
-  zip_t* z = zip_open((dir + "/v.sl1").c_str(), ZIP_RDONLY, &err);
-  ASSERT_NE(z, nullptr);
-  zip_stat_t st;
-  ASSERT_EQ(zip_stat(z, "config.ini", 0, &st), 0);
-  std::string config(st.size, '\0');
-  zip_file_t* f = zip_fopen(z, "config.ini", 0);
-  ASSERT_EQ(zip_fread(f, config.data(), st.size), zip_int64_t(st.size));
-  zip_fclose(f);
-  zip_discard(z);
+  const std::string config = test::zip_entry(dir + "/v.sl1", "config.ini");
   EXPECT_NE(config.find("usedMaterial = 0.184\n"), std::string::npos) << config;
 }
 
