@@ -20,6 +20,7 @@
 #   median over the x-y members; z: the member changed in z, reuse against direct.
 #   CPU: the same spans in CPU seconds of all threads; on a busy shared machine their ratio is
 #   the steadier one (wall seconds on 2 idle cores are about CPU / 2 for the parallel parts).
+#   S: each member's reused .sl1 against its direct one (1 when every layer image is the same bytes).
 # Prints the table and writes it to DIR/bench_family.md, the raw JSON next to it, and a chart
 # to docs/bench_family.png (gnuplot). Unattended; needs scripts/setup and scripts/build first.
 set -euo pipefail
@@ -71,7 +72,7 @@ else
 fi
 
 "$root/scripts/python" - "$out" "$faces" "$thickness" "$prusa" "$prusa_thickness" "$prusa_note" "$root/docs" <<'PY'
-import json, statistics, subprocess, sys
+import json, statistics, subprocess, sys, zipfile
 from pathlib import Path
 out, faces, thickness, prusa, prusa_thickness, prusa_note, docs = sys.argv[1:]
 out, thickness, prusa_thickness = Path(out), float(thickness), float(prusa_thickness)
@@ -91,6 +92,20 @@ if prusa:
     if prusa_thickness != thickness:
         prusa_note += f", scaled x{prusa_thickness / thickness:g} to {thickness} mm"
 fmt = lambda x, d=2: "-" if x is None else f"{x:.{d}f}"
+
+
+def similarity(a, b):
+    """S of two .sl1 archives: 1 when every layer's PNG is the same bytes (cheap), otherwise
+    compare_mask_stacks' smallest per-layer S."""
+    with zipfile.ZipFile(a) as za, zipfile.ZipFile(b) as zb:
+        layers = lambda z: [z.read(n) for n in sorted(n for n in z.namelist() if n.endswith(".png"))]
+        if layers(za) == layers(zb):
+            return "1 (identical)"
+    import slicereuse_pymeshlab as sr
+    ms = sr.load().MeshSet()
+    return f"{ms.apply_filter('compare_mask_stacks', stack_a=a, stack_b=b, report_file='')['min_similarity']:.6f}"
+
+
 head = ["Model", "Size (faces)", "#L", "T_slice (s)", "T_S2I (s)", "T_reuse (s)",
         "PrusaSlicer (s/member)", "direct (s/member)", "reuse (s/member)", "direct / reuse",
         "PrusaSlicer / reuse", "CPU s/member direct / reuse", "z member: reuse / direct", "peak memory reuse / direct (GB)",
@@ -103,11 +118,14 @@ md = [f"Family benchmark: arch, {int(faces):,} faces, 14.484 mm at {thickness} m
       f"{len(rows('reuse', False))} x-y members and one changed in z; medians over the x-y members; "
       f"PrusaSlicer {prusa_note}.", "",
       "| " + " | ".join(head) + " |", "|" + "---|" * len(head), "| " + " | ".join(row) + " |", "",
-      "Per member (seconds, everything included):", "",
-      "| member | layers | points | re-sliced | reuse | direct | reuse CPU | direct CPU |", "|---|---|---|---|---|---|---|---|"]
+      "Per member (seconds, everything included; S: the reused .sl1 against the direct one, the "
+      "smallest over its layers):", "",
+      "| member | layers | points | re-sliced | reuse | direct | reuse CPU | direct CPU | S |",
+      "|---|---|---|---|---|---|---|---|---|"]
 for r, d in zip(runs["reuse"]["targets"], runs["direct"]["targets"]):
     md.append(f"| {Path(r['mesh']).name} | {r['layers']} | {r['points']} | {r['resliced_layers']} | "
-              f"{r['seconds']:.2f} | {d['seconds']:.2f} | {r['cpu_seconds']:.2f} | {d['cpu_seconds']:.2f} |")
+              f"{r['seconds']:.2f} | {d['seconds']:.2f} | {r['cpu_seconds']:.2f} | {d['cpu_seconds']:.2f} | "
+              f"{similarity(r['output'], d['output'])} |")
 text = "\n".join(md) + "\n"
 (out / "bench_family.md").write_text(text)
 print(text)
