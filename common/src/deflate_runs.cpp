@@ -172,7 +172,9 @@ void RunDeflater::repeats() {
 }
 
 void RunDeflater::add(const uint8_t* data, size_t n) {
+  fold_adler();
   adler_ = uint32_t(adler32(adler_, data, uInt(n)));
+  run_a_ = adler_ & 0xffff;
   size_t i = 0;
   while (i < n) {
     if (data[i] == last_) {
@@ -194,12 +196,29 @@ void RunDeflater::add(const uint8_t* data, size_t n) {
 
 void RunDeflater::add_run(uint8_t byte, size_t n) {
   if (n == 0) return;
-  // Adler-32 over n bytes b: A' = A + n*b, B' = B + n*A + b*n*(n+1)/2, both mod 65521.
-  constexpr uint64_t kMod = 65521;
-  const uint64_t a = adler_ & 0xffff, b = adler_ >> 16, m = n % kMod;
-  const uint64_t triangle = (n % 2 == 0 ? (n / 2 % kMod) * ((n + 1) % kMod) : (n % kMod) * ((n + 1) / 2 % kMod)) % kMod;
-  const uint64_t a2 = (a + m * byte) % kMod, b2 = (b + m * a + byte * triangle) % kMod;
-  adler_ = uint32_t(b2 << 16 | a2);
+  // Adler-32 over n bytes b: A' = A + n*b, B' = B + n*A + b*n*(n+1)/2, mod 65521. B is reduced
+  // only when it could overflow (see run_b_), not per run: the reductions were most of the cost.
+  const uint64_t a = run_a_;
+  if (n > kMaxRun || run_b_ > kMaxB) {
+    fold_adler();
+    if (n > kMaxRun) {  // longer than any mask image: in pieces that keep the bound
+      for (; n > kMaxRun; n -= kMaxRun) add_run(byte, kMaxRun);
+      add_run(byte, n);
+      return;
+    }
+  }
+  run_b_ += n * a + uint64_t(byte) * (n * (n + 1) / 2);
+  run_a_ = (a + n * byte) % kAdlerMod;
+  count_run(byte, n);
+}
+
+void RunDeflater::fold_adler() {
+  const uint64_t b = ((adler_ >> 16) + run_b_) % kAdlerMod;
+  adler_ = uint32_t(b << 16 | run_a_);
+  run_b_ = 0;
+}
+
+void RunDeflater::count_run(uint8_t byte, size_t n) {
   if (byte != last_) {
     repeats();
     symbols_.push_back(byte);
@@ -211,6 +230,7 @@ void RunDeflater::add_run(uint8_t byte, size_t n) {
 
 void RunDeflater::finish() {
   repeats();
+  fold_adler();
   const auto& lengths_of = length_codes();
   std::vector<uint64_t> freq(286, 0);
   for (uint16_t s : symbols_) ++freq[s < 256 ? s : lengths_of[s - 256].symbol];

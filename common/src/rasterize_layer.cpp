@@ -33,7 +33,7 @@ struct Scratch {
   std::vector<double> v;
   std::vector<int> row;
   std::vector<Edge> edges;
-  std::vector<uint32_t> row_count, order, active;
+  std::vector<uint32_t> row_count, order;
   std::vector<Crossing> crossings;
   std::vector<uint16_t> coverage;
 };
@@ -44,8 +44,12 @@ double clamp(double x, double lo, double hi) { return !(x >= lo) ? lo : (x > hi 
 // Index of the first sample whose centre (i + 1/2) is at or after x, within [0, n].
 // (Clamped to [0, n] after rounding: ceil of the clamped value alone could give -1 or n + 1,
 // one pixel outside the row, for a part that leaves the display.)
+// The ceiling by truncation and one comparison: std::ceil is a library call on baseline x86-64
+// (no SSE4.1 round), and this runs for every contour point and every crossing.
 int first_sample_at_or_after(double x, int n) {
-  return std::clamp(int(std::ceil(clamp(x - 0.5, -1.0, double(n) + 1.0))), 0, n);
+  const double t = clamp(x - 0.5, -1.0, double(n) + 1.0);
+  const int truncated = int(t);
+  return std::clamp(truncated + int(double(truncated) < t), 0, n);
 }
 
 // Builds the oriented edges of the closed contours of layer k in sample coordinates
@@ -93,43 +97,54 @@ size_t build_edges(const Slices& s, size_t k, const PrinterProfile& p, int scale
   return open;
 }
 
-// Sweeps sample rows top to bottom with an active edge list; for every run of samples whose
-// centres have nonzero winding calls span(row, first, end). A crossing at x counts for the
-// samples whose centre is at or right of x, so a centre exactly on an edge is decided the same
-// way whatever the order of edges.
+// Sorts a row's few crossings by x: insertion sort, which beats std::sort on the handful a row of
+// a mask has. Crossings at equal x may end in any order: the spans between them are empty.
+void sort_by_x(Crossing* c, size_t n) {
+  if (n > 32) {
+    std::sort(c, c + n);
+    return;
+  }
+  for (size_t i = 1; i < n; ++i) {
+    const Crossing v = c[i];
+    size_t j = i;
+    for (; j > 0 && v.x < c[j - 1].x; --j) c[j] = c[j - 1];
+    c[j] = v;
+  }
+}
+
+// Visits sample rows top to bottom; for every run of samples whose centres have nonzero winding
+// calls span(row, first, end). The crossings of every edge with the row centres it spans are
+// bucketed by row first (a counting sort: most edges of a fine contour cross one row, so an
+// active edge list would cost more than the crossings themselves), then sorted along each row.
+// A crossing at x counts for the samples whose centre is at or right of x, so a centre exactly
+// on an edge is decided the same way whatever the order of edges.
 template <class Span>
 void sweep(Scratch& w, int rows, int cols, Span&& span) {
   w.row_count.assign(size_t(rows) + 1, 0);
-  for (const Edge& e : w.edges) ++w.row_count[size_t(e.first_row) + 1];
+  for (const Edge& e : w.edges)
+    for (int r = e.first_row; r < e.end_row; ++r) ++w.row_count[size_t(r) + 1];
   for (int r = 0; r < rows; ++r) w.row_count[size_t(r) + 1] += w.row_count[size_t(r)];
-  w.order.resize(w.edges.size());
-  {
-    std::vector<uint32_t>& next = w.active;  // reused as fill cursors
-    next.assign(w.row_count.begin(), w.row_count.end() - 1);
-    for (uint32_t e = 0; e < w.edges.size(); ++e) w.order[next[size_t(w.edges[e].first_row)]++] = e;
-  }
-  w.active.clear();
-  for (int r = 0; r < rows; ++r) {
-    for (uint32_t i = w.row_count[size_t(r)]; i < w.row_count[size_t(r) + 1]; ++i)
-      w.active.push_back(w.order[i]);
-    if (w.active.empty()) continue;
-    const double yc = r + 0.5;
-    w.crossings.clear();
-    size_t kept = 0;
-    for (uint32_t e : w.active) {
-      const Edge& g = w.edges[e];
-      if (g.end_row <= r) continue;
-      w.active[kept++] = e;
-      w.crossings.push_back({g.xa + (yc - g.ya) * (g.xb - g.xa) / (g.yb - g.ya), g.dir});
+  w.crossings.resize(w.row_count[size_t(rows)]);
+  std::vector<uint32_t>& next = w.order;  // fill cursors
+  next.assign(w.row_count.begin(), w.row_count.end() - 1);
+  for (const Edge& e : w.edges) {
+    const double dx = e.xb - e.xa, dy = e.yb - e.ya;
+    for (int r = e.first_row; r < e.end_row; ++r) {
+      const double yc = r + 0.5;
+      w.crossings[next[size_t(r)]++] = {e.xa + (yc - e.ya) * dx / dy, e.dir};
     }
-    w.active.resize(kept);
-    std::sort(w.crossings.begin(), w.crossings.end());
+  }
+  for (int r = 0; r < rows; ++r) {
+    Crossing* c = w.crossings.data() + w.row_count[size_t(r)];
+    const size_t n = w.row_count[size_t(r) + 1] - w.row_count[size_t(r)];
+    if (n < 2) continue;
+    sort_by_x(c, n);
     int winding = 0;
-    for (size_t i = 0; i + 1 < w.crossings.size(); ++i) {
-      winding += w.crossings[i].dir;
+    for (size_t i = 0; i + 1 < n; ++i) {
+      winding += c[i].dir;
       if (winding == 0) continue;
-      const int a = first_sample_at_or_after(w.crossings[i].x, cols);
-      const int b = first_sample_at_or_after(w.crossings[i + 1].x, cols);
+      const int a = first_sample_at_or_after(c[i].x, cols);
+      const int b = first_sample_at_or_after(c[i + 1].x, cols);
       if (a < b) span(r, a, b);
     }
   }

@@ -94,3 +94,29 @@ TEST(RunDeflater, RunsWithoutBytesGiveTheSameStream) {
   EXPECT_EQ(by_runs, by_bytes);
   EXPECT_EQ(inflate_all(by_runs, data.size()), data);
 }
+
+TEST(RunDeflater, AdlerOfManyAndHugeRunsMatchesZlibs) {
+  // Runs longer than the 2^24 bytes that are summed in one step (they fold the unreduced
+  // Adler-32 B sum first and go in pieces), between shorter runs and bytes added as bytes.
+  std::vector<uint8_t> data, z;
+  RunDeflater r(z);
+  std::mt19937_64 rng(5);
+  const uint8_t some[] = {1, 2, 255, 0, 255, 3};
+  for (int i = 0; i < 40; ++i) {
+    const uint8_t b = uint8_t(i % 2 ? 255 : 1 + i);
+    const size_t n = i % 7 == 0 ? (size_t(1) << 24) + 12345 + rng() % 99 : 1 + rng() % 3000000;
+    data.insert(data.end(), n, b);
+    r.add_run(b, n);
+    if (i % 5 == 0) {
+      data.insert(data.end(), std::begin(some), std::end(some));
+      r.add(some, sizeof some);
+    }
+  }
+  r.finish();
+  ASSERT_GT(data.size(), size_t(1) << 26);
+  const uint32_t expected = uint32_t(adler32(adler32(0, nullptr, 0), data.data(), uInt(data.size())));
+  const uint32_t stored = uint32_t(z[z.size() - 4]) << 24 | uint32_t(z[z.size() - 3]) << 16 |
+                          uint32_t(z[z.size() - 2]) << 8 | z[z.size() - 1];
+  EXPECT_EQ(stored, expected);
+  EXPECT_EQ(inflate_all(z, data.size()), data);
+}
