@@ -232,8 +232,12 @@ void RunDeflater::finish() {
   repeats();
   fold_adler();
   const auto& lengths_of = length_codes();
+  // Counted per recorded symbol (literal, or 256 + match length), then per deflate symbol.
+  std::array<uint32_t, 256 + 259> count{};
+  for (uint16_t s : symbols_) ++count[s];
   std::vector<uint64_t> freq(286, 0);
-  for (uint16_t s : symbols_) ++freq[s < 256 ? s : lengths_of[s - 256].symbol];
+  for (unsigned s = 0; s < 256; ++s) freq[s] = count[s];
+  for (unsigned len = 3; len <= 258; ++len) freq[lengths_of[len].symbol] += count[256 + len];
   freq[kEndOfBlock] = 1;
   freq[0] |= 1;  // at least two codes, so the code is complete for every inflater
   const std::vector<uint8_t> lit_length = code_lengths(freq, 15);
@@ -273,16 +277,21 @@ void RunDeflater::finish() {
     if (r.symbol == 17) w.put(r.extra, 3);
     if (r.symbol == 18) w.put(r.extra, 7);
   }
-  for (uint16_t s : symbols_) {
-    if (s < 256) {
-      w.put(lit_code[s], lit_length[s]);
-    } else {
-      const LengthCode& lc = lengths_of[s - 256];
-      w.put(lit_code[lc.symbol], lit_length[lc.symbol]);
-      w.put(lc.extra, lc.extra_bits);
-      w.put(0, 1);  // distance code 0: distance 1
-    }
+  // Each recorded symbol's bits in one piece: a literal's code, or a match's length code, extra
+  // bits and distance code 0 (distance 1), at most 15 + 5 + 1 bits.
+  std::array<uint32_t, 256 + 259> bits{};
+  std::array<uint8_t, 256 + 259> nbits{};
+  for (unsigned s = 0; s < 256; ++s) {
+    bits[s] = lit_code[s];
+    nbits[s] = lit_length[s];
   }
+  for (unsigned len = 3; len <= 258; ++len) {
+    const LengthCode& lc = lengths_of[len];
+    const unsigned n = lit_length[lc.symbol];
+    bits[256 + len] = uint32_t(lit_code[lc.symbol]) | uint32_t(lc.extra) << n;
+    nbits[256 + len] = uint8_t(n + lc.extra_bits + 1);
+  }
+  for (uint16_t s : symbols_) w.put(bits[s], nbits[s]);
   w.put(lit_code[kEndOfBlock], lit_length[kEndOfBlock]);
   out_.resize(start + w.flush());
   for (int shift = 24; shift >= 0; shift -= 8) out_.push_back(uint8_t(adler_ >> shift));
