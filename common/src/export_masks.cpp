@@ -44,10 +44,11 @@ bool is_sl1(const std::string& path) {
 }
 
 // What export needs of a layer besides its image, found in the same visit to its points (hot in
-// cache then), not in passes of their own over the whole stack: the closed contours' area
-// (shoelace; holes run clockwise and subtract) for the resin volume, and their extent. A
-// non-finite point anywhere in the layer is refused here (validate_slices leaves the points to
-// this pass).
+// cache for the rasterizer then), not in passes of their own over the whole stack: the closed
+// contours' area (shoelace; holes run clockwise and subtract) for the resin volume, and their
+// extent. validate_slices leaves the points to this pass: a non-finite x or y makes a contour's
+// shoelace sum non-finite, so only then are its points looked at, and a point that cannot be
+// drawn is refused (open contours are not drawn, and z is not used).
 struct LayerSummary {
   double area = 0;
   double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
@@ -56,24 +57,24 @@ struct LayerSummary {
 LayerSummary summarize_layer(const Slices& s, size_t k) {
   LayerSummary m;
   for (uint64_t c = s.layer_begin[k]; c < s.layer_begin[k + 1]; ++c) {
-    const uint64_t b = s.contour_begin[c], e = s.contour_begin[c + 1];
-    bool finite = true;
-    for (uint64_t i = b; i < e; ++i)
-      finite &= std::isfinite(s.xyz[3 * i]) & std::isfinite(s.xyz[3 * i + 1]) & std::isfinite(s.xyz[3 * i + 2]);
-    if (!finite)
-      for (uint64_t i = b; i < e; ++i)
-        for (int d = 0; d < 3; ++d)
-          if (!std::isfinite(s.xyz[3 * i + d]))
-            throw Error(format("contour point %llu (layer %zu) has a coordinate that is not a finite number",
-                               (unsigned long long)i, k));
     if (s.contour_open[c]) continue;
-    m.area += contour_area(s, c);
+    const uint64_t b = s.contour_begin[c], e = s.contour_begin[c + 1];
+    const double* p = s.xyz.data();
+    double twice_area = p[3 * (e - 1)] * p[3 * b + 1] - p[3 * b] * p[3 * (e - 1) + 1];  // closing edge
     for (uint64_t i = b; i < e; ++i) {
-      m.lo_x = std::min(m.lo_x, s.xyz[3 * i]);
-      m.hi_x = std::max(m.hi_x, s.xyz[3 * i]);
-      m.lo_y = std::min(m.lo_y, s.xyz[3 * i + 1]);
-      m.hi_y = std::max(m.hi_y, s.xyz[3 * i + 1]);
+      const double x = p[3 * i], y = p[3 * i + 1];
+      if (i + 1 < e) twice_area += x * p[3 * (i + 1) + 1] - p[3 * (i + 1)] * y;
+      m.lo_x = std::min(m.lo_x, x);
+      m.hi_x = std::max(m.hi_x, x);
+      m.lo_y = std::min(m.lo_y, y);
+      m.hi_y = std::max(m.hi_y, y);
     }
+    if (!std::isfinite(twice_area))  // a non-finite point, or products beyond the double range
+      for (uint64_t i = b; i < e; ++i)
+        if (!std::isfinite(p[3 * i]) || !std::isfinite(p[3 * i + 1]))
+          throw Error(format("contour point %llu (layer %zu) has a coordinate that is not a finite number",
+                             (unsigned long long)i, k));
+    m.area += 0.5 * twice_area;
   }
   return m;
 }
