@@ -69,18 +69,23 @@ size_t build_edges(const Slices& s, size_t k, const PrinterProfile& p, int scale
     const uint64_t b = s.contour_begin[c], n = s.contour_begin[c + 1] - b;
     // Rows first: most edges of a fine contour cross no sample row centre, and those are
     // skipped by comparing their ends' first rows, computed once per point.
+    // (Through locals: the compiler cannot tell that the writes to w leave s and p alone.)
     w.v.resize(n);
     w.row.resize(n);
+    double* const v = w.v.data();
+    int* const row = w.row.data();
+    const double* const xyz = s.xyz.data() + 3 * b;
+    const double ox = p.offset_x_mm, oy = p.offset_y_mm;
     for (uint64_t i = 0; i < n; ++i) {
-      w.v[i] = cv + sv * (s.xyz[3 * (b + i) + 1] + p.offset_y_mm);
-      w.row[i] = first_sample_at_or_after(w.v[i], rows);
+      v[i] = cv + sv * (xyz[3 * i + 1] + oy);
+      row[i] = first_sample_at_or_after(v[i], rows);
     }
-    auto u = [&](uint64_t i) { return cu + su * (s.xyz[3 * (b + i)] + p.offset_x_mm); };
+    auto u = [&](uint64_t i) { return cu + su * (xyz[3 * i] + ox); };
     for (uint64_t i = 0; i < n; ++i) {
       const uint64_t j = i + 1 == n ? 0 : i + 1;
-      if (w.row[i] == w.row[j]) continue;
-      double y0 = w.v[i], x0 = u(i), y1 = w.v[j], x1 = u(j);
-      int r0 = w.row[i], r1 = w.row[j], dir = 1;
+      if (row[i] == row[j]) continue;
+      double y0 = v[i], x0 = u(i), y1 = v[j], x1 = u(j);
+      int r0 = row[i], r1 = row[j], dir = 1;
       if (y1 < y0) {
         std::swap(y0, y1);
         std::swap(x0, x1);
