@@ -8,7 +8,7 @@ import zipfile
 import pytest
 
 import slicereuse_pymeshlab as sr
-from conftest import ROOT, THICKNESS
+from conftest import ROOT, THICKNESS, raises_filter_error
 
 SHAPES = ["arch", "ear", "handle", "box", "sphere", "torus"]
 TARGET_KEYS = {"mesh", "layers", "points", "resliced_layers", "seconds", "output"}
@@ -178,10 +178,9 @@ def test_print_job_within_a_memory_limit_slices_a_range_at_a_time(pymeshlab, mak
     assert kept["layer_ranges"] == 1 and (tmp_path / "kept.srb").exists()
     # Below the stack itself, slicing it whole is refused with the figures; nothing is written.
     monkeypatch.setenv("SLICEREUSE_MEMORY_LIMIT", str(stack_bytes // 2))
-    with pytest.raises(pymeshlab.PyMeshLabException, match=r"needs .* GB of memory, but only .* GB are available"):
-        ms.apply_filter("make_print_job", layer_thickness=THICKNESS, output_path=str(tmp_path / "no.sl1"),
-                        contour_file=str(tmp_path / "no.srb"))
+    raises_filter_error(pymeshlab, ms, "make_print_job", "GB of memory, but only", layer_thickness=THICKNESS,
+                        output_path=str(tmp_path / "no.sl1"), contour_file=str(tmp_path / "no.srb"))
     assert not (tmp_path / "no.sl1").exists() and not (tmp_path / "no.srb").exists()
     monkeypatch.setenv("SLICEREUSE_MEMORY_LIMIT", "plenty")
-    with pytest.raises(pymeshlab.PyMeshLabException, match="SLICEREUSE_MEMORY_LIMIT is 'plenty'"):
-        ms.apply_filter("make_print_job", layer_thickness=THICKNESS, output_path=str(tmp_path / "no.sl1"))
+    raises_filter_error(pymeshlab, ms, "make_print_job", "SLICEREUSE_MEMORY_LIMIT is 'plenty'",
+                        layer_thickness=THICKNESS, output_path=str(tmp_path / "no.sl1"))
