@@ -49,7 +49,8 @@ struct MaskExportStats {
 
 // Writes one PNG per layer as <folder>/<prefix>NNNNN.png, or, when output_path ends in .sl1,
 // a Prusa SL1 archive of the same PNGs plus config.ini. Multithreaded; only a few layers are
-// held in memory at a time. Atomic: nothing is left under the final name on failure.
+// held in memory at a time. Atomic: nothing is left under the final name on failure. A point of
+// a closed contour whose x or y is not finite is refused (Error naming the point and layer).
 MaskExportStats export_masks(const Slices& s, const PrinterProfile& profile,
                              const std::string& output_path, const Progress& progress = {});
 
