@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cstring>
 
+#include "slicereuse/format.h"
 #include "slicereuse/layer_planes.h"
+#include "slicereuse/memory_budget.h"
 #include "slicereuse/parallel_blocks.h"
 #include "slicereuse/slice_layers.h"
 
@@ -60,6 +62,10 @@ Slices assemble(const std::vector<Pick>& pick, std::vector<double> planes, bool 
 }  // namespace
 
 Slices layout_of(const Slices& enc) {
+  // Every transfer's output is allocated here: refused with the figures, not a bad_alloc, when
+  // it would not fit.
+  check_memory_for(enc.points() * 3 * sizeof(double), format("transferring %zu contour points", enc.points()),
+                   "slice the source at a thicker layer, or with fewer layers (z_start)");
   Slices out;
   out.layer_z = enc.layer_z;
   out.layer_begin = enc.layer_begin;

@@ -7,6 +7,9 @@
 
 #include "error_of.h"
 #include "slicereuse/memory_budget.h"
+#include "slicereuse/slice_layers.h"
+#include "slicereuse/transfer_contours.h"
+#include "shapes.h"
 
 using namespace slicereuse;
 
@@ -48,4 +51,17 @@ TEST_F(MemoryLimit, AValueThatIsNoSizeIsNamed) {
     const std::string e = test::error_of([] { available_memory(); });
     EXPECT_NE(e.find("SLICEREUSE_MEMORY_LIMIT is '" + std::string(bad) + "'"), std::string::npos) << e;
   }
+}
+
+TEST_F(MemoryLimit, TransferRefusesAnOutputAboveItWithTheFigures) {
+  const Mesh box = test::make_box(0, 0, 0, 10, 10, 10, 4);
+  SliceOptions o;
+  o.thickness = 0.5;
+  const Slices encoding = slice_layers(box, o);
+  set("1K");  // the 20 layers' points take more than 1 KiB
+  const std::string e = test::error_of([&] { transfer_contours(encoding, box, TransferOptions()); });
+  EXPECT_NE(e.find("transferring " + std::to_string(encoding.points()) + " contour points needs"), std::string::npos)
+      << e;
+  ::unsetenv("SLICEREUSE_MEMORY_LIMIT");
+  EXPECT_EQ(transfer_contours(encoding, box, TransferOptions()).points(), encoding.points());
 }
