@@ -56,6 +56,12 @@ namespace {
 constexpr size_t kPatches = 12;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kPi = 3.14159265358979323846;
+// A vertex normal with at least this horizontal length faces sideways (see place()).
+constexpr double kSideways = 0.3;
+// Untangling (see cross_parameterize): at most this many passes, and this many placements of a
+// vertex on its level set before it takes the nearest surface point instead.
+constexpr int kUntanglePasses = 64;
+constexpr int kLevelTries = 8;
 
 std::string num(int64_t v) { return std::to_string(v); }
 
@@ -109,24 +115,26 @@ double angle(const double* a, const double* b, const double* c) {  // at a
   return std::atan2(std::sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]), u[0] * v[0] + u[1] * v[1] + u[2] * v[2]);
 }
 
-// Whether the image of source face f is folded over: its normal faces away from the target's
-// normal where it lands (that of the target face nearest to the image's centroid), or it has
-// no area. -1 for a degenerate source face, which has no orientation to keep.
-int folded(const Mesh& source, const SurfaceGrid& grid, const std::vector<double>& image, size_t f) {
+// Whether the image of source face f is folded over: its normal points against the normal of
+// the registered source triangle (`moved`) it stands for, or it has no area. -1 for a
+// degenerate registered triangle, which has no orientation to keep. Why the registered
+// triangle: the registration is a smooth displacement field that keeps every triangle's
+// orientation; only the projection onto the target can fold. (Comparing with the target face
+// nearest to the image's centroid, as before, miscounts long thin triangles over a tight bend:
+// at the arch's end-cap poles that centroid lies nearer the wall's other side, and the true
+// deformation itself scored 3-19 "flips" there.)
+int folded(const Mesh& source, const std::vector<double>& moved, const std::vector<double>& image, size_t f) {
   const uint32_t* F = &source.F[3 * f];
-  const double* s[3] = {&source.V[3 * size_t(F[0])], &source.V[3 * size_t(F[1])], &source.V[3 * size_t(F[2])]};
+  const double* r[3] = {&moved[3 * size_t(F[0])], &moved[3 * size_t(F[1])], &moved[3 * size_t(F[2])]};
   const double* m[3] = {&image[3 * size_t(F[0])], &image[3 * size_t(F[1])], &image[3 * size_t(F[2])]};
-  double ns[3], ni[3];
-  if (cross_area(s, ns) == 0) return -1;
+  double nr[3], ni[3];
+  if (cross_area(r, nr) == 0) return -1;
   cross_area(m, ni);
-  const double centroid[3] = {(m[0][0] + m[1][0] + m[2][0]) / 3, (m[0][1] + m[1][1] + m[2][1]) / 3,
-                              (m[0][2] + m[1][2] + m[2][2]) / 3};
-  const double* nt = &grid.face_normals()[3 * size_t(grid.nearest_on_surface(centroid, nullptr, -2, kInf).face)];
-  return !(ni[0] * nt[0] + ni[1] * nt[1] + ni[2] * nt[2] > 0);
+  return !(ni[0] * nr[0] + ni[1] * nr[1] + ni[2] * nr[2] > 0);
 }
 
 // Height error, folded triangles, area and angle distortion of the map (image: 3 per vertex).
-void measure(const Mesh& source, const SurfaceGrid& grid, const std::vector<double>& image,
+void measure(const Mesh& source, const std::vector<double>& moved, const std::vector<double>& image,
              CrossParamQuality& q) {
   const size_t nv = source.vertices(), nf = source.faces();
   double max_dz = 0, sum_dz2 = 0;
@@ -144,7 +152,7 @@ void measure(const Mesh& source, const SurfaceGrid& grid, const std::vector<doub
     const uint32_t* F = &source.F[3 * f];
     const double* s[3] = {&source.V[3 * size_t(F[0])], &source.V[3 * size_t(F[1])], &source.V[3 * size_t(F[2])]};
     const double* m[3] = {&image[3 * size_t(F[0])], &image[3 * size_t(F[1])], &image[3 * size_t(F[2])]};
-    const int fold = folded(source, grid, image, size_t(f));
+    const int fold = folded(source, moved, image, size_t(f));
     if (fold < 0) continue;
     ++measured;
     if (fold) {
@@ -228,13 +236,20 @@ CrossParamResult cross_parameterize(const Mesh& source, const Mesh& target, cons
   const double tolerance = 2 * grid.mean_edge();
   const double reach = std::max(10 * reg.rms, 10 * grid.mean_edge());
   // Places source vertex i's image at the target point for p (p's z is the vertex's own height
-  // in the plane); false when nothing faces the same way within reach.
-  auto place = [&](size_t i, const double p[3]) {
+  // in the plane); false when nothing faces the same way within reach. on_level = false takes
+  // the nearest surface point only (the soft height term).
+  auto place = [&](size_t i, const double p[3], bool on_level) {
     const double* n = &normal[3 * i];
     const bool has_normal = n[0] != 0 || n[1] != 0 || n[2] != 0;
     SurfacePoint best = grid.nearest_on_surface(p, has_normal ? n : nullptr, 0.0, reach);
-    if (in_plane) {
-      const SurfacePoint level = grid.nearest_on_level(p, p[2], has_normal ? n : nullptr, 0.0, reach);
+    if (in_plane && on_level) {
+      // Where the vertex faces sideways, the level set's points must face the same way in xy:
+      // this keeps a wall's foot off a flat floor at its own height (a horizontal face lies
+      // wholly in its plane and would catch every point registered slightly inside it).
+      const double side[3] = {n[0], n[1], 0};
+      const bool sideways = n[0] * n[0] + n[1] * n[1] > kSideways * kSideways;
+      const SurfacePoint level = sideways ? grid.nearest_on_level(p, p[2], side, kSideways * 1e-3, reach)
+                                          : grid.nearest_on_level(p, p[2], has_normal ? n : nullptr, 0.0, reach);
       if (level.face != kNoFace && (best.face == kNoFace || level.distance <= best.distance + tolerance)) best = level;
     }
     const bool found = best.face != kNoFace;
@@ -247,20 +262,24 @@ CrossParamResult cross_parameterize(const Mesh& source, const Mesh& target, cons
 #pragma omp parallel for schedule(dynamic, 512) reduction(+ : far)
   for (long long i = 0; i < (long long)nv; ++i) {
     const double p[3] = {moved[3 * i], moved[3 * i + 1], in_plane ? source.V[3 * i + 2] : moved[3 * i + 2]};
-    far += !place(size_t(i), p);
+    far += !place(size_t(i), p, true);
   }
   // Local untangling: where independent projections of neighbours fold a small triangle over
-  // (tight level-set curves, the soft height zone at a ridge top), each corner of a folded
-  // triangle is placed again from the mean image of its neighbours (a Laplacian step).
+  // (tight level-set curves near a saddle such as the arch's end-cap poles), each corner of a
+  // folded triangle is placed again from the mean image of its neighbours (a Laplacian step).
+  // A vertex still folded after kLevelTries placements sits where the target's level set at its
+  // height cannot hold its neighbourhood (a ridge top that reaches that height in one point on
+  // the target, a whole row of vertices on the source): it takes the nearest surface point
+  // instead, the soft height term, and its |dz| is reported as height error.
   const size_t nf = source.faces();
   // After the first pass only faces around moved vertices can change: only they are checked.
-  std::vector<uint8_t> bad(nf), moved_vertex(nv, 1);
-  for (int pass = 0; pass < 8; ++pass) {
+  std::vector<uint8_t> bad(nf), moved_vertex(nv, 1), tries(nv, 0);
+  for (int pass = 0; pass < kUntanglePasses; ++pass) {
 #pragma omp parallel for schedule(dynamic, 4096)
     for (long long f = 0; f < (long long)nf; ++f) {
       const uint32_t* F = &source.F[3 * f];
       if (moved_vertex[F[0]] || moved_vertex[F[1]] || moved_vertex[F[2]])
-        bad[f] = folded(source, grid, image, size_t(f)) > 0;
+        bad[f] = folded(source, moved, image, size_t(f)) > 0;
     }
     std::vector<uint8_t>& mark = moved_vertex;
     std::fill(mark.begin(), mark.end(), 0);
@@ -271,6 +290,7 @@ CrossParamResult cross_parameterize(const Mesh& source, const Mesh& target, cons
           const uint32_t v = source.F[3 * f + j];
           if (!mark[v]) mark[v] = 1, touched.push_back(v);
         }
+    if (touched.empty()) break;
     // The mean image of each marked vertex's neighbours (its one-ring, through all its faces).
     std::vector<double> sum(3 * nv, 0.0);
     std::vector<uint32_t> count(nv, 0);
@@ -282,19 +302,18 @@ CrossParamResult cross_parameterize(const Mesh& source, const Mesh& target, cons
           for (int a = 0; a < 3; ++a) sum[3 * size_t(v) + a] += image[3 * size_t(source.F[3 * f + (j + k) % 3]) + a];
         count[v] += 2;
       }
-    if (touched.empty()) break;
 #pragma omp parallel for schedule(dynamic, 64)
     for (long long k = 0; k < (long long)touched.size(); ++k) {
       const size_t v = touched[k];
       double p[3];
       for (int a = 0; a < 3; ++a) p[a] = sum[3 * v + a] / count[v];
       if (in_plane) p[2] = source.V[3 * v + 2];
-      place(v, p);
+      place(v, p, ++tries[v] < kLevelTries);
     }
   }
 
   report_progress(progress, 0.8, "measuring");
-  measure(source, grid, image, q);
+  measure(source, moved, image, q);
   // Without landmarks nothing but the registration vouches for the correspondence: refuse a
   // result where much of the source found no matching surface or the image folds over.
   const double far_share = double(far) / double(std::max<size_t>(1, nv));
