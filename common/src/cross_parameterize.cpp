@@ -14,8 +14,11 @@
 // the target has no level set near that height (a ridge top that is lower on the target), onto
 // the nearest target surface point instead, a soft height term whose |dz| is reported as the
 // height error. With in_plane = false every step works in 3D and the projection is the plain
-// closest point. (5) Measure the quality: folded (flipped) image triangles, height error, area
-// and angle distortion. (6) Colour: ~12 patches on the source, carried to the target.
+// closest point. Untangle: where neighbouring projections fold a triangle over (near saddles of
+// the height, e.g. the arch's end-cap poles), move its corners to their neighbours' mean image
+// on their level sets, or after repeated tries to the nearest surface point (soft height).
+// (5) Measure the quality: folded (flipped) image triangles, height error, area and angle
+// distortion. (6) Colour: ~12 patches on the source, carried to the target.
 //
 // Why not the method's consistent patch layouts + mean value coordinates, or a height-cylinder
 // chart (v = z, u = arc length): both need consistent slice topology, and the product's shapes

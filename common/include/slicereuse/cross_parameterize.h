@@ -32,7 +32,9 @@ struct CrossParamOptions {
 };
 
 struct CrossParamQuality {
-  uint64_t flipped_triangles = 0;  // source triangles whose image is folded over; 0 expected
+  // Source triangles whose image is folded over (its normal against that of the registered
+  // source triangle, or no area); 0 expected, and the map is untangled until it is.
+  uint64_t flipped_triangles = 0;
   double max_height_error = 0;     // max |z(image) - z(source vertex)| (mm)
   double rms_height_error = 0;
   double area_distortion = 0;      // mean |log(image area / source area)| over triangles
