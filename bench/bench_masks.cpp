@@ -4,16 +4,21 @@
 //   folder     - export_masks to <out>/masks (one PNG per layer)
 //   sl1        - export_masks to <out>/masks.sl1
 //   compare    - compare_mask_stacks(folder, sl1), which must report S = 1
+//   layer      - (only when asked for) every layer on one thread, as an .sl1 encodes it:
+//                rasterize_layer_runs, then encode_mask_png of the runs; microseconds per
+//                layer of each in thread CPU time (the fastest run: the least disturbed by
+//                other processes on a shared machine), runs and PNG bytes per layer
 //   deflate    - (only when asked for) the PNG image data of every 8th layer (filter byte and
 //                8-bit row, as in an .sl1) deflated on one thread by RunDeflater and by
 //                libdeflate at levels 1, 3 and 6: seconds and total compressed size each
 // Prints the median seconds over runs and layers per second; --aa 1 for anti-aliased masks.
 // Usage: bench_masks [--shape arch] [--faces 545000] [--height 14.484] [--thickness 0.001]
 //                    [--runs 3] [--out /tmp/slicereuse-bench] [--aa 0]
-//                    [--steps rasterize,folder,sl1,compare[,deflate]]
+//                    [--steps rasterize,folder,sl1,compare[,layer][,deflate]]
 #include <libdeflate.h>
 #include <omp.h>
 #include <sys/resource.h>
+#include <time.h>
 
 #include <algorithm>
 #include <chrono>
@@ -29,6 +34,7 @@
 #include "family.h"
 #include "slicereuse/buffer.h"
 #include "slicereuse/deflate_runs.h"
+#include "slicereuse/mask_png.h"
 #include "slicereuse/masks.h"
 #include "slicereuse/slice_layers.h"
 
@@ -79,9 +85,9 @@ void compare_deflaters(const Slices& s, const PrinterProfile& profile) {
     }
     z.clear();
     auto t0 = std::chrono::steady_clock::now();
-    RunDeflater d(z);
+    RunDeflater d;
     d.add(data.data(), data.size());
-    d.finish();
+    d.finish(z);
     t_run += since(t0);
     n_run += z.size();
     for (int i = 0; i < 3; ++i) {
@@ -99,6 +105,46 @@ void compare_deflaters(const Slices& s, const PrinterProfile& profile) {
   for (int i = 0; i < 3; ++i)
     std::printf("  libdeflate %-3d %8.3f s %8.0f MB/s %10zu bytes  (RunDeflater %.2fx faster)\n", levels[i],
                 t_lib[i], mb / t_lib[i], n_lib[i], t_lib[i] / t_run);
+}
+
+// CPU seconds of the calling thread: unlike wall time, not inflated while other processes hold
+// the core, so single-thread figures compare across runs on a shared machine.
+double thread_seconds() {
+  timespec t;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+double fastest(const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); }
+
+// One thread, every layer: rasterize_layer_runs, then encode_mask_png of its runs, timed apart
+// in thread CPU time.
+void time_layers(const Slices& s, const PrinterProfile& profile, int runs) {
+  MaskRuns mask;
+  std::vector<uint8_t> png;
+  std::vector<double> t_runs, t_png;
+  size_t n_runs = 0, n_bytes = 0;
+  for (int r = 0; r < runs; ++r) {
+    double a = 0, b = 0;
+    n_runs = n_bytes = 0;
+    for (size_t k = 0; k < s.layers(); ++k) {
+      const double t0 = thread_seconds();
+      rasterize_layer_runs(s, k, profile, mask);
+      const double t1 = thread_seconds();
+      encode_mask_png(mask, png);
+      b += thread_seconds() - t1;
+      a += t1 - t0;
+      n_runs += mask.row_begin.back();
+      n_bytes += png.size();
+    }
+    t_runs.push_back(a);
+    t_png.push_back(b);
+  }
+  const double L = double(s.layers());
+  std::printf("layer, one thread, cpu: rasterize_layer_runs %.1f us, encode_mask_png(runs) %.1f us, together %.1f us;"
+              " %.0f runs, %.0f PNG bytes per layer\n",
+              1e6 * fastest(t_runs) / L, 1e6 * fastest(t_png) / L, 1e6 * (fastest(t_runs) + fastest(t_png)) / L,
+              double(n_runs) / L, double(n_bytes) / L);
 }
 
 }  // namespace
@@ -134,6 +180,7 @@ int main(int argc, char** argv) {
               profile.width_px, profile.height_px, profile.pixel_size_x_um, hi[0] - lo[0],
               hi[1] - lo[1]);
   std::printf("%8zu layers, %zu contours, %zu points\n", s.layers(), s.contours(), s.points());
+  if (wants(steps, "layer") && !aa) time_layers(s, profile, args.runs);
   if (wants(steps, "deflate")) compare_deflaters(s, profile);
 
   std::filesystem::create_directories(args.out);

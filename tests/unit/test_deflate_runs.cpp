@@ -23,9 +23,9 @@ std::vector<uint8_t> inflate_all(const std::vector<uint8_t>& z, size_t size) {
 // Deflates data in pieces of the given size, so runs cross add() calls.
 std::vector<uint8_t> deflate_in_pieces(const std::vector<uint8_t>& data, size_t piece) {
   std::vector<uint8_t> z;
-  RunDeflater d(z);
+  RunDeflater d;
   for (size_t i = 0; i < data.size(); i += piece) d.add(data.data() + i, std::min(piece, data.size() - i));
-  d.finish();
+  d.finish(z);
   return z;
 }
 
@@ -86,11 +86,11 @@ TEST(RunDeflater, RunsWithoutBytesGiveTheSameStream) {
       {0, 1}, {0, 70000}, {255, 3}, {7, 1}, {255, 300000}, {0, 2}, {255, 65521}, {0, 131043}, {9, 0}};
   std::vector<uint8_t> data, by_bytes, by_runs;
   for (const auto& [b, n] : runs) data.insert(data.end(), n, b);
-  RunDeflater a(by_bytes), r(by_runs);
+  RunDeflater a, r;
   a.add(data.data(), data.size());
   for (const auto& [b, n] : runs) r.add_run(b, n);
-  a.finish();
-  r.finish();
+  a.finish(by_bytes);
+  r.finish(by_runs);
   EXPECT_EQ(by_runs, by_bytes);
   EXPECT_EQ(inflate_all(by_runs, data.size()), data);
 }
@@ -99,7 +99,7 @@ TEST(RunDeflater, AdlerOfManyAndHugeRunsMatchesZlibs) {
   // Runs longer than the 2^24 bytes that are summed in one step (they fold the unreduced
   // Adler-32 B sum first and go in pieces), between shorter runs and bytes added as bytes.
   std::vector<uint8_t> data, z;
-  RunDeflater r(z);
+  RunDeflater r;
   std::mt19937_64 rng(5);
   const uint8_t some[] = {1, 2, 255, 0, 255, 3};
   for (int i = 0; i < 40; ++i) {
@@ -112,7 +112,7 @@ TEST(RunDeflater, AdlerOfManyAndHugeRunsMatchesZlibs) {
       r.add(some, sizeof some);
     }
   }
-  r.finish();
+  r.finish(z);
   ASSERT_GT(data.size(), size_t(1) << 26);
   const uint32_t expected = uint32_t(adler32(adler32(0, nullptr, 0), data.data(), uInt(data.size())));
   const uint32_t stored = uint32_t(z[z.size() - 4]) << 24 | uint32_t(z[z.size() - 3]) << 16 |
