@@ -12,8 +12,11 @@
 //                8-bit row, as in an .sl1) deflated on one thread by RunDeflater and by
 //                libdeflate at levels 1, 3 and 6: seconds and total compressed size each
 // Prints the median seconds over runs and layers per second; --aa 1 for anti-aliased masks.
+// --reference R (an .sl1 or folder made by another build, e.g. before a change) compares the
+// sl1 step's archive against R with compare_mask_stacks, which must report S = 1 and 0
+// differing pixels.
 // Usage: bench_masks [--shape arch] [--faces 545000] [--height 14.484] [--thickness 0.001]
-//                    [--runs 3] [--out /tmp/slicereuse-bench] [--aa 0]
+//                    [--runs 3] [--out /tmp/slicereuse-bench] [--aa 0] [--reference R]
 //                    [--steps rasterize,folder,sl1,compare[,layer][,deflate]]
 #include <libdeflate.h>
 #include <omp.h>
@@ -117,17 +120,29 @@ double thread_seconds() {
 
 double fastest(const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); }
 
+// Reads layer k's points (returns their sum so the reads stay): mask export reads each layer's
+// points for its area and extent just before it rasterizes the layer, which then finds them in
+// cache.
+double touch_points(const Slices& s, size_t k) {
+  double sum = 0;
+  const size_t a = s.contour_begin[s.layer_begin[k]], b = s.contour_begin[s.layer_begin[k + 1]];
+  for (size_t i = 3 * a; i < 3 * b; i += 4) sum += s.xyz[i];  // one read per 32 bytes, every cache line
+  return sum;
+}
+
 // One thread, every layer: rasterize_layer_runs, then encode_mask_png of its runs, timed apart
-// in thread CPU time.
+// in thread CPU time. Each layer's points are read first, untimed, as in mask export.
 void time_layers(const Slices& s, const PrinterProfile& profile, int runs) {
   MaskRuns mask;
   std::vector<uint8_t> png;
   std::vector<double> t_runs, t_png;
   size_t n_runs = 0, n_bytes = 0;
+  double touched = 0;
   for (int r = 0; r < runs; ++r) {
     double a = 0, b = 0;
     n_runs = n_bytes = 0;
     for (size_t k = 0; k < s.layers(); ++k) {
+      touched += touch_points(s, k);
       const double t0 = thread_seconds();
       rasterize_layer_runs(s, k, profile, mask);
       const double t1 = thread_seconds();
@@ -145,17 +160,19 @@ void time_layers(const Slices& s, const PrinterProfile& profile, int runs) {
               " %.0f runs, %.0f PNG bytes per layer\n",
               1e6 * fastest(t_runs) / L, 1e6 * fastest(t_png) / L, 1e6 * (fastest(t_runs) + fastest(t_png)) / L,
               double(n_runs) / L, double(n_bytes) / L);
+  if (touched == 0.5) std::printf("\n");  // keeps touch_points' reads
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   bool aa = false;
-  std::string steps = "rasterize,folder,sl1,compare";
+  std::string steps = "rasterize,folder,sl1,compare", reference;
   std::vector<char*> rest{argv[0]};
   for (int i = 1; i < argc; ++i) {
     if (std::string(argv[i]) == "--aa" && i + 1 < argc) aa = std::atoi(argv[++i]) != 0;
     else if (std::string(argv[i]) == "--steps" && i + 1 < argc) steps = argv[++i];
+    else if (std::string(argv[i]) == "--reference" && i + 1 < argc) reference = argv[++i];
     else rest.push_back(argv[i]);
   }
   BenchArgs args = parse_bench_args(int(rest.size()), rest.data());
@@ -233,5 +250,12 @@ int main(int argc, char** argv) {
     std::printf("folder %.1f MB\n", double(bytes) / 1e6);
   }
   if (!t_sl1.empty()) std::printf("sl1 %.1f MB\n", double(std::filesystem::file_size(sl1)) / 1e6);
-  return !compare || cmp.min_similarity == 1 ? 0 : 1;
+  bool same_as_reference = true;
+  if (!reference.empty() && !t_sl1.empty()) {
+    const StackComparison ref = compare_mask_stacks(reference, sl1, "");
+    same_as_reference = ref.min_similarity == 1 && ref.differing_pixels == 0;
+    std::printf("against %s: min S %.9g, %llu differing pixels\n", reference.c_str(), ref.min_similarity,
+                static_cast<unsigned long long>(ref.differing_pixels));
+  }
+  return (!compare || cmp.min_similarity == 1) && same_as_reference ? 0 : 1;
 }
