@@ -287,27 +287,25 @@ void RunDeflater::finish(std::vector<uint8_t>& out) {
     if (r.symbol == 17) w.put(r.extra, 3);
     if (r.symbol == 18) w.put(r.extra, 7);
   }
-  // A match's bits in one piece: its length code, extra bits and distance code 0 (distance 1),
-  // at most 15 + 5 + 1 bits.
-  auto match_bits = [&](unsigned len) {
+  // Each match length's bits in one piece, looked up once per length rather than through three
+  // tables per run: its length code, extra bits and distance code 0 (distance 1), at most
+  // 15 + 5 + 1 bits.
+  uint32_t match_bits[kMaxMatch + 1];
+  uint8_t match_nbits[kMaxMatch + 1];
+  for (unsigned len = 3; len <= kMaxMatch; ++len) {
     const LengthCode& lc = lengths_of[len];
-    return uint32_t(lit_code[lc.symbol]) | uint32_t(lc.extra) << lit_length[lc.symbol];
-  };
-  auto match_nbits = [&](unsigned len) {
-    const LengthCode& lc = lengths_of[len];
-    return unsigned(lit_length[lc.symbol]) + lc.extra_bits + 1;
-  };
-  const uint32_t full_bits = match_bits(kMaxMatch);
-  const unsigned full_nbits = match_nbits(kMaxMatch);
+    match_bits[len] = uint32_t(lit_code[lc.symbol]) | uint32_t(lc.extra) << lit_length[lc.symbol];
+    match_nbits[len] = uint8_t(lit_length[lc.symbol] + lc.extra_bits + 1);
+  }
   // Between drains: a literal and a match (15 + 21 bits), or a literal and two more (3 * 15).
   for (const uint64_t run : runs_) {
     const unsigned byte = unsigned(run & 0xff);
     const uint64_t repeats = (run >> 8) - 1, full = repeats / kMaxMatch;
     const unsigned rest = unsigned(repeats - full * kMaxMatch);
     w.add(lit_code[byte], lit_length[byte]);
-    for (uint64_t i = 0; i < full; ++i) w.put(full_bits, full_nbits);
+    for (uint64_t i = 0; i < full; ++i) w.put(match_bits[kMaxMatch], match_nbits[kMaxMatch]);
     if (rest >= 3) {
-      w.add(match_bits(rest), match_nbits(rest));
+      w.add(match_bits[rest], match_nbits[rest]);
     } else {
       for (unsigned i = 0; i < rest; ++i) w.add(lit_code[byte], lit_length[byte]);
     }
