@@ -120,3 +120,43 @@ TEST(RunDeflater, AdlerOfManyAndHugeRunsMatchesZlibs) {
   EXPECT_EQ(stored, expected);
   EXPECT_EQ(inflate_all(z, data.size()), data);
 }
+
+TEST(RunDeflater, EachFinishStartsAFreshStreamAndResetDropsInput) {
+  std::vector<uint8_t> a(5000, 0), b(7000, 255);
+  for (size_t i = 0; i < a.size(); i += 97) a[i] = uint8_t(i);
+  std::vector<uint8_t> first, second, dropped, fresh;
+  RunDeflater kept;
+  kept.add(a.data(), a.size());
+  kept.finish(first);
+  kept.add(b.data(), b.size());
+  kept.finish(second);
+  kept.add_run(9, 123456);  // abandoned, e.g. by an error half-way through an image
+  kept.add(a.data(), 10);
+  kept.reset();
+  kept.add(b.data(), b.size());
+  kept.finish(dropped);
+  RunDeflater d;
+  d.add(b.data(), b.size());
+  d.finish(fresh);
+  EXPECT_EQ(inflate_all(first, a.size()), a);
+  EXPECT_EQ(second, fresh);
+  EXPECT_EQ(dropped, fresh);
+  EXPECT_EQ(inflate_all(fresh, b.size()), b);
+}
+
+TEST(RunDeflater, StreamsOfEveryRunLengthAfterAFewBytesMatchZlibsAdler) {
+  // Every rest of a run after its 258-byte matches (0 to 257: literals below 3, a match above),
+  // the run starting in add() and going on in add_run().
+  for (size_t n = 1; n <= 3 * 258 + 2; n += 7) {
+    std::vector<uint8_t> data = {1, 2, 2};
+    data.insert(data.end(), n, 2);
+    data.push_back(3);
+    std::vector<uint8_t> z;
+    RunDeflater d;
+    d.add(data.data(), 3);
+    d.add_run(2, n);
+    d.add_run(3, 1);
+    d.finish(z);
+    ASSERT_EQ(inflate_all(z, data.size()), data) << n;
+  }
+}
