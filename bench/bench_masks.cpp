@@ -4,16 +4,24 @@
 //   folder     - export_masks to <out>/masks (one PNG per layer)
 //   sl1        - export_masks to <out>/masks.sl1
 //   compare    - compare_mask_stacks(folder, sl1), which must report S = 1
+//   layer      - (only when asked for) every layer on one thread, as an .sl1 encodes it:
+//                rasterize_layer_runs, then encode_mask_png of the runs; microseconds per
+//                layer of each in thread CPU time (the fastest run: the least disturbed by
+//                other processes on a shared machine), runs and PNG bytes per layer
 //   deflate    - (only when asked for) the PNG image data of every 8th layer (filter byte and
 //                8-bit row, as in an .sl1) deflated on one thread by RunDeflater and by
 //                libdeflate at levels 1, 3 and 6: seconds and total compressed size each
 // Prints the median seconds over runs and layers per second; --aa 1 for anti-aliased masks.
+// --reference R (an .sl1 or folder made by another build, e.g. before a change) compares the
+// sl1 step's archive against R with compare_mask_stacks, which must report S = 1 and 0
+// differing pixels.
 // Usage: bench_masks [--shape arch] [--faces 545000] [--height 14.484] [--thickness 0.001]
-//                    [--runs 3] [--out /tmp/slicereuse-bench] [--aa 0]
-//                    [--steps rasterize,folder,sl1,compare[,deflate]]
+//                    [--runs 3] [--out /tmp/slicereuse-bench] [--aa 0] [--reference R]
+//                    [--steps rasterize,folder,sl1,compare[,layer][,deflate]]
 #include <libdeflate.h>
 #include <omp.h>
 #include <sys/resource.h>
+#include <time.h>
 
 #include <algorithm>
 #include <chrono>
@@ -29,6 +37,7 @@
 #include "family.h"
 #include "slicereuse/buffer.h"
 #include "slicereuse/deflate_runs.h"
+#include "slicereuse/mask_png.h"
 #include "slicereuse/masks.h"
 #include "slicereuse/slice_layers.h"
 
@@ -79,9 +88,9 @@ void compare_deflaters(const Slices& s, const PrinterProfile& profile) {
     }
     z.clear();
     auto t0 = std::chrono::steady_clock::now();
-    RunDeflater d(z);
+    RunDeflater d;
     d.add(data.data(), data.size());
-    d.finish();
+    d.finish(z);
     t_run += since(t0);
     n_run += z.size();
     for (int i = 0; i < 3; ++i) {
@@ -101,15 +110,69 @@ void compare_deflaters(const Slices& s, const PrinterProfile& profile) {
                 t_lib[i], mb / t_lib[i], n_lib[i], t_lib[i] / t_run);
 }
 
+// CPU seconds of the calling thread: unlike wall time, not inflated while other processes hold
+// the core, so single-thread figures compare across runs on a shared machine.
+double thread_seconds() {
+  timespec t;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+double fastest(const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); }
+
+// Reads layer k's points (returns their sum so the reads stay): mask export reads each layer's
+// points for its area and extent just before it rasterizes the layer, which then finds them in
+// cache.
+double touch_points(const Slices& s, size_t k) {
+  double sum = 0;
+  const size_t a = s.contour_begin[s.layer_begin[k]], b = s.contour_begin[s.layer_begin[k + 1]];
+  for (size_t i = 3 * a; i < 3 * b; i += 4) sum += s.xyz[i];  // one read per 32 bytes, every cache line
+  return sum;
+}
+
+// One thread, every layer: rasterize_layer_runs, then encode_mask_png of its runs, timed apart
+// in thread CPU time. Each layer's points are read first, untimed, as in mask export.
+void time_layers(const Slices& s, const PrinterProfile& profile, int runs) {
+  MaskRuns mask;
+  std::vector<uint8_t> png;
+  std::vector<double> t_runs, t_png;
+  size_t n_runs = 0, n_bytes = 0;
+  double touched = 0;
+  for (int r = 0; r < runs; ++r) {
+    double a = 0, b = 0;
+    n_runs = n_bytes = 0;
+    for (size_t k = 0; k < s.layers(); ++k) {
+      touched += touch_points(s, k);
+      const double t0 = thread_seconds();
+      rasterize_layer_runs(s, k, profile, mask);
+      const double t1 = thread_seconds();
+      encode_mask_png(mask, png);
+      b += thread_seconds() - t1;
+      a += t1 - t0;
+      n_runs += mask.row_begin.back();
+      n_bytes += png.size();
+    }
+    t_runs.push_back(a);
+    t_png.push_back(b);
+  }
+  const double L = double(s.layers());
+  std::printf("layer, one thread, cpu: rasterize_layer_runs %.1f us, encode_mask_png(runs) %.1f us, together %.1f us;"
+              " %.0f runs, %.0f PNG bytes per layer\n",
+              1e6 * fastest(t_runs) / L, 1e6 * fastest(t_png) / L, 1e6 * (fastest(t_runs) + fastest(t_png)) / L,
+              double(n_runs) / L, double(n_bytes) / L);
+  if (touched == 0.5) std::printf("\n");  // keeps touch_points' reads
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   bool aa = false;
-  std::string steps = "rasterize,folder,sl1,compare";
+  std::string steps = "rasterize,folder,sl1,compare", reference;
   std::vector<char*> rest{argv[0]};
   for (int i = 1; i < argc; ++i) {
     if (std::string(argv[i]) == "--aa" && i + 1 < argc) aa = std::atoi(argv[++i]) != 0;
     else if (std::string(argv[i]) == "--steps" && i + 1 < argc) steps = argv[++i];
+    else if (std::string(argv[i]) == "--reference" && i + 1 < argc) reference = argv[++i];
     else rest.push_back(argv[i]);
   }
   BenchArgs args = parse_bench_args(int(rest.size()), rest.data());
@@ -134,6 +197,7 @@ int main(int argc, char** argv) {
               profile.width_px, profile.height_px, profile.pixel_size_x_um, hi[0] - lo[0],
               hi[1] - lo[1]);
   std::printf("%8zu layers, %zu contours, %zu points\n", s.layers(), s.contours(), s.points());
+  if (wants(steps, "layer") && !aa) time_layers(s, profile, args.runs);
   if (wants(steps, "deflate")) compare_deflaters(s, profile);
 
   std::filesystem::create_directories(args.out);
@@ -186,5 +250,12 @@ int main(int argc, char** argv) {
     std::printf("folder %.1f MB\n", double(bytes) / 1e6);
   }
   if (!t_sl1.empty()) std::printf("sl1 %.1f MB\n", double(std::filesystem::file_size(sl1)) / 1e6);
-  return !compare || cmp.min_similarity == 1 ? 0 : 1;
+  bool same_as_reference = true;
+  if (!reference.empty() && !t_sl1.empty()) {
+    const StackComparison ref = compare_mask_stacks(reference, sl1, "");
+    same_as_reference = ref.min_similarity == 1 && ref.differing_pixels == 0;
+    std::printf("against %s: min S %.9g, %llu differing pixels\n", reference.c_str(), ref.min_similarity,
+                static_cast<unsigned long long>(ref.differing_pixels));
+  }
+  return (!compare || cmp.min_similarity == 1) && same_as_reference ? 0 : 1;
 }

@@ -5,13 +5,12 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
-#include <functional>
-#include <queue>
 
 namespace slicereuse {
 namespace {
 
 constexpr unsigned kEndOfBlock = 256;
+constexpr unsigned kMaxMatch = 258;
 constexpr unsigned kLengthBase[29] = {3,  4,  5,  6,  7,  8,  9,  10, 11,  13,  15,  17,  19,  23, 27,
                                       31, 35, 43, 51, 59, 67, 83, 99, 115, 131, 163, 195, 227, 258};
 constexpr unsigned kLengthExtra[29] = {0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2,
@@ -39,86 +38,100 @@ const std::array<LengthCode, 259>& length_codes() {
   return table;
 }
 
-// Huffman code lengths for the frequencies, none longer than limit: a Huffman tree, rebuilt on
-// halved frequencies while it is too deep. Symbols of frequency 0 get no code.
-std::vector<uint8_t> code_lengths(std::vector<uint64_t> freq, unsigned limit) {
-  const size_t n = freq.size();
-  std::vector<uint8_t> length(n, 0);
+// Largest alphabet: 286 literal/length symbols (the code-length alphabet has 19).
+constexpr size_t kMaxSymbols = 286;
+
+// Huffman code lengths for the frequencies of n <= kMaxSymbols symbols, none longer than limit:
+// a Huffman tree, rebuilt on halved frequencies while it is too deep. Symbols of frequency 0 get
+// no code. Built with two queues (the leaves sorted by frequency, the joined nodes in the order
+// they are made, which is by frequency too) into fixed arrays: the same tree as a priority queue
+// of (frequency, node) that numbers leaves by symbol, without its allocations.
+void code_lengths(const uint64_t* freq_in, size_t n, unsigned limit, uint8_t* length) {
+  uint64_t freq[kMaxSymbols];
+  std::copy(freq_in, freq_in + n, freq);
   for (;;) {
-    std::vector<int> parent;
-    using Node = std::pair<uint64_t, int>;
-    std::priority_queue<Node, std::vector<Node>, std::greater<Node>> heap;
-    std::vector<int> leaf(n, -1);
-    for (size_t s = 0; s < n; ++s)
-      if (freq[s]) {
-        leaf[s] = int(parent.size());
-        parent.push_back(-1);
-        heap.push({freq[s], leaf[s]});
-      }
-    while (heap.size() > 1) {
-      const Node a = heap.top();
-      heap.pop();
-      const Node b = heap.top();
-      heap.pop();
-      const int joined = int(parent.size());
-      parent.push_back(-1);
-      parent[a.second] = parent[b.second] = joined;
-      heap.push({a.first + b.first, joined});
-    }
-    unsigned deepest = 0;
+    uint16_t leaf[kMaxSymbols];  // symbols by (frequency, symbol)
+    size_t m = 0;
     for (size_t s = 0; s < n; ++s) {
-      unsigned depth = 0;
-      if (leaf[s] >= 0)
-        for (int x = leaf[s]; parent[x] >= 0; x = parent[x]) ++depth;
-      length[s] = uint8_t(depth);
-      deepest = std::max(deepest, depth);
+      if (!freq[s]) continue;
+      size_t j = m++;
+      for (; j > 0 && freq[leaf[j - 1]] > freq[s]; --j) leaf[j] = leaf[j - 1];
+      leaf[j] = uint16_t(s);
     }
-    if (deepest <= limit) return length;
-    for (uint64_t& f : freq)
-      if (f) f = (f + 1) / 2;
+    // Nodes 0..m-1 are the sorted leaves, m.. the joined ones; parent of each.
+    uint64_t weight[2 * kMaxSymbols];
+    uint16_t parent[2 * kMaxSymbols];
+    for (size_t i = 0; i < m; ++i) weight[i] = freq[leaf[i]];
+    size_t next_leaf = 0, next_joined = m, made = m;
+    auto smallest = [&] {
+      // Ties go to the leaf: a priority queue numbers leaves before joined nodes.
+      if (next_leaf < m && (next_joined == made || weight[next_leaf] <= weight[next_joined])) return next_leaf++;
+      return next_joined++;
+    };
+    for (; made + 1 < 2 * m; ++made) {
+      const size_t a = smallest(), b = smallest();
+      weight[made] = weight[a] + weight[b];
+      parent[a] = parent[b] = uint16_t(made);
+    }
+    uint8_t depth[2 * kMaxSymbols];
+    unsigned deepest = 0;
+    if (m > 0) depth[made - 1] = 0;  // the root
+    for (size_t i = made - 1; m > 0 && i-- > 0;) {
+      depth[i] = uint8_t(depth[parent[i]] + 1);
+      if (i < m) deepest = std::max<unsigned>(deepest, depth[i]);
+    }
+    if (deepest <= limit) {
+      std::fill(length, length + n, uint8_t(0));
+      for (size_t i = 0; i < m; ++i) length[leaf[i]] = depth[i];
+      return;
+    }
+    for (size_t s = 0; s < n; ++s)
+      if (freq[s]) freq[s] = (freq[s] + 1) / 2;
   }
 }
 
 // Canonical codes (RFC 1951 3.2.2), bit-reversed because deflate sends Huffman codes most
 // significant bit first into an LSB-first stream.
-std::vector<uint16_t> canonical_codes(const std::vector<uint8_t>& length) {
+void canonical_codes(const uint8_t* length, size_t n, uint16_t* codes) {
   unsigned count[16] = {0}, next[16] = {0};
-  for (uint8_t l : length) ++count[l];
+  for (size_t s = 0; s < n; ++s) ++count[length[s]];
   count[0] = 0;
   for (unsigned bits = 1, code = 0; bits < 16; ++bits) next[bits] = code = (code + count[bits - 1]) << 1;
-  std::vector<uint16_t> codes(length.size(), 0);
-  for (size_t s = 0; s < length.size(); ++s)
+  for (size_t s = 0; s < n; ++s) {
+    codes[s] = 0;
     if (length[s]) {
       const unsigned code = next[length[s]]++;
       unsigned r = 0;
       for (unsigned i = 0; i < length[s]; ++i) r |= ((code >> i) & 1u) << (length[s] - 1 - i);
       codes[s] = uint16_t(r);
     }
-  return codes;
+  }
 }
 
-// Writes bits LSB first into memory the caller sized for them, 32 bits at a time.
+// Writes bits LSB first into memory the caller sized for them, with 8 bytes of slack: add()
+// puts bits into a 64-bit buffer, at most 56 of them between two drain()s; drain() stores the
+// whole buffer and moves on by its complete bytes, without a branch. put() is add() and drain().
 class BitWriter {
  public:
   explicit BitWriter(uint8_t* dst) : begin_(dst), at_(dst) {}
-  void put(uint64_t value, unsigned count) {  // count <= 32
+  void add(uint64_t value, unsigned count) {  // value < 2^count
     buffer_ |= value << used_;
     used_ += count;
-    if (used_ >= 32) {
-      const uint32_t word = uint32_t(buffer_);
-      std::memcpy(at_, &word, 4);  // little-endian host, as the PNG/zip code assumes
-      at_ += 4;
-      buffer_ >>= 32;
-      used_ -= 32;
-    }
+  }
+  void drain() {
+    std::memcpy(at_, &buffer_, 8);  // little-endian host, as the PNG/zip code assumes
+    at_ += used_ >> 3;
+    buffer_ >>= used_ & 56;
+    used_ &= 7;
+  }
+  void put(uint64_t value, unsigned count) {
+    add(value, count);
+    drain();
   }
   // Pads the last byte with zero bits; returns the bytes written.
   size_t flush() {
-    for (; used_ > 0; used_ = used_ > 8 ? used_ - 8 : 0) {
-      *at_++ = uint8_t(buffer_);
-      buffer_ >>= 8;
-    }
-    return size_t(at_ - begin_);
+    std::memcpy(at_, &buffer_, 8);
+    return size_t(at_ - begin_) + (used_ + 7) / 8;
   }
 
  private:
@@ -134,47 +147,37 @@ struct LengthRun {
 };
 
 // The code lengths as code-length symbols: 16 repeats the previous length 3..6 times, 17 and
-// 18 repeat zero 3..10 and 11..138 times.
-std::vector<LengthRun> length_runs(const std::vector<uint8_t>& lengths) {
-  std::vector<LengthRun> runs;
-  for (size_t i = 0; i < lengths.size();) {
+// 18 repeat zero 3..10 and 11..138 times. Writes at most n_lengths runs; returns how many.
+size_t length_runs(const uint8_t* lengths, size_t n_lengths, LengthRun* runs) {
+  size_t count = 0;
+  for (size_t i = 0; i < n_lengths;) {
     size_t j = i;
-    while (j < lengths.size() && lengths[j] == lengths[i]) ++j;
+    while (j < n_lengths && lengths[j] == lengths[i]) ++j;
     size_t n = j - i;
     if (lengths[i] == 0) {
-      for (; n >= 11; n -= std::min<size_t>(n, 138)) runs.push_back({18, uint8_t(std::min<size_t>(n, 138) - 11)});
+      for (; n >= 11; n -= std::min<size_t>(n, 138)) runs[count++] = {18, uint8_t(std::min<size_t>(n, 138) - 11)};
       if (n >= 3) {
-        runs.push_back({17, uint8_t(n - 3)});
+        runs[count++] = {17, uint8_t(n - 3)};
         n = 0;
       }
-      for (; n > 0; --n) runs.push_back({0, 0});
+      for (; n > 0; --n) runs[count++] = {0, 0};
     } else {
-      runs.push_back({lengths[i], 0});
-      for (--n; n >= 3; n -= std::min<size_t>(n, 6)) runs.push_back({16, uint8_t(std::min<size_t>(n, 6) - 3)});
-      for (; n > 0; --n) runs.push_back({lengths[i], 0});
+      runs[count++] = {lengths[i], 0};
+      for (--n; n >= 3; n -= std::min<size_t>(n, 6)) runs[count++] = {16, uint8_t(std::min<size_t>(n, 6) - 3)};
+      for (; n > 0; --n) runs[count++] = {lengths[i], 0};
     }
     i = j;
   }
-  return runs;
+  return count;
 }
 
 }  // namespace
 
-RunDeflater::RunDeflater(std::vector<uint8_t>& out) : out_(out) {}
-
-void RunDeflater::repeats() {
-  while (pending_ >= 3) {
-    const size_t n = std::min<size_t>(pending_, 258);
-    symbols_.push_back(uint16_t(256 + n));
-    pending_ -= n;
-  }
-  for (; pending_ > 0; --pending_) symbols_.push_back(uint16_t(last_));
-}
-
 void RunDeflater::add(const uint8_t* data, size_t n) {
   fold_adler();
-  adler_ = uint32_t(adler32(adler_, data, uInt(n)));
-  run_a_ = adler_ & 0xffff;
+  const uint32_t adler = uint32_t(adler32(uint32_t(adler_b_ << 16 | adler_a_), data, uInt(n)));
+  adler_a_ = adler & 0xffff;
+  adler_b_ = adler >> 16;
   size_t i = 0;
   while (i < n) {
     if (data[i] == last_) {
@@ -184,118 +187,142 @@ void RunDeflater::add(const uint8_t* data, size_t n) {
       uint64_t word;
       while (j + 8 <= n && (std::memcpy(&word, data + j, 8), word == pattern)) j += 8;
       while (j < n && data[j] == last_) ++j;
-      pending_ += j - i;
+      runs_.back() += uint64_t(j - i) << 8;
       i = j;
     } else {
-      repeats();
-      symbols_.push_back(data[i]);
       last_ = data[i++];
+      runs_.push_back(uint64_t(1) << 8 | uint64_t(last_));
     }
   }
 }
 
 void RunDeflater::add_run(uint8_t byte, size_t n) {
   if (n == 0) return;
-  // Adler-32 over n bytes b: A' = A + n*b, B' = B + n*A + b*n*(n+1)/2, mod 65521. B is reduced
-  // only when it could overflow (see run_b_), not per run: the reductions were most of the cost.
-  const uint64_t a = run_a_;
-  if (n > kMaxRun || run_b_ > kMaxB) {
-    fold_adler();
-    if (n > kMaxRun) {  // longer than any mask image: in pieces that keep the bound
-      for (; n > kMaxRun; n -= kMaxRun) add_run(byte, kMaxRun);
-      add_run(byte, n);
-      return;
-    }
+  if (n > kMaxRun) {  // longer than any mask image: in pieces that keep the bound
+    for (; n > kMaxRun; n -= kMaxRun) add_run(byte, kMaxRun);
+    add_run(byte, n);
+    return;
   }
-  run_b_ += n * a + uint64_t(byte) * (n * (n + 1) / 2);
-  run_a_ = (a + n * byte) % kAdlerMod;
-  count_run(byte, n);
+  // Adler-32 over n bytes b: A' = A + n*b, B' = B + n*A + b*n*(n+1)/2, mod 65521 (see adler_b_).
+  adler_b_ += n * adler_a_ + uint64_t(byte) * (n * (n + 1) / 2);
+  adler_a_ += n * byte;
+  if (adler_a_ >= (uint64_t(1) << 32) || adler_b_ >= (uint64_t(1) << 62)) fold_adler();
+  if (byte == last_) {
+    runs_.back() += uint64_t(n) << 8;
+  } else {
+    runs_.push_back(uint64_t(n) << 8 | byte);
+    last_ = byte;
+  }
 }
 
 void RunDeflater::fold_adler() {
-  const uint64_t b = ((adler_ >> 16) + run_b_) % kAdlerMod;
-  adler_ = uint32_t(b << 16 | run_a_);
-  run_b_ = 0;
+  adler_a_ %= 65521;
+  adler_b_ %= 65521;
 }
 
-void RunDeflater::count_run(uint8_t byte, size_t n) {
-  if (byte != last_) {
-    repeats();
-    symbols_.push_back(byte);
-    last_ = byte;
-    --n;
-  }
-  pending_ += n;
-}
-
-void RunDeflater::finish() {
-  repeats();
+void RunDeflater::finish(std::vector<uint8_t>& out) {
   fold_adler();
   const auto& lengths_of = length_codes();
-  // Counted per recorded symbol (literal, or 256 + match length), then per deflate symbol.
-  std::array<uint32_t, 256 + 259> count{};
-  for (uint16_t s : symbols_) ++count[s];
-  std::vector<uint64_t> freq(286, 0);
-  for (unsigned s = 0; s < 256; ++s) freq[s] = count[s];
-  for (unsigned len = 3; len <= 258; ++len) freq[lengths_of[len].symbol] += count[256 + len];
+  // A run of byte b and length n is the literal b, then its n - 1 repeats as matches of 258 and
+  // a last match of the rest, or the rest as literals when it is shorter than 3. Counted into
+  // locals and per rest, not per deflate symbol: increments of the same few counters, one run
+  // after the other, would wait for each other.
+  uint64_t freq[kMaxSymbols] = {};
+  uint64_t per_rest[kMaxMatch] = {}, full_matches = 0;
+  for (const uint64_t run : runs_) {
+    const uint64_t repeats = (run >> 8) - 1, full = repeats / kMaxMatch;
+    const unsigned rest = unsigned(repeats - full * kMaxMatch);
+    freq[run & 0xff] += 1 + (rest < 3 ? rest : 0);
+    full_matches += full;
+    ++per_rest[rest];
+  }
+  freq[lengths_of[kMaxMatch].symbol] += full_matches;
+  size_t symbols = runs_.size() + full_matches + per_rest[1] + 2 * per_rest[2];
+  for (unsigned rest = 3; rest < kMaxMatch; ++rest) {
+    freq[lengths_of[rest].symbol] += per_rest[rest];
+    symbols += per_rest[rest];
+  }
   freq[kEndOfBlock] = 1;
   freq[0] |= 1;  // at least two codes, so the code is complete for every inflater
-  const std::vector<uint8_t> lit_length = code_lengths(freq, 15);
-  const std::vector<uint16_t> lit_code = canonical_codes(lit_length);
-  size_t hlit = 286;
+  uint8_t lit_length[kMaxSymbols];
+  uint16_t lit_code[kMaxSymbols];
+  code_lengths(freq, kMaxSymbols, 15, lit_length);
+  canonical_codes(lit_length, kMaxSymbols, lit_code);
+  size_t hlit = kMaxSymbols;
   while (hlit > 257 && lit_length[hlit - 1] == 0) --hlit;
   // Every match is at distance 1 (distance code 0); code 1 is unused but makes the code complete.
-  const std::vector<uint8_t> dist_length = {1, 1};
-
-  std::vector<uint8_t> all(lit_length.begin(), lit_length.begin() + hlit);
-  all.insert(all.end(), dist_length.begin(), dist_length.end());
-  const std::vector<LengthRun> runs = length_runs(all);
-  std::vector<uint64_t> run_freq(19, 0);
-  for (const LengthRun& r : runs) ++run_freq[r.symbol];
+  constexpr size_t kDistCodes = 2;
+  uint8_t all[kMaxSymbols + kDistCodes];
+  std::copy(lit_length, lit_length + hlit, all);
+  all[hlit] = all[hlit + 1] = 1;
+  LengthRun runs[kMaxSymbols + kDistCodes];
+  const size_t n_runs = length_runs(all, hlit + kDistCodes, runs);
+  uint64_t run_freq[19] = {};
+  for (size_t i = 0; i < n_runs; ++i) ++run_freq[runs[i].symbol];
   run_freq[0] |= 1;
   run_freq[18] |= 1;
-  const std::vector<uint8_t> run_length = code_lengths(run_freq, 7);
-  const std::vector<uint16_t> run_code = canonical_codes(run_length);
+  uint8_t run_length[19];
+  uint16_t run_code[19];
+  code_lengths(run_freq, 19, 7, run_length);
+  canonical_codes(run_length, 19, run_code);
   size_t hclen = 19;
   while (hclen > 4 && run_length[kCodeLengthOrder[hclen - 1]] == 0) --hclen;
 
-  out_.push_back(0x78);  // deflate, 32 KiB window
-  out_.push_back(0x01);  // fastest; (0x78 << 8 | 0x01) is a multiple of 31
+  out.push_back(0x78);  // deflate, 32 KiB window
+  out.push_back(0x01);  // fastest; (0x78 << 8 | 0x01) is a multiple of 31
   // Room for the block: 17 header bits, 3 per code length code, 7+7 per length run, and at
   // most 15 + 5 + 1 bits per symbol, plus the end code and 8 bytes of slack for the last word.
-  const size_t start = out_.size();
-  out_.resize(start + (17 + 3 * 19 + 14 * runs.size() + 21 * (symbols_.size() + 1)) / 8 + 16);
-  BitWriter w(out_.data() + start);
+  const size_t start = out.size();
+  out.resize(start + (17 + 3 * 19 + 14 * n_runs + 21 * (symbols + 1)) / 8 + 16);
+  BitWriter w(out.data() + start);
   w.put(0b101, 3);  // final block, dynamic Huffman codes
   w.put(hlit - 257, 5);
-  w.put(dist_length.size() - 1, 5);
+  w.put(kDistCodes - 1, 5);
   w.put(hclen - 4, 4);
   for (size_t i = 0; i < hclen; ++i) w.put(run_length[kCodeLengthOrder[i]], 3);
-  for (const LengthRun& r : runs) {
+  for (size_t i = 0; i < n_runs; ++i) {
+    const LengthRun& r = runs[i];
     w.put(run_code[r.symbol], run_length[r.symbol]);
     if (r.symbol == 16) w.put(r.extra, 2);
     if (r.symbol == 17) w.put(r.extra, 3);
     if (r.symbol == 18) w.put(r.extra, 7);
   }
-  // Each recorded symbol's bits in one piece: a literal's code, or a match's length code, extra
-  // bits and distance code 0 (distance 1), at most 15 + 5 + 1 bits.
-  std::array<uint32_t, 256 + 259> bits{};
-  std::array<uint8_t, 256 + 259> nbits{};
-  for (unsigned s = 0; s < 256; ++s) {
-    bits[s] = lit_code[s];
-    nbits[s] = lit_length[s];
-  }
-  for (unsigned len = 3; len <= 258; ++len) {
+  // Each match length's bits in one piece, looked up once per length rather than through three
+  // tables per run: its length code, extra bits and distance code 0 (distance 1), at most
+  // 15 + 5 + 1 bits.
+  uint32_t match_bits[kMaxMatch + 1];
+  uint8_t match_nbits[kMaxMatch + 1];
+  for (unsigned len = 3; len <= kMaxMatch; ++len) {
     const LengthCode& lc = lengths_of[len];
-    const unsigned n = lit_length[lc.symbol];
-    bits[256 + len] = uint32_t(lit_code[lc.symbol]) | uint32_t(lc.extra) << n;
-    nbits[256 + len] = uint8_t(n + lc.extra_bits + 1);
+    match_bits[len] = uint32_t(lit_code[lc.symbol]) | uint32_t(lc.extra) << lit_length[lc.symbol];
+    match_nbits[len] = uint8_t(lit_length[lc.symbol] + lc.extra_bits + 1);
   }
-  for (uint16_t s : symbols_) w.put(bits[s], nbits[s]);
+  // Between drains: a literal and a match (15 + 21 bits), or a literal and two more (3 * 15).
+  for (const uint64_t run : runs_) {
+    const unsigned byte = unsigned(run & 0xff);
+    const uint64_t repeats = (run >> 8) - 1, full = repeats / kMaxMatch;
+    const unsigned rest = unsigned(repeats - full * kMaxMatch);
+    w.add(lit_code[byte], lit_length[byte]);
+    for (uint64_t i = 0; i < full; ++i) w.put(match_bits[kMaxMatch], match_nbits[kMaxMatch]);
+    if (rest >= 3) {
+      w.add(match_bits[rest], match_nbits[rest]);
+    } else {
+      for (unsigned i = 0; i < rest; ++i) w.add(lit_code[byte], lit_length[byte]);
+    }
+    w.drain();
+  }
   w.put(lit_code[kEndOfBlock], lit_length[kEndOfBlock]);
-  out_.resize(start + w.flush());
-  for (int shift = 24; shift >= 0; shift -= 8) out_.push_back(uint8_t(adler_ >> shift));
-  symbols_.clear();
+  out.resize(start + w.flush());
+  const uint32_t adler = uint32_t(adler_b_ << 16 | adler_a_);
+  for (int shift = 24; shift >= 0; shift -= 8) out.push_back(uint8_t(adler >> shift));
+  reset();
+}
+
+void RunDeflater::reset() {
+  runs_.clear();
+  last_ = -1;
+  adler_a_ = 1;
+  adler_b_ = 0;
 }
 
 }  // namespace slicereuse

@@ -54,8 +54,10 @@ void check_size(int width, int height, int bits) {
                 std::to_string(bits) + "-bit mask as PNG");
 }
 
-// The PNG file around a zlib stream of image data: signature, IHDR, IDAT, IEND.
-void png_file(int width, int height, int bits, const std::vector<uint8_t>& idat, std::vector<uint8_t>& out) {
+// A PNG file is written around its image data in place: png_begin writes the signature, IHDR
+// and the IDAT chunk's head into out (replaced) and returns where the data goes; the deflater
+// appends the zlib stream there; png_end fills in the IDAT length and CRC and adds IEND.
+size_t png_begin(int width, int height, int bits, std::vector<uint8_t>& out) {
   static const uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   out.assign(signature, signature + 8);
   uint8_t header[13];
@@ -66,7 +68,15 @@ void png_file(int width, int height, int bits, const std::vector<uint8_t>& idat,
   const uint8_t format[5] = {uint8_t(bits), 0, 0, 0, 0};  // grey, deflate, filter set 0, no interlace
   std::memcpy(header + 8, format, sizeof format);
   chunk(out, "IHDR", header, sizeof header);
-  chunk(out, "IDAT", idat.data(), idat.size());
+  put32(out, 0);  // IDAT length, filled in by png_end
+  out.insert(out.end(), {'I', 'D', 'A', 'T'});
+  return out.size();
+}
+
+void png_end(size_t data_begin, std::vector<uint8_t>& out) {
+  const size_t n = out.size() - data_begin;
+  for (int i = 0; i < 4; ++i) out[data_begin - 8 + size_t(i)] = uint8_t(uint32_t(n) >> (24 - 8 * i));
+  put32(out, uint32_t(crc32(0, out.data() + data_begin - 4, uInt(n + 4))));
   chunk(out, "IEND", nullptr, 0);
 }
 
@@ -76,11 +86,12 @@ void encode_mask_png(const uint8_t* pixels, int width, int height, int bits,
                      std::vector<uint8_t>& out) {
   check_size(width, height, bits);
   // Rows without a filter (type 0): on masks, filters cost time and gain nothing.
-  thread_local std::vector<uint8_t> idat, row;
-  idat.clear();
+  thread_local std::vector<uint8_t> row;
+  thread_local RunDeflater deflater;
+  deflater.reset();  // a former call may have thrown half-way
   row.resize(1 + (size_t(width) + 7) / 8);
   row[0] = 0;
-  RunDeflater deflater(idat);
+  const size_t data_begin = png_begin(width, height, bits, out);
   for (int r = 0; r < height; ++r) {
     const uint8_t* src = pixels + size_t(r) * size_t(width);
     if (bits == 1) {
@@ -91,17 +102,17 @@ void encode_mask_png(const uint8_t* pixels, int width, int height, int bits,
       deflater.add(src, size_t(width));
     }
   }
-  deflater.finish();
-  png_file(width, height, bits, idat, out);
+  deflater.finish(out);
+  png_end(data_begin, out);
 }
 
 void encode_mask_png(const MaskRuns& runs, std::vector<uint8_t>& out) {
   check_size(runs.width, runs.height, 8);
   if (runs.row_begin.size() != size_t(runs.height) + 1 || runs.columns.size() != 2 * size_t(runs.row_begin.back()))
     throw Error("cannot encode mask runs: their row index does not match the image height");
-  thread_local std::vector<uint8_t> idat;
-  idat.clear();
-  RunDeflater deflater(idat);
+  thread_local RunDeflater deflater;
+  deflater.reset();  // a former call may have thrown half-way
+  const size_t data_begin = png_begin(runs.width, runs.height, 8, out);
   // Equal neighbours are merged first (a row's trailing black, the next filter byte 0 and that
   // row's leading black are one run), which halves the runs the deflater sees.
   uint8_t byte = 0;
@@ -128,8 +139,8 @@ void encode_mask_png(const MaskRuns& runs, std::vector<uint8_t>& out) {
     run(0, size_t(runs.width) - at);
   }
   deflater.add_run(byte, count);
-  deflater.finish();
-  png_file(runs.width, runs.height, 8, idat, out);
+  deflater.finish(out);
+  png_end(data_begin, out);
 }
 
 namespace {

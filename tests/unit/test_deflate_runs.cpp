@@ -23,9 +23,9 @@ std::vector<uint8_t> inflate_all(const std::vector<uint8_t>& z, size_t size) {
 // Deflates data in pieces of the given size, so runs cross add() calls.
 std::vector<uint8_t> deflate_in_pieces(const std::vector<uint8_t>& data, size_t piece) {
   std::vector<uint8_t> z;
-  RunDeflater d(z);
+  RunDeflater d;
   for (size_t i = 0; i < data.size(); i += piece) d.add(data.data() + i, std::min(piece, data.size() - i));
-  d.finish();
+  d.finish(z);
   return z;
 }
 
@@ -86,11 +86,11 @@ TEST(RunDeflater, RunsWithoutBytesGiveTheSameStream) {
       {0, 1}, {0, 70000}, {255, 3}, {7, 1}, {255, 300000}, {0, 2}, {255, 65521}, {0, 131043}, {9, 0}};
   std::vector<uint8_t> data, by_bytes, by_runs;
   for (const auto& [b, n] : runs) data.insert(data.end(), n, b);
-  RunDeflater a(by_bytes), r(by_runs);
+  RunDeflater a, r;
   a.add(data.data(), data.size());
   for (const auto& [b, n] : runs) r.add_run(b, n);
-  a.finish();
-  r.finish();
+  a.finish(by_bytes);
+  r.finish(by_runs);
   EXPECT_EQ(by_runs, by_bytes);
   EXPECT_EQ(inflate_all(by_runs, data.size()), data);
 }
@@ -99,7 +99,7 @@ TEST(RunDeflater, AdlerOfManyAndHugeRunsMatchesZlibs) {
   // Runs longer than the 2^24 bytes that are summed in one step (they fold the unreduced
   // Adler-32 B sum first and go in pieces), between shorter runs and bytes added as bytes.
   std::vector<uint8_t> data, z;
-  RunDeflater r(z);
+  RunDeflater r;
   std::mt19937_64 rng(5);
   const uint8_t some[] = {1, 2, 255, 0, 255, 3};
   for (int i = 0; i < 40; ++i) {
@@ -112,11 +112,51 @@ TEST(RunDeflater, AdlerOfManyAndHugeRunsMatchesZlibs) {
       r.add(some, sizeof some);
     }
   }
-  r.finish();
+  r.finish(z);
   ASSERT_GT(data.size(), size_t(1) << 26);
   const uint32_t expected = uint32_t(adler32(adler32(0, nullptr, 0), data.data(), uInt(data.size())));
   const uint32_t stored = uint32_t(z[z.size() - 4]) << 24 | uint32_t(z[z.size() - 3]) << 16 |
                           uint32_t(z[z.size() - 2]) << 8 | z[z.size() - 1];
   EXPECT_EQ(stored, expected);
   EXPECT_EQ(inflate_all(z, data.size()), data);
+}
+
+TEST(RunDeflater, EachFinishStartsAFreshStreamAndResetDropsInput) {
+  std::vector<uint8_t> a(5000, 0), b(7000, 255);
+  for (size_t i = 0; i < a.size(); i += 97) a[i] = uint8_t(i);
+  std::vector<uint8_t> first, second, dropped, fresh;
+  RunDeflater kept;
+  kept.add(a.data(), a.size());
+  kept.finish(first);
+  kept.add(b.data(), b.size());
+  kept.finish(second);
+  kept.add_run(9, 123456);  // abandoned, e.g. by an error half-way through an image
+  kept.add(a.data(), 10);
+  kept.reset();
+  kept.add(b.data(), b.size());
+  kept.finish(dropped);
+  RunDeflater d;
+  d.add(b.data(), b.size());
+  d.finish(fresh);
+  EXPECT_EQ(inflate_all(first, a.size()), a);
+  EXPECT_EQ(second, fresh);
+  EXPECT_EQ(dropped, fresh);
+  EXPECT_EQ(inflate_all(fresh, b.size()), b);
+}
+
+TEST(RunDeflater, StreamsOfEveryRunLengthAfterAFewBytesMatchZlibsAdler) {
+  // Every rest of a run after its 258-byte matches (0 to 257: literals below 3, a match above),
+  // the run starting in add() and going on in add_run().
+  for (size_t n = 1; n <= 3 * 258 + 2; n += 7) {
+    std::vector<uint8_t> data = {1, 2, 2};
+    data.insert(data.end(), n, 2);
+    data.push_back(3);
+    std::vector<uint8_t> z;
+    RunDeflater d;
+    d.add(data.data(), 3);
+    d.add_run(2, n);
+    d.add_run(3, 1);
+    d.finish(z);
+    ASSERT_EQ(inflate_all(z, data.size()), data) << n;
+  }
 }

@@ -5,10 +5,12 @@
 // images are long runs of 0 and 255, so a 1024x768 8-bit mask compresses to zlib's size in a
 // fraction of its time. Any inflater reads the result.
 //
-// Use: RunDeflater d(out); d.add(bytes, n) and d.add_run(byte, n) as often as needed;
-// d.finish(). The stream is appended to out. add_run(byte, n) is add() of n copies of byte
-// without the bytes: its cost does not depend on n (the Adler-32 of a run is a formula), so an
-// image that is known as runs (mask_png.h) deflates without ever being written out.
+// Use: d.add(bytes, n) and d.add_run(byte, n) as often as needed, then d.finish(out), which
+// appends the stream to out and leaves d empty for the next stream (a deflater kept per
+// thread allocates nothing per image once its buffer has grown). add_run(byte, n) is add() of
+// n copies of byte without the bytes: its cost does not depend on n (the Adler-32 of a run is a
+// formula), so an image that is known as runs (mask_png.h) deflates without ever being written
+// out. A deflater kept across calls that may throw should be reset() before each stream.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -17,30 +19,26 @@ namespace slicereuse {
 
 class RunDeflater {
  public:
-  explicit RunDeflater(std::vector<uint8_t>& out);
   void add(const uint8_t* data, size_t n);
   void add_run(uint8_t byte, size_t n);
-  void finish();
+  void finish(std::vector<uint8_t>& out);
+  void reset();  // drops what was added since the last finish (e.g. after an error)
 
  private:
-  void repeats();  // records the pending repeats of the last literal
-  void count_run(uint8_t byte, size_t n);  // the symbols of a run
-  void fold_adler();                      // run_b_ into adler_
+  void fold_adler();  // reduces adler_a_ and adler_b_ mod 65521
 
-  // Adler-32 of runs: A is kept reduced in run_a_, B's increments add up unreduced in run_b_,
-  // which stays below 2^64: a run of at most kMaxRun = 2^24 bytes adds less than
-  // 2^24 * 2^16 + 255 * 2^48 / 2 < 2^56, and run_b_ is folded once it passes kMaxB = 2^62.
-  static constexpr uint64_t kAdlerMod = 65521;
+  // The input as runs of equal bytes, the byte in the low 8 bits and the length above; each
+  // run is sent as a literal followed by distance-1 matches of its repeats. Recording runs
+  // instead of deflate symbols makes a run's cost independent of its length.
+  std::vector<uint64_t> runs_;
+  int last_ = -1;  // byte of the last run, or -1 before the first
+
+  // Adler-32 of runs: A and B summed unreduced and reduced only when A reaches 2^32 or B 2^62
+  // (a reduction per run was most of a run's cost). From there, a run of at most kMaxRun = 2^24
+  // bytes adds less than 2^33 to A and 2^24 * 2^32 + 255 * 2^48 / 2 < 2^57 to B: no overflow.
   static constexpr uint64_t kMaxRun = uint64_t(1) << 24;
-  static constexpr uint64_t kMaxB = uint64_t(1) << 62;
-
-  std::vector<uint8_t>& out_;
-  std::vector<uint16_t> symbols_;  // literal byte, or 256 + match length (3..258)
-  int last_ = -1;                  // last byte recorded, or -1 before the first
-  size_t pending_ = 0;             // bytes equal to last_ seen since it was recorded
-  uint32_t adler_ = 1;  // A in the low half, B in the high half, as far as folded
-  uint64_t run_a_ = 1;
-  uint64_t run_b_ = 0;
+  uint64_t adler_a_ = 1;
+  uint64_t adler_b_ = 0;
 };
 
 }  // namespace slicereuse
