@@ -60,21 +60,19 @@ LayerSummary summarize_layer(const Slices& s, size_t k) {
     if (s.contour_open[c]) continue;
     const uint64_t b = s.contour_begin[c], e = s.contour_begin[c + 1];
     const double* p = s.xyz.data();
-    double twice_area = p[3 * (e - 1)] * p[3 * b + 1] - p[3 * b] * p[3 * (e - 1) + 1];  // closing edge
-    for (uint64_t i = b; i < e; ++i) {
-      const double x = p[3 * i], y = p[3 * i + 1];
-      if (i + 1 < e) twice_area += x * p[3 * (i + 1) + 1] - p[3 * (i + 1)] * y;
-      m.lo_x = std::min(m.lo_x, x);
-      m.hi_x = std::max(m.hi_x, x);
-      m.lo_y = std::min(m.lo_y, y);
-      m.hi_y = std::max(m.hi_y, y);
-    }
-    if (!std::isfinite(twice_area))  // a non-finite point, or products beyond the double range
+    const double area = contour_area(s, c);
+    if (!std::isfinite(area))  // a non-finite point, or products beyond the double range
       for (uint64_t i = b; i < e; ++i)
         if (!std::isfinite(p[3 * i]) || !std::isfinite(p[3 * i + 1]))
           throw Error(format("contour point %llu (layer %zu) has a coordinate that is not a finite number",
                              (unsigned long long)i, k));
-    m.area += 0.5 * twice_area;
+    m.area += area;
+    for (uint64_t i = b; i < e; ++i) {
+      m.lo_x = std::min(m.lo_x, p[3 * i]);
+      m.hi_x = std::max(m.hi_x, p[3 * i]);
+      m.lo_y = std::min(m.lo_y, p[3 * i + 1]);
+      m.hi_y = std::max(m.hi_y, p[3 * i + 1]);
+    }
   }
   return m;
 }
