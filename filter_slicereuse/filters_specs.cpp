@@ -101,8 +101,10 @@ FilterSpec transfer_spec() {
                    "certify is re-sliced directly on the target, so the result equals slicing "
                    "the target. <b>barycentric</b> mode applies the encoded area coordinates to "
                    "the target's faces (the method's Eq. 2), or carries each point through the "
-                   "map and places it on its layer's plane; the largest distance of a point from "
-                   "its plane before that (mm) is reported.</p>"
+                   "map and places it on the target's section at its layer's height (the nearest "
+                   "point of it); the largest distance of a carried point from its plane before "
+                   "that (mm) is reported, and so are contours dropped because the target has no "
+                   "surface at their height near them.</p>"
                    "<p>Writes the target's contour file and, in exact mode, its own encoding, so "
                    "it can be a source later. Both appear together or not at all.</p>") +
                    kReference,

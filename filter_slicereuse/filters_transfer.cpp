@@ -57,6 +57,12 @@ Result run_transfer(const ParamValues& values, Host& host) {
   if (!map_file.empty()) line += ", through the map";
   if (mode == TransferMode::Barycentric)
     line += format(", max plane deviation %.3g mm", stats.max_plane_deviation);
+  if (stats.dropped_contours > 0)
+    line += format(", %zu contours dropped (no surface of the target at their height near their images)",
+                   stats.dropped_contours);
+  if (stats.unplaced_points > 0)
+    line += format(", %zu points not placed on the target's section (no section near their images)",
+                   stats.unplaced_points);
   host.log(line + format(", %.3f s (transfer %.3f s)", seconds, transfer_seconds));
   return {{"points", int64_t(s.points())},
           {"layers", int64_t(s.layers())},

@@ -67,6 +67,8 @@ namespace {
 constexpr double kNodes = 2500;
 constexpr size_t kSamples = 40000;
 constexpr int kPolyIterations = 8;
+// Samples per block of the polynomial fit's sums (see its loop).
+constexpr size_t kSumBlock = 512;
 
 inline double dot3(const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
@@ -204,24 +206,26 @@ DisplacementField register_on_lattice(const std::vector<double>& V, const std::v
 #pragma omp parallel for schedule(static)
     for (long long i = 0; i < (long long)nv; ++i) field.apply(&V[3 * i], &P[3 * i]);
     const std::vector<double> normal = vertex_normals(P, F);
-    Eigen::MatrixXd M = Eigen::MatrixXd::Zero(U, U);
-    Eigen::VectorXd r = Eigen::VectorXd::Zero(U);
-    double sq = 0, matched = 0;
-#pragma omp parallel
-    {
-      Eigen::MatrixXd Ml = Eigen::MatrixXd::Zero(U, U);
-      Eigen::VectorXd rl = Eigen::VectorXd::Zero(U);
-      double sql = 0, ml = 0;
-#pragma omp for schedule(dynamic, 256) nowait
-      for (long long s = 0; s < (long long)ns; ++s) {
+    // Summed per fixed block of samples, then block by block in order (not by OpenMP's
+    // reductions, which add in whatever order the threads finish), so the map is the same bytes
+    // on every run and any thread count.
+    const size_t blocks = (ns + kSumBlock - 1) / kSumBlock;
+    std::vector<Eigen::MatrixXd> Mb(blocks, Eigen::MatrixXd::Zero(U, U));
+    std::vector<Eigen::VectorXd> rb(blocks, Eigen::VectorXd::Zero(U));
+    std::vector<double> sqb(blocks, 0.0), mb(blocks, 0.0);
+#pragma omp parallel for schedule(dynamic, 1)
+    for (long long blk = 0; blk < (long long)blocks; ++blk) {
+      Eigen::MatrixXd& Ml = Mb[blk];
+      Eigen::VectorXd& rl = rb[blk];
+      for (size_t s = size_t(blk) * kSumBlock; s < std::min(ns, size_t(blk + 1) * kSumBlock); ++s) {
         Pairing pr;
-        if (!pair_sample(size_t(s), normal, pr)) continue;
+        if (!pair_sample(s, normal, pr)) continue;
         const size_t i = sample[s];
         const double* p = &P[3 * i];
         const double W = area[i] / total_area;
         const double d[3] = {pr.q[0] - p[0], pr.q[1] - p[1], in_plane ? 0.0 : pr.q[2] - p[2]};
-        sql += W * dot3(d, d);
-        ml += W;
+        sqb[blk] += W * dot3(d, d);
+        mb[blk] += W;
         const double* n = pr.n;
         const double gamma = pr.gamma;
         // Residual of the whole polynomial displacement against the original position.
@@ -242,14 +246,11 @@ DisplacementField register_on_lattice(const std::vector<double>& V, const std::v
             rl(c * T + k) += W * beta * S * b[k] * g[c];
           }
       }
-#pragma omp critical
-      {
-        M += Ml;
-        r += rl;
-        sq += sql;
-        matched += ml;
-      }
     }
+    Eigen::MatrixXd M = Eigen::MatrixXd::Zero(U, U);
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(U);
+    double sq = 0, matched = 0;
+    for (size_t blk = 0; blk < blocks; ++blk) M += Mb[blk], r += rb[blk], sq += sqb[blk], matched += mb[blk];
     for (const PointConstraint& pc : constraints) {
       double b[T];
       field.polynomial_basis(pc.source.data(), b);
@@ -285,8 +286,8 @@ DisplacementField register_on_lattice(const std::vector<double>& V, const std::v
       // Each sample's goal: the current position moved toward its pair, point-to-plane plus a
       // little point-to-point (the linearized goal of that energy), or kept when unpaired.
       std::vector<double> goal(3 * ns);
-      double sq = 0, matched = 0;
-#pragma omp parallel for schedule(dynamic, 256) reduction(+ : sq, matched)
+      std::vector<double> sq_of(ns, 0.0), matched_of(ns, 0.0);  // summed in order below
+#pragma omp parallel for schedule(dynamic, 256)
       for (long long s = 0; s < (long long)ns; ++s) {
         const size_t i = sample[s];
         const double* p = &P[3 * i];
@@ -296,13 +297,15 @@ DisplacementField register_on_lattice(const std::vector<double>& V, const std::v
         if (!pair_sample(size_t(s), normal, pr)) continue;
         const double W = area[i] / total_area;
         const double r[3] = {pr.q[0] - p[0], pr.q[1] - p[1], in_plane ? 0.0 : pr.q[2] - p[2]};
-        sq += W * dot3(r, r);
-        matched += W;
+        sq_of[s] = W * dot3(r, r);
+        matched_of[s] = W;
         const double* n = pr.n;
         const double gamma = pr.gamma;
         const double rn = dot3(n, r);
         for (int a = 0; a < 3; ++a) g[a] += (gamma * n[a] * rn + beta * r[a]) / (gamma + beta);
       }
+      double sq = 0, matched = 0;
+      for (size_t s = 0; s < ns; ++s) sq += sq_of[s], matched += matched_of[s];
       rhs.setZero();
       for (size_t s = 0; s < ns; ++s) {
         const double W = area[sample[s]] / total_area;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "slicereuse/edge_links.h"
+#include "slicereuse/edge_point.h"
 #include "slicereuse/error.h"
 #include "slicereuse/fingerprint.h"
 #include "slicereuse/straddling_faces.h"
@@ -115,6 +116,90 @@ Slices exact_through_map(const Slices& enc, const SurfaceMap& map, const Mesh& t
   return splice_resliced(std::move(traced), done_layer, std::move(planes), target, with_encoding, st, progress);
 }
 
+// Carried points are placed on the target's section (barycentric_through_map): the walk along
+// the section from a seed goes on while the section comes nearer to the point, and this many
+// faces past the nearest one.
+constexpr int kStepsPastNearest = 3;
+
+// The local edge of face f (straddling zk) by which a walk along the section enters it: corner j
+// at or above zk, corner (j+1)%3 below (the reverse of its exit_edge).
+uint32_t entry_edge(const Mesh& mesh, uint32_t f, double zk) {
+  const uint32_t* c = &mesh.F[3 * size_t(f)];
+  for (uint32_t j = 0; j < 3; ++j)
+    if (mesh.V[3 * size_t(c[j]) + 2] >= zk && mesh.V[3 * size_t(c[(j + 1) % 3]) + 2] < zk) return j;
+  return kNoEdge;
+}
+
+// The point of the target's section at zk nearest (in xy) to a carried point q, over the
+// section's segments offered: each straddling face's segment from its entry to its exit
+// crossing, both computed as the slicer computes them.
+struct NearestOnSection {
+  double d2 = HUGE_VAL, x = 0, y = 0;
+  void offer(const Mesh& target, uint32_t f, uint32_t in, uint32_t out, double zk, const double* q) {
+    const uint32_t* c = &target.F[3 * size_t(f)];
+    const EdgePoint a = edge_point(&target.V[3 * size_t(c[(in + 1) % 3])], &target.V[3 * size_t(c[in])], zk);
+    const EdgePoint b = edge_point(&target.V[3 * size_t(c[out])], &target.V[3 * size_t(c[(out + 1) % 3])], zk);
+    const double ux = b.x - a.x, uy = b.y - a.y, len2 = ux * ux + uy * uy;
+    const double s = len2 > 0 ? std::clamp(((q[0] - a.x) * ux + (q[1] - a.y) * uy) / len2, 0.0, 1.0) : 0.0;
+    const double px = a.x + s * ux, py = a.y + s * uy;
+    const double d2_here = (q[0] - px) * (q[0] - px) + (q[1] - py) * (q[1] - py);
+    if (d2_here < d2) d2 = d2_here, x = px, y = py;
+  }
+};
+
+// Walks the section's loop through `seed` forward (through exit edges) and backward (through
+// entry edges), each way until kStepsPastNearest faces past the nearest segment so far, offering
+// each face's segment to `nearest`.
+void nearest_along_loop(const Mesh& target, const std::vector<uint32_t>& links, double zk, uint32_t seed,
+                        const double* q, NearestOnSection& nearest) {
+  for (const bool forward : {true, false}) {
+    uint32_t f = seed;
+    for (int past = 0; past < kStepsPastNearest; ++past) {
+      const uint32_t in = entry_edge(target, f, zk), out = exit_edge(target, f, zk);
+      if (in == kNoEdge || out == kNoEdge) break;
+      const double before = nearest.d2;
+      nearest.offer(target, f, in, out, zk, q);
+      if (nearest.d2 < before) past = 0;
+      const uint32_t link = links[3 * size_t(f) + (forward ? out : in)];
+      if (link == kUnlinked || (link >> 2) == seed) break;
+      f = link >> 2;
+    }
+  }
+}
+
+// Barycentric transfer's contours without those none of whose points was placed on the
+// target's section: the target has no surface at that height there (a dome's top that is lower
+// on the target), so such a contour would print material that the target does not have. Counts
+// them in stats.dropped_contours and the other contours' unplaced points in
+// stats.unplaced_points. s has xyz only.
+Slices without_unplaced_contours(Slices s, const std::vector<uint8_t>& placed, TransferStats& st) {
+  std::vector<uint8_t> keep(s.contours());
+  for (size_t c = 0; c < s.contours(); ++c) {
+    const auto first = placed.begin() + s.contour_begin[c], last = placed.begin() + s.contour_begin[c + 1];
+    keep[c] = std::find(first, last, 1) != last;
+    if (keep[c]) st.unplaced_points += size_t(std::count(first, last, 0));
+    else ++st.dropped_contours;
+  }
+  if (st.dropped_contours == 0) return s;
+  Slices out;
+  out.z_start = s.z_start;
+  out.thickness = s.thickness;
+  out.layer_z = s.layer_z;
+  out.layer_begin.assign(1, 0);
+  out.contour_begin.assign(1, 0);
+  out.xyz.reserve(s.xyz.size());
+  for (size_t k = 0; k < s.layers(); ++k) {
+    for (size_t c = s.layer_begin[k]; c < s.layer_begin[k + 1]; ++c) {
+      if (!keep[c]) continue;
+      out.xyz.insert(out.xyz.end(), s.xyz.begin() + 3 * s.contour_begin[c], s.xyz.begin() + 3 * s.contour_begin[c + 1]);
+      out.contour_begin.push_back(out.xyz.size() / 3);
+      out.contour_open.push_back(s.contour_open[c]);
+    }
+    out.layer_begin.push_back(out.contour_open.size());
+  }
+  return out;
+}
+
 // Layers follow the target's top as in exact mode, so the result has direct slicing's layers:
 // the source's layers are carried up to it, and a taller target's extra layers, which no source
 // point reaches, are re-sliced directly (and counted so).
@@ -123,8 +208,10 @@ Slices barycentric_through_map(const Slices& enc, const SurfaceMap& map, const M
   std::vector<double> planes = target_planes(enc, target);
   const size_t L = planes.size(), Le = std::min(L, enc.layers());
   Slices out = layout_of(enc);
+  const EdgeLinks links = edge_links(target);
   const EndsFromFaces ends{enc.edge.data(), enc.face.data(), map.source_faces.data()};
   std::vector<double> deviation(Le, 0);
+  std::vector<uint8_t> placed(enc.points(), 0);
   for_each_layer(Le, progress, [&](size_t k) {
     const double zk = enc.layer_z[k];
     double worst = 0;
@@ -135,14 +222,32 @@ Slices barycentric_through_map(const Slices& enc, const SurfaceMap& map, const M
       map_point(map, target, a, ga);
       map_point(map, target, b, gb);
       const double t = enc.t[p];
-      out.xyz[3 * p] = (1 - t) * ga[0] + t * gb[0];
-      out.xyz[3 * p + 1] = (1 - t) * ga[1] + t * gb[1];
+      const double q[2] = {(1 - t) * ga[0] + t * gb[0], (1 - t) * ga[1] + t * gb[1]};
       worst = std::max(worst, std::abs((1 - t) * ga[2] + t * gb[2] - zk));
+      // q lies on the chord between two target surface points, off the target's surface; where
+      // the surface is nearly horizontal (domes' tops, ridges) the chord's small sag below it is
+      // a large shift in the plane. By the in-plane constraint p's image is the point of the
+      // target's surface at z_k, i.e. of its section, nearest to q, as each vertex's image is the
+      // point of the target's level set nearest to the vertex's registered position. It is sought
+      // along the loop(s) that the faces of the two images lead to, walked to the plane.
+      NearestOnSection nearest;
+      const uint32_t seed_a = level_face_near(target, links.links, map.face[a], zk);
+      const uint32_t seed_b = level_face_near(target, links.links, map.face[b], zk);
+      if (seed_a != kNoSeed) nearest_along_loop(target, links.links, zk, seed_a, q, nearest);
+      if (seed_b != kNoSeed && seed_b != seed_a) nearest_along_loop(target, links.links, zk, seed_b, q, nearest);
+      // p's image lies between its edge's images: a section point farther from q than they are
+      // apart is on another loop (the walk to the plane crossed a cap), and q stays (counted).
+      const double span2 = (ga[0] - gb[0]) * (ga[0] - gb[0]) + (ga[1] - gb[1]) * (ga[1] - gb[1]) +
+                           (ga[2] - gb[2]) * (ga[2] - gb[2]);
+      placed[p] = nearest.d2 <= span2;
+      out.xyz[3 * p] = placed[p] ? nearest.x : q[0];
+      out.xyz[3 * p + 1] = placed[p] ? nearest.y : q[1];
       out.xyz[3 * p + 2] = zk;
     }
     deviation[k] = worst;
   });
   st.max_plane_deviation = deviation.empty() ? 0 : *std::max_element(deviation.begin(), deviation.end());
+  out = without_unplaced_contours(std::move(out), placed, st);
   std::vector<size_t> done_layer(L, kNoLayer);
   for (size_t k = 0; k < Le; ++k) done_layer[k] = k;
   return splice_resliced(std::move(out), done_layer, std::move(planes), target, false, st, progress);

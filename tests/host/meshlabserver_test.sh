@@ -258,9 +258,9 @@ crossparam)
   # Targets of really different connectivity: a member remeshed by MeshLab's Isotropic Explicit
   # Remeshing (another vertex count), and a member with its vertices and faces renumbered.
   here=$(cd "$(dirname "$0")" && pwd)
-  # The arch pairs have 40000 faces: barycentric transfer joins carried points by chords that cut
-  # across the target's faces, which bounds S by the resolution (the target's own section thinned
-  # to the source's points: 0.99975 at 8000 faces, >= 0.99997 at 40000); see test_crossparam.py.
+  # The arch pairs have 40000 faces: barycentric transfer places one point per source point on the
+  # target's section and joins them by chords, so the source's sampling bounds S where the section
+  # bends tightly (see test_crossparam.py).
   "$GEN_FAMILY" --shape arch --faces 40000 --members 2 --height 6 --seed 7 --out arch >/dev/null
   "$GEN_FAMILY" --shape arch --faces 40000 --members 2 --height 6 --seed 7 --shuffle --out shuffled >/dev/null
   "$GEN_FAMILY" --shape handle --faces 4000 --members 2 --height 6 --seed 7 --shuffle --out handle >/dev/null
@@ -302,7 +302,7 @@ crossparam)
     if below "$s" "$min_s"; then fail "$target: barycentric masks reach only S = $s (< $min_s)"; fi
   }
   # The method's S >= 0.9999 on every layer, on every pair (the 40000-face arch pairs reach
-  # 0.99991 remeshed and 0.99993 shuffled: the closest margin, set by the layers of the
+  # 0.99996 remeshed and shuffled: the closest margin, set by the layers of the
   # arch's upper third, its domes' tops and tooth ridges).
   pair handle/member_000.ply handle_remeshed.ply 1 0.9999
   pair handle/member_000.ply handle/member_001.ply 1 0.9999

@@ -5,6 +5,7 @@
 // the shuffled mesh the same vertex.
 #include <gtest/gtest.h>
 
+#include <omp.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -173,6 +174,23 @@ TEST(CrossParameterize, ShuffledDeformedMember) {
   const TruthError e = truth_error(p, r.map);
   EXPECT_LE(e.rms, 0.04);
   EXPECT_LE(e.max, 0.15);
+}
+
+// The same pair gives the same map, bit for bit, on every run and with any number of threads:
+// a map file, and every transfer through it, can be reproduced.
+TEST(CrossParameterize, TheMapIsTheSameOnEveryRunAndThreadCount) {
+  const Pair p = family_pair("arch", 8000, 11000, 1);
+  const CrossParamResult first = cross_parameterize(p.source, p.target, {});
+  const CrossParamResult again = cross_parameterize(p.source, p.target, {});
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const CrossParamResult one_thread = cross_parameterize(p.source, p.target, {});
+  omp_set_num_threads(threads);
+  for (const CrossParamResult* r : {&again, &one_thread}) {
+    EXPECT_TRUE(r->map.face == first.map.face);
+    EXPECT_TRUE(r->map.bary == first.map.bary);
+    EXPECT_TRUE(r->target_patch == first.target_patch);
+  }
 }
 
 // Landmarks written as MeshLab .pp files and matched by name pin the arch along its length,

@@ -38,6 +38,11 @@ struct TransferStats {
   size_t transferred_layers = 0;
   size_t resliced_layers = 0;
   double max_plane_deviation = 0;  // barycentric mode: max |z - layer_z|
+  // Barycentric transfer through a map (transfer_through_map.h): carried points left where the
+  // map carried them, because no section of the target was found near their images, and
+  // contours dropped because none of their points was (the target has no surface there).
+  size_t unplaced_points = 0;
+  size_t dropped_contours = 0;
 };
 
 // Throws Error when target's fingerprint differs from encoding.fingerprint.
