@@ -121,15 +121,6 @@ Slices exact_through_map(const Slices& enc, const SurfaceMap& map, const Mesh& t
 // faces past the nearest one.
 constexpr int kStepsPastNearest = 3;
 
-// The local edge of face f (straddling zk) by which a walk along the section enters it: corner j
-// at or above zk, corner (j+1)%3 below (the reverse of its exit_edge).
-uint32_t entry_edge(const Mesh& mesh, uint32_t f, double zk) {
-  const uint32_t* c = &mesh.F[3 * size_t(f)];
-  for (uint32_t j = 0; j < 3; ++j)
-    if (mesh.V[3 * size_t(c[j]) + 2] >= zk && mesh.V[3 * size_t(c[(j + 1) % 3]) + 2] < zk) return j;
-  return kNoEdge;
-}
-
 // The point of the target's section at zk nearest (in xy) to a carried point q, over the
 // section's segments offered: each straddling face's segment from its entry to its exit
 // crossing, both computed as the slicer computes them.
@@ -147,19 +138,32 @@ struct NearestOnSection {
   }
 };
 
+// The entry and exit edges of face f at zk (exit_edge's rule, and its reverse: corner j at or
+// above zk and corner (j+1)%3 below); false when f does not straddle zk.
+bool section_edges(const Mesh& mesh, uint32_t f, double zk, uint32_t& in, uint32_t& out) {
+  const uint32_t* c = &mesh.F[3 * size_t(f)];
+  const bool below[3] = {mesh.V[3 * size_t(c[0]) + 2] < zk, mesh.V[3 * size_t(c[1]) + 2] < zk,
+                         mesh.V[3 * size_t(c[2]) + 2] < zk};
+  in = out = kNoEdge;
+  for (uint32_t j = 0; j < 3; ++j) {
+    if (below[j] && !below[(j + 1) % 3]) out = j;
+    if (!below[j] && below[(j + 1) % 3]) in = j;
+  }
+  return in != kNoEdge && out != kNoEdge;
+}
+
 // Walks the section's loop through `seed` forward (through exit edges) and backward (through
 // entry edges), each way until kStepsPastNearest faces past the nearest segment so far, offering
-// each face's segment to `nearest`.
+// each face's segment to `nearest` and appending the faces walked to `walked`.
 void nearest_along_loop(const Mesh& target, const std::vector<uint32_t>& links, double zk, uint32_t seed,
-                        const double* q, NearestOnSection& nearest) {
+                        const double* q, NearestOnSection& nearest, std::vector<uint32_t>& walked) {
   for (const bool forward : {true, false}) {
-    uint32_t f = seed;
-    for (int past = 0; past < kStepsPastNearest; ++past) {
-      const uint32_t in = entry_edge(target, f, zk), out = exit_edge(target, f, zk);
-      if (in == kNoEdge || out == kNoEdge) break;
+    uint32_t f = seed, in, out;
+    for (int past = 0; past < kStepsPastNearest && section_edges(target, f, zk, in, out); ++past) {
       const double before = nearest.d2;
       nearest.offer(target, f, in, out, zk, q);
       if (nearest.d2 < before) past = 0;
+      walked.push_back(f);
       const uint32_t link = links[3 * size_t(f) + (forward ? out : in)];
       if (link == kUnlinked || (link >> 2) == seed) break;
       f = link >> 2;
@@ -215,6 +219,19 @@ Slices barycentric_through_map(const Slices& enc, const SurfaceMap& map, const M
   for_each_layer(Le, progress, [&](size_t k) {
     const double zk = enc.layer_z[k];
     double worst = 0;
+    std::vector<uint32_t> walked;
+    // A vertex's seed face on this plane; consecutive points share an edge end (the faces the
+    // contour crosses), so the last two are remembered.
+    uint32_t known_vertex[2] = {kNoSeed, kNoSeed}, known_seed[2] = {kNoSeed, kNoSeed}, next = 0;
+    auto seed_of_vertex = [&](uint32_t v) {
+      for (int j = 0; j < 2; ++j)
+        if (known_vertex[j] == v) return known_seed[j];
+      known_vertex[next] = v;
+      known_seed[next] = level_face_near(target, links.links, map.face[v], zk);
+      const uint32_t seed = known_seed[next];
+      next ^= 1;
+      return seed;
+    };
     for (size_t p = layer_point_begin(enc, k); p < layer_point_end(enc, k); ++p) {
       uint32_t a, b;
       ends(p, a, b);
@@ -231,10 +248,12 @@ Slices barycentric_through_map(const Slices& enc, const SurfaceMap& map, const M
       // point of the target's level set nearest to the vertex's registered position. It is sought
       // along the loop(s) that the faces of the two images lead to, walked to the plane.
       NearestOnSection nearest;
-      const uint32_t seed_a = level_face_near(target, links.links, map.face[a], zk);
-      const uint32_t seed_b = level_face_near(target, links.links, map.face[b], zk);
-      if (seed_a != kNoSeed) nearest_along_loop(target, links.links, zk, seed_a, q, nearest);
-      if (seed_b != kNoSeed && seed_b != seed_a) nearest_along_loop(target, links.links, zk, seed_b, q, nearest);
+      walked.clear();
+      const uint32_t seed_a = seed_of_vertex(a), seed_b = seed_of_vertex(b);
+      if (seed_a != kNoSeed) nearest_along_loop(target, links.links, zk, seed_a, q, nearest, walked);
+      // Both images usually lead to the same stretch of the loop: walked once.
+      if (seed_b != kNoSeed && std::find(walked.begin(), walked.end(), seed_b) == walked.end())
+        nearest_along_loop(target, links.links, zk, seed_b, q, nearest, walked);
       // p's image lies between its edge's images: a section point farther from q than they are
       // apart is on another loop (the walk to the plane crossed a cap), and q stays (counted).
       const double span2 = (ga[0] - gb[0]) * (ga[0] - gb[0]) + (ga[1] - gb[1]) * (ga[1] - gb[1]) +
