@@ -175,10 +175,12 @@ void nearest_along_loop(const Mesh& target, const std::vector<uint32_t>& links, 
 // target's section: the target has no surface at that height there (a dome's top that is lower
 // on the target), so such a contour would print material that the target does not have. Counts
 // them in stats.dropped_contours and the other contours' unplaced points in
-// stats.unplaced_points. s has xyz only.
-Slices without_unplaced_contours(Slices s, const std::vector<uint8_t>& placed, TransferStats& st) {
-  std::vector<uint8_t> keep(s.contours());
-  for (size_t c = 0; c < s.contours(); ++c) {
+// stats.unplaced_points. Only the first `carried` layers were carried (a shorter target's planes
+// end below the source's top); the others' contours are kept as they are, unused and uncounted.
+// s has xyz only.
+Slices without_unplaced_contours(Slices s, size_t carried, const std::vector<uint8_t>& placed, TransferStats& st) {
+  std::vector<uint8_t> keep(s.contours(), 1);
+  for (size_t c = 0; c < s.layer_begin[carried]; ++c) {
     const auto first = placed.begin() + s.contour_begin[c], last = placed.begin() + s.contour_begin[c + 1];
     keep[c] = std::find(first, last, 1) != last;
     if (keep[c]) st.unplaced_points += size_t(std::count(first, last, 0));
@@ -266,7 +268,7 @@ Slices barycentric_through_map(const Slices& enc, const SurfaceMap& map, const M
     deviation[k] = worst;
   });
   st.max_plane_deviation = deviation.empty() ? 0 : *std::max_element(deviation.begin(), deviation.end());
-  out = without_unplaced_contours(std::move(out), placed, st);
+  out = without_unplaced_contours(std::move(out), Le, placed, st);
   std::vector<size_t> done_layer(L, kNoLayer);
   for (size_t k = 0; k < Le; ++k) done_layer[k] = k;
   return splice_resliced(std::move(out), done_layer, std::move(planes), target, false, st, progress);

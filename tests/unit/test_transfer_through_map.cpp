@@ -290,6 +290,27 @@ TEST(TransferThroughMap, BarycentricThroughACrossParameterizationLiesOnTheTarget
               worst_chords);
 }
 
+// A target a little shorter than the source (z scaled by 0.992: its top is below the source's
+// top layer's slab) has one layer fewer. The source's top layer is not carried, so its contours
+// are not counted as dropped: the contours carried and dropped are exactly those of the layers
+// the target has (contours are dropped there too: near the top the lower target's domes do not
+// reach the source's heights).
+TEST(TransferThroughMap, BarycentricOntoAShorterTargetCountsOnlyCarriedLayers) {
+  const Mesh base = test::make_family_base(family("arch"));
+  Mesh lower = base;
+  for (size_t v = 0; v < lower.vertices(); ++v) lower.V[3 * v + 2] *= 0.992;
+  const Slices source = slice(base, 0.05);
+  const Shuffled s = shuffle(base, lower, 4);
+  TransferStats st;
+  const Slices bary =
+      transfer_through_map(source, s.map, s.target, TransferOptions(TransferMode::Barycentric, false), &st);
+  const Slices direct = slice(s.target, source.thickness, source.z_start);
+  ASSERT_EQ(direct.layers(), source.layers() - 1);
+  ASSERT_EQ(bary.layers(), direct.layers());
+  ASSERT_GT(source.layer_begin[source.layers()], source.layer_begin[direct.layers()]);  // the top has contours
+  EXPECT_EQ(bary.contours() + st.dropped_contours, source.layer_begin[direct.layers()]);
+}
+
 TEST(TransferThroughMap, AMapWithoutUsefulSeedsStillGivesDirectSlicing) {
   const Mesh base = test::make_family_base(family("handle"));
   const Slices source = slice(base, 0.05);

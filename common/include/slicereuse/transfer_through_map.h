@@ -16,8 +16,8 @@
 // counted in stats.unplaced_points; a contour none of whose points has such a section point is
 // dropped (the target has no surface at its height there, e.g. a dome's top that is lower on
 // the target) and counted in stats.dropped_contours. One output point per source point of the
-// other contours, in the source's contours and order. max_plane_deviation reports how far q was from z_k before it was placed.
-// Layers run up to the target's own top (the same planes as direct slicing of the target on the
+// other contours, in the source's contours and order. max_plane_deviation reports how far q was
+// from z_k before it was placed. Layers run up to the target's own top (the same planes as direct slicing of the target on the
 // source's plate); a taller target's layers above the source's have no points to carry and are
 // re-sliced directly. The points lie inside the target's faces, not on its edges, so this mode
 // has no target encoding: it refuses options.encoding = true.
