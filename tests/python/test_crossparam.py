@@ -17,6 +17,7 @@ MIN_BARYCENTRIC_S = 0.9999
 # 0.99995 (remeshed) and 0.99997 (shuffled). Production meshes have >= 100k faces.
 PAIR_FACES = 80000
 
+
 def _target(pymeshlab, ms, path, kind):
     """Loads member `path` as the target: remeshed to another vertex count, or as it is
     (shuffled by gen_family). Returns its mesh id."""
