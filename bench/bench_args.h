@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "family.h"
-#include "slicereuse/slice_layers.h"
-#include "slicereuse/slices.h"
+#include "slicereuse/slicing/slice_layers.h"
+#include "slicereuse/slicing/slices.h"
 
 struct BenchArgs {
   slicereuse::test::FamilyOptions family;

@@ -12,7 +12,7 @@
 
 #include "bench_args.h"
 #include "family.h"
-#include "slicereuse/cross_parameterize.h"
+#include "slicereuse/crossparam/cross_parameterize.h"
 
 using namespace slicereuse;
 

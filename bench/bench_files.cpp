@@ -17,10 +17,10 @@
 #include <string>
 #include <vector>
 
-#include "slicereuse/cli_file.h"
-#include "slicereuse/contour_mesh.h"
-#include "slicereuse/slc_file.h"
-#include "slicereuse/slice_files.h"
+#include "slicereuse/formats/cli_file.h"
+#include "slicereuse/formats/contour_mesh.h"
+#include "slicereuse/formats/slc_file.h"
+#include "slicereuse/formats/slice_files.h"
 
 using namespace slicereuse;
 

@@ -35,11 +35,14 @@
 
 #include "bench_args.h"
 #include "family.h"
-#include "slicereuse/buffer.h"
-#include "slicereuse/deflate_runs.h"
-#include "slicereuse/mask_png.h"
-#include "slicereuse/masks.h"
-#include "slicereuse/slice_layers.h"
+#include "slicereuse/masks/compare_mask_stacks.h"
+#include "slicereuse/masks/deflate_runs.h"
+#include "slicereuse/masks/export_masks.h"
+#include "slicereuse/masks/mask_png.h"
+#include "slicereuse/masks/printer_profile.h"
+#include "slicereuse/masks/rasterize_layer.h"
+#include "slicereuse/slicing/slice_layers.h"
+#include "slicereuse/util/buffer.h"
 
 using namespace slicereuse;
 

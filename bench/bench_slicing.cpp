@@ -12,7 +12,7 @@
 
 #include "bench_args.h"
 #include "family.h"
-#include "slicereuse/slice_layers.h"
+#include "slicereuse/slicing/slice_layers.h"
 
 using namespace slicereuse;
 

@@ -11,8 +11,8 @@
 #include "bench_args.h"
 #include "family.h"
 #include "shuffle_mesh.h"
-#include "slicereuse/slice_layers.h"
-#include "slicereuse/transfer_through_map.h"
+#include "slicereuse/slicing/slice_layers.h"
+#include "slicereuse/transfer/transfer_through_map.h"
 
 using namespace slicereuse;
 

@@ -9,8 +9,8 @@
 
 #include "bench_args.h"
 #include "family.h"
-#include "slicereuse/slice_layers.h"
-#include "slicereuse/transfer_contours.h"
+#include "slicereuse/slicing/slice_layers.h"
+#include "slicereuse/transfer/transfer_contours.h"
 
 using namespace slicereuse;
 

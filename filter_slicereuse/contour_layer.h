@@ -26,8 +26,8 @@
 #include <vcg/complex/complex.h>
 
 #include "mesh_convert.h"
-#include "slicereuse/contour_mesh.h"
-#include "slicereuse/error.h"
+#include "slicereuse/formats/contour_mesh.h"
+#include "slicereuse/util/error.h"
 
 namespace slicereuse::plugin {
 

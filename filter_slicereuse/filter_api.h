@@ -12,10 +12,10 @@
 #include <variant>
 #include <vector>
 
-#include "slicereuse/error.h"
-#include "slicereuse/mesh.h"
-#include "slicereuse/progress.h"
-#include "slicereuse/slices.h"
+#include "slicereuse/mesh/mesh.h"
+#include "slicereuse/slicing/slices.h"
+#include "slicereuse/util/error.h"
+#include "slicereuse/util/progress.h"
 
 namespace slicereuse::plugin {
 

@@ -6,10 +6,11 @@
 #include <vector>
 
 #include "filter_api.h"
-#include "slicereuse/format.h"
-#include "slicereuse/masks.h"
-#include "slicereuse/slice_files.h"
-#include "slicereuse/slice_layers.h"
+#include "slicereuse/formats/slice_files.h"
+#include "slicereuse/masks/export_masks.h"
+#include "slicereuse/masks/printer_profile.h"
+#include "slicereuse/slicing/slice_layers.h"
+#include "slicereuse/util/format.h"
 
 namespace slicereuse::plugin {
 

@@ -4,10 +4,10 @@
 #include <cmath>
 
 #include "filters_common.h"
-#include "slicereuse/cross_parameterize.h"
-#include "slicereuse/error.h"
-#include "slicereuse/map_files.h"
-#include "slicereuse/pickpoints_file.h"
+#include "slicereuse/crossparam/cross_parameterize.h"
+#include "slicereuse/formats/map_files.h"
+#include "slicereuse/formats/pickpoints_file.h"
+#include "slicereuse/util/error.h"
 
 namespace slicereuse::plugin {
 namespace {

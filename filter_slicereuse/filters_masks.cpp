@@ -2,10 +2,11 @@
 #include <cmath>
 
 #include "filters_common.h"
-#include "slicereuse/error.h"
-#include "slicereuse/masks.h"
-#include "slicereuse/printer_profile.h"
-#include "slicereuse/slice_files.h"
+#include "slicereuse/formats/slice_files.h"
+#include "slicereuse/masks/compare_mask_stacks.h"
+#include "slicereuse/masks/export_masks.h"
+#include "slicereuse/masks/printer_profile.h"
+#include "slicereuse/util/error.h"
 
 namespace slicereuse::plugin {
 namespace {

@@ -1,12 +1,12 @@
 // "Make Print Job": the current mesh's layers (transferred from a cached encoding, or sliced
 // directly) and its masks in one filter, in memory; a contour file only when asked for.
 #include "filters_common.h"
-#include "slicereuse/atomic_file.h"
-#include "slicereuse/encoding_cache.h"
-#include "slicereuse/error.h"
-#include "slicereuse/layer_chunks.h"
-#include "slicereuse/memory_budget.h"
-#include "slicereuse/transfer_contours.h"
+#include "slicereuse/slicing/layer_chunks.h"
+#include "slicereuse/transfer/encoding_cache.h"
+#include "slicereuse/transfer/transfer_contours.h"
+#include "slicereuse/util/atomic_file.h"
+#include "slicereuse/util/error.h"
+#include "slicereuse/util/memory_budget.h"
 
 namespace slicereuse::plugin {
 namespace {

@@ -3,8 +3,8 @@
 #include <filesystem>
 
 #include "filters_common.h"
-#include "slicereuse/atomic_file.h"
-#include "slicereuse/error.h"
+#include "slicereuse/util/atomic_file.h"
+#include "slicereuse/util/error.h"
 
 namespace slicereuse::plugin {
 

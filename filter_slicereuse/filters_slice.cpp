@@ -4,11 +4,11 @@
 #include <limits>
 
 #include "filters_common.h"
-#include "slicereuse/atomic_file.h"
-#include "slicereuse/error.h"
-#include "slicereuse/mesh_defects.h"
-#include "slicereuse/slice_files.h"
-#include "slicereuse/slice_layers.h"
+#include "slicereuse/formats/slice_files.h"
+#include "slicereuse/mesh/mesh_defects.h"
+#include "slicereuse/slicing/slice_layers.h"
+#include "slicereuse/util/atomic_file.h"
+#include "slicereuse/util/error.h"
 
 namespace slicereuse::plugin {
 namespace {

@@ -1,6 +1,6 @@
 // The filters' names, descriptions, meshes they need, and parameters (see filter_api.h).
 #include "filter_api.h"
-#include "slicereuse/error.h"
+#include "slicereuse/util/error.h"
 
 namespace slicereuse::plugin {
 namespace {

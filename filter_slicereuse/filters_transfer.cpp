@@ -1,12 +1,12 @@
 // "Transfer Slicing to Mesh": a source encoding applied to a family member with the same faces,
 // or, through a map file from Cross-Parameterize Meshes, to a member with other faces.
 #include "filters_common.h"
-#include "slicereuse/atomic_file.h"
-#include "slicereuse/error.h"
-#include "slicereuse/map_files.h"
-#include "slicereuse/slice_files.h"
-#include "slicereuse/transfer_contours.h"
-#include "slicereuse/transfer_through_map.h"
+#include "slicereuse/formats/map_files.h"
+#include "slicereuse/formats/slice_files.h"
+#include "slicereuse/transfer/transfer_contours.h"
+#include "slicereuse/transfer/transfer_through_map.h"
+#include "slicereuse/util/atomic_file.h"
+#include "slicereuse/util/error.h"
 
 namespace slicereuse::plugin {
 // The transfer and print job filters have no format parameter: the output name decides, .srb

@@ -42,7 +42,7 @@
 #include "contour_layer.h"
 #include "filter_api.h"
 #include "mesh_convert.h"
-#include "slicereuse/error.h"
+#include "slicereuse/util/error.h"
 
 namespace slicereuse::plugin {
 

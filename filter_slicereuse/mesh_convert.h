@@ -17,8 +17,8 @@
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/complex.h>
 
-#include "slicereuse/error.h"
-#include "slicereuse/mesh.h"
+#include "slicereuse/mesh/mesh.h"
+#include "slicereuse/util/error.h"
 
 namespace slicereuse::plugin {
 

@@ -10,7 +10,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "slicereuse/error.h"
+#include "slicereuse/util/error.h"
 
 namespace {
 

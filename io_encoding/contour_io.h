@@ -19,10 +19,10 @@
 #include <vector>
 
 #include "contour_layer.h"
-#include "slicereuse/cli_file.h"
-#include "slicereuse/progress.h"
-#include "slicereuse/slc_file.h"
-#include "slicereuse/slice_files.h"
+#include "slicereuse/formats/cli_file.h"
+#include "slicereuse/formats/slc_file.h"
+#include "slicereuse/formats/slice_files.h"
+#include "slicereuse/util/progress.h"
 
 namespace slicereuse::plugin {
 

@@ -15,7 +15,7 @@
 #include "family.h"
 #include "shapes.h"
 #include "shuffle_mesh.h"
-#include "slicereuse/error.h"
+#include "slicereuse/util/error.h"
 
 using namespace slicereuse;
 

@@ -32,9 +32,9 @@
 #include <vector>
 
 #include "shapes.h"
-#include "slicereuse/error.h"
-#include "slicereuse/fingerprint.h"
-#include "slicereuse/slice_files.h"
+#include "slicereuse/formats/slice_files.h"
+#include "slicereuse/mesh/fingerprint.h"
+#include "slicereuse/util/error.h"
 #include "spec_readers.h"
 
 using namespace slicereuse;

@@ -7,7 +7,7 @@
 #include <functional>
 #include <string>
 
-#include "slicereuse/error.h"
+#include "slicereuse/util/error.h"
 
 namespace slicereuse::test {
 

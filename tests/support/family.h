@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-#include "slicereuse/mesh.h"
+#include "slicereuse/mesh/mesh.h"
 
 namespace slicereuse::test {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "family.h"
-#include "slicereuse/error.h"
+#include "slicereuse/util/error.h"
 
 namespace slicereuse::test {
 

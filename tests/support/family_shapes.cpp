@@ -6,7 +6,7 @@
 
 #include "family.h"
 #include "shapes.h"
-#include "slicereuse/error.h"
+#include "slicereuse/util/error.h"
 
 namespace slicereuse::test {
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "shapes.h"
-#include "slicereuse/atomic_file.h"
-#include "slicereuse/error.h"
+#include "slicereuse/util/atomic_file.h"
+#include "slicereuse/util/error.h"
 
 namespace slicereuse::test {
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <unordered_map>
 
-#include "slicereuse/error.h"
+#include "slicereuse/util/error.h"
 
 namespace slicereuse::test {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "slicereuse/mesh.h"
+#include "slicereuse/mesh/mesh.h"
 
 namespace slicereuse::test {
 

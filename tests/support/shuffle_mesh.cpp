@@ -4,8 +4,8 @@
 #include <numeric>
 #include <random>
 
-#include "slicereuse/error.h"
-#include "slicereuse/fingerprint.h"
+#include "slicereuse/mesh/fingerprint.h"
+#include "slicereuse/util/error.h"
 
 namespace slicereuse::test {
 namespace {

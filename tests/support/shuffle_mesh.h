@@ -11,8 +11,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "slicereuse/mesh.h"
-#include "slicereuse/surface_map.h"
+#include "slicereuse/crossparam/surface_map.h"
+#include "slicereuse/mesh/mesh.h"
 
 namespace slicereuse::test {
 

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "slicereuse/error.h"
+#include "slicereuse/util/error.h"
 
 namespace fs = std::filesystem;
 

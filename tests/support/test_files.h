@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "error_of.h"
-#include "slicereuse/slices.h"
+#include "slicereuse/slicing/slices.h"
 #include "temp_folder.h"
 
 namespace slicereuse::test {

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "slicereuse/atomic_file.h"
-#include "slicereuse/error.h"
+#include "slicereuse/util/atomic_file.h"
+#include "slicereuse/util/error.h"
 #include "temp_folder.h"
 
 using namespace slicereuse;

@@ -2,7 +2,7 @@
 // also for a slightly larger request (the next family member), and only once.
 #include <gtest/gtest.h>
 
-#include "slicereuse/buffer.h"
+#include "slicereuse/util/buffer.h"
 
 using namespace slicereuse;
 

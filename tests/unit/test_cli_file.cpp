@@ -9,11 +9,11 @@
 #include <random>
 #include <string>
 
-#include "slicereuse/cli_file.h"
-#include "slicereuse/error.h"
-#include "slicereuse/slice_files.h"
-#include "slicereuse/slice_layers.h"
 #include "shapes.h"
+#include "slicereuse/formats/cli_file.h"
+#include "slicereuse/formats/slice_files.h"
+#include "slicereuse/slicing/slice_layers.h"
+#include "slicereuse/util/error.h"
 #include "spec_readers.h"
 #include "test_files.h"
 

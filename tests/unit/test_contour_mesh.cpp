@@ -5,8 +5,8 @@
 #include <cmath>
 #include <cstring>
 
-#include "slicereuse/contour_mesh.h"
-#include "slicereuse/error.h"
+#include "slicereuse/formats/contour_mesh.h"
+#include "slicereuse/util/error.h"
 #include "test_files.h"
 
 using namespace slicereuse;

@@ -16,13 +16,13 @@
 #include <random>
 #include <string>
 
+#include "error_of.h"
 #include "family.h"
 #include "shapes.h"
-#include "slicereuse/cross_parameterize.h"
-#include "error_of.h"
-#include "slicereuse/error.h"
-#include "slicereuse/mesh_topology.h"
-#include "slicereuse/pickpoints_file.h"
+#include "slicereuse/crossparam/cross_parameterize.h"
+#include "slicereuse/formats/pickpoints_file.h"
+#include "slicereuse/mesh/mesh_topology.h"
+#include "slicereuse/util/error.h"
 
 using namespace slicereuse;
 using namespace slicereuse::test;

@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "slicereuse/deflate_runs.h"
+#include "slicereuse/masks/deflate_runs.h"
 
 using namespace slicereuse;
 

@@ -9,9 +9,9 @@
 
 #include "error_of.h"
 #include "shapes.h"
-#include "slicereuse/error.h"
-#include "slicereuse/mesh_defects.h"
-#include "slicereuse/slice_layers.h"
+#include "slicereuse/mesh/mesh_defects.h"
+#include "slicereuse/slicing/slice_layers.h"
+#include "slicereuse/util/error.h"
 
 using namespace slicereuse;
 using test::error_of;

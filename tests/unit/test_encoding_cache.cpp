@@ -10,12 +10,12 @@
 #include <string>
 
 #include "family.h"
-#include "slicereuse/encoding_cache.h"
-#include "slicereuse/error.h"
-#include "slicereuse/ordered_parallel.h"
-#include "slicereuse/slice_files.h"
-#include "slicereuse/slice_layers.h"
-#include "slicereuse/transfer_contours.h"
+#include "slicereuse/formats/slice_files.h"
+#include "slicereuse/slicing/slice_layers.h"
+#include "slicereuse/transfer/encoding_cache.h"
+#include "slicereuse/transfer/transfer_contours.h"
+#include "slicereuse/util/error.h"
+#include "slicereuse/util/ordered_parallel.h"
 #include "temp_folder.h"
 
 using namespace slicereuse;

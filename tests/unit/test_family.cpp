@@ -11,7 +11,7 @@
 
 #include "family.h"
 #include "shapes.h"
-#include "slicereuse/error.h"
+#include "slicereuse/util/error.h"
 
 using namespace slicereuse;
 using namespace slicereuse::test;

@@ -9,11 +9,13 @@
 
 #include "error_of.h"
 #include "family.h"
-#include "slicereuse/error.h"
-#include "slicereuse/layer_chunks.h"
-#include "slicereuse/layer_planes.h"
-#include "slicereuse/masks.h"
-#include "slicereuse/slice_layers.h"
+#include "slicereuse/masks/compare_mask_stacks.h"
+#include "slicereuse/masks/export_masks.h"
+#include "slicereuse/masks/printer_profile.h"
+#include "slicereuse/slicing/layer_chunks.h"
+#include "slicereuse/slicing/layer_planes.h"
+#include "slicereuse/slicing/slice_layers.h"
+#include "slicereuse/util/error.h"
 #include "temp_folder.h"
 #include "test_files.h"
 

@@ -9,11 +9,11 @@
 #include <sstream>
 #include <string>
 
-#include "family.h"
 #include "error_of.h"
-#include "slicereuse/error.h"
-#include "slicereuse/fingerprint.h"
-#include "slicereuse/map_files.h"
+#include "family.h"
+#include "slicereuse/formats/map_files.h"
+#include "slicereuse/mesh/fingerprint.h"
+#include "slicereuse/util/error.h"
 #include "test_files.h"
 
 using namespace slicereuse;

@@ -14,11 +14,14 @@
 #include <string>
 #include <vector>
 
-#include "slicereuse/error.h"
-#include "slicereuse/mask_png.h"
-#include "slicereuse/mask_stack.h"
-#include "slicereuse/masks.h"
 #include "error_of.h"
+#include "mask_stack.h"
+#include "slicereuse/masks/compare_mask_stacks.h"
+#include "slicereuse/masks/export_masks.h"
+#include "slicereuse/masks/mask_png.h"
+#include "slicereuse/masks/printer_profile.h"
+#include "slicereuse/masks/rasterize_layer.h"
+#include "slicereuse/util/error.h"
 #include "temp_folder.h"
 #include "test_files.h"
 

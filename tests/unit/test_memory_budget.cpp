@@ -6,10 +6,10 @@
 #include <string>
 
 #include "error_of.h"
-#include "slicereuse/memory_budget.h"
-#include "slicereuse/slice_layers.h"
-#include "slicereuse/transfer_contours.h"
 #include "shapes.h"
+#include "slicereuse/slicing/slice_layers.h"
+#include "slicereuse/transfer/transfer_contours.h"
+#include "slicereuse/util/memory_budget.h"
 
 using namespace slicereuse;
 

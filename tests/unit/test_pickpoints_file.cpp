@@ -6,8 +6,8 @@
 #include <fstream>
 #include <string>
 
-#include "slicereuse/error.h"
-#include "slicereuse/pickpoints_file.h"
+#include "slicereuse/formats/pickpoints_file.h"
+#include "slicereuse/util/error.h"
 #include "temp_folder.h"
 
 using namespace slicereuse;

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "shapes.h"
-#include "slicereuse/error.h"
+#include "slicereuse/util/error.h"
 
 using namespace slicereuse;
 using namespace slicereuse::test;

@@ -8,10 +8,10 @@
 #include <filesystem>
 #include <string>
 
-#include "slicereuse/error.h"
-#include "slicereuse/slc_file.h"
-#include "slicereuse/slice_layers.h"
 #include "shapes.h"
+#include "slicereuse/formats/slc_file.h"
+#include "slicereuse/slicing/slice_layers.h"
+#include "slicereuse/util/error.h"
 #include "spec_readers.h"
 #include "test_files.h"
 

@@ -17,9 +17,9 @@
 #include <vector>
 
 #include "error_of.h"
-#include "slicereuse/atomic_file.h"
-#include "slicereuse/error.h"
-#include "slicereuse/slice_files.h"
+#include "slicereuse/formats/slice_files.h"
+#include "slicereuse/util/atomic_file.h"
+#include "slicereuse/util/error.h"
 #include "test_files.h"
 
 using namespace slicereuse;

@@ -6,9 +6,9 @@
 #include <utility>
 
 #include "shapes.h"
-#include "slicereuse/error.h"
-#include "slicereuse/layer_planes.h"
-#include "slicereuse/slice_layers.h"
+#include "slicereuse/slicing/layer_planes.h"
+#include "slicereuse/slicing/slice_layers.h"
+#include "slicereuse/util/error.h"
 
 using namespace slicereuse;
 

@@ -10,9 +10,9 @@
 
 #include "family.h"
 #include "sections.h"
-#include "slicereuse/error.h"
-#include "slicereuse/slice_layers.h"
-#include "slicereuse/transfer_contours.h"
+#include "slicereuse/slicing/slice_layers.h"
+#include "slicereuse/transfer/transfer_contours.h"
+#include "slicereuse/util/error.h"
 
 using namespace slicereuse;
 

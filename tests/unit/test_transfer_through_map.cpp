@@ -13,12 +13,13 @@
 #include "family.h"
 #include "sections.h"
 #include "shuffle_mesh.h"
-#include "slicereuse/cross_parameterize.h"
-#include "slicereuse/error.h"
-#include "slicereuse/fingerprint.h"
-#include "slicereuse/masks.h"
-#include "slicereuse/slice_layers.h"
-#include "slicereuse/transfer_through_map.h"
+#include "slicereuse/crossparam/cross_parameterize.h"
+#include "slicereuse/masks/printer_profile.h"
+#include "slicereuse/masks/rasterize_layer.h"
+#include "slicereuse/mesh/fingerprint.h"
+#include "slicereuse/slicing/slice_layers.h"
+#include "slicereuse/transfer/transfer_through_map.h"
+#include "slicereuse/util/error.h"
 
 using namespace slicereuse;
 

@@ -1,0 +1,94 @@
+#pragma once
+// The binary (.srb) file layout (docs/formats.md, "Binary format"), shared by the reader
+// (slice_files_binary_read.cpp), the writer (slice_files_binary_write.cpp) and the format
+// detection (slice_files.cpp); internal, not part of the API.
+//   A fixed header of kFixedHeaderBytes, a table of one kSectionEntryBytes entry per section,
+//   an XXH3-64 checksum over both, then the sections at 8-byte aligned offsets.
+//   section_ids(kind): the sections of a file kind, in file order;
+//   section_bytes(id, L, C, P): a section's size for L layers, C contours, P points;
+//   section_data(s, id): the Slices array a section holds (the one id -> array mapping).
+// Multi-byte fields are little-endian, which is the host order on every platform MeshLab runs on.
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "slice_files_detail.h"
+#include "slicereuse/slicing/slices.h"
+#include "slicereuse/util/progress.h"
+
+namespace slicereuse::detail {
+
+static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, ".srb I/O assumes a little-endian host");
+
+// The 8 bytes that open every binary file.
+constexpr char kBinaryMagic[8] = {'\x89', 'S', 'R', 'B', '\r', '\n', '\x1a', '\n'};
+
+// Fixed header: byte offsets of its fields.
+constexpr size_t kFixedHeaderBytes = 80;
+enum HeaderField : size_t {
+  kVersionAt = 8,             // uint32
+  kKindAt = 12,               // uint32, FileKind
+  kThicknessAt = 16,          // double
+  kZStartAt = 24,             // double
+  kLayersAt = 32,             // uint64
+  kContoursAt = 40,           // uint64
+  kPointsAt = 48,             // uint64
+  kFingerprintFacesAt = 56,   // uint64, encoding files (0 in contour files)
+  kFingerprintHashAt = 64,    // uint64, encoding files (0 in contour files)
+  kSectionCountAt = 72,       // uint32
+  kReservedAt = 76,           // uint32, 0
+};
+
+// Section table entry: byte offsets of its fields.
+constexpr size_t kSectionEntryBytes = 32;
+enum EntryField : size_t {
+  kIdAt = 0,        // uint32
+  kPaddingAt = 4,   // uint32, 0
+  kOffsetAt = 8,    // uint64, from the start of the file
+  kBytesAt = 16,    // uint64
+  kChecksumAt = 24  // uint64, XXH3-64 of the section's bytes
+};
+
+enum SectionId : uint32_t {
+  kLayerZ = 1, kLayerBegin = 2, kContourBegin = 3, kContourOpen = 4,
+  kXyz = 5, kFace = 6, kEdge = 7, kT = 8
+};
+const char* section_name(uint32_t id);
+std::vector<uint32_t> section_ids(FileKind kind);
+// Counts must be at most 2^58 (no overflow).
+uint64_t section_bytes(uint32_t id, uint64_t layers, uint64_t contours, uint64_t points);
+// The arrays must already have their sizes (section_bytes); nullptr for an unknown id.
+unsigned char* section_data(Slices& s, uint32_t id);
+inline const unsigned char* section_data(const Slices& s, uint32_t id) {
+  return section_data(const_cast<Slices&>(s), id);
+}
+inline uint64_t align8(uint64_t n) { return (n + 7) & ~uint64_t(7); }
+
+// Writes a binary container atomically: the fixed header with `kind` and the kind's own header
+// bytes [kThicknessAt, kSectionCountAt) (`fields`), the section table with checksums, then the
+// sections in order. Used by the slice files (kinds 1, 2) and the map files (map_files.cpp, 3).
+constexpr size_t kKindFieldBytes = kSectionCountAt - kThicknessAt;
+struct SectionOut {
+  uint32_t id;
+  const void* data;
+  uint64_t bytes;
+};
+void write_container(const std::string& path, uint32_t kind, const unsigned char fields[kKindFieldBytes],
+                     const std::vector<SectionOut>& sections, const Progress& progress);
+
+// Large sections are read and written in pieces so progress (and cancellation) stays responsive.
+constexpr uint64_t kPieceBytes = uint64_t(64) << 20;
+
+template <class T>
+void put(unsigned char* at, T v) {
+  std::memcpy(at, &v, sizeof v);
+}
+template <class T>
+T get(const unsigned char* at) {
+  T v;
+  std::memcpy(&v, at, sizeof v);
+  return v;
+}
+
+}  // namespace slicereuse::detail

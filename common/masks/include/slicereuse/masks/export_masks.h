@@ -1,0 +1,46 @@
+#pragma once
+// export_masks: every layer's mask (rasterize_layer.h) written as a folder of PNGs or a Prusa
+// .sl1 archive, from a whole stack of slices or from ranges of layers made one at a time.
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "slicereuse/masks/printer_profile.h"
+#include "slicereuse/slicing/slices.h"
+#include "slicereuse/util/progress.h"
+
+namespace slicereuse {
+
+struct MaskExportStats {
+  size_t layers = 0;
+  size_t ignored_open_contours = 0;
+  // The closed contours' extent in mm, model coordinates, and whether it leaves the display
+  // (the masks are then cut off at the display's edges).
+  double min_x = 0, max_x = 0, min_y = 0, max_y = 0;
+  bool outside_display = false;
+  double seconds = 0;
+};
+
+// Writes one PNG per layer as <folder>/<prefix>NNNNN.png, or, when output_path ends in .sl1,
+// a Prusa SL1 archive of the same PNGs plus config.ini. Multithreaded; only a few layers are
+// held in memory at a time. Atomic: nothing is left under the final name on failure. A point of
+// a closed contour whose x or y is not finite is refused (Error naming the point and layer).
+MaskExportStats export_masks(const Slices& s, const PrinterProfile& profile,
+                             const std::string& output_path, const Progress& progress = {});
+
+// A stack too large to hold at once, made a range of layers at a time (layer_chunks.h):
+// make(i, progress) returns the slices of layers [first[i], first[i + 1]), counted from 0 within
+// the range. Export calls it once per range, in order, on the calling thread, and frees each
+// range's slices before it makes the next, so memory holds one range (plus a few images).
+struct SliceChunks {
+  std::vector<size_t> first;  // range starts, then the layer count
+  double thickness = 0;
+  std::function<Slices(size_t i, const Progress& progress)> make;
+};
+
+// The same export of the stack the ranges make up, equal to exporting it whole.
+MaskExportStats export_masks(const SliceChunks& chunks, const PrinterProfile& profile,
+                             const std::string& output_path, const Progress& progress = {});
+
+}  // namespace slicereuse

@@ -1,0 +1,317 @@
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <chrono>
+#include <cstring>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include <omp.h>
+
+#include "mask_stack.h"
+#include "sl1_writer.h"
+#include "slicereuse/masks/export_masks.h"
+#include "slicereuse/masks/mask_png.h"
+#include "slicereuse/masks/printer_profile.h"
+#include "slicereuse/masks/rasterize_layer.h"
+#include "slicereuse/util/atomic_file.h"
+#include "slicereuse/util/buffer.h"
+#include "slicereuse/util/error.h"
+#include "slicereuse/util/format.h"
+#include "slicereuse/util/ordered_parallel.h"
+#include "slicereuse/util/parallel_blocks.h"
+
+namespace slicereuse {
+namespace {
+
+// Folder output names its images layer00000.png, layer00001.png, ...
+const char* const FOLDER_PREFIX = "layer";
+const char* const PHASE = "writing mask images";
+
+bool is_sl1(const std::string& path) {
+  if (path.size() < 4) return false;
+  std::string ext = path.substr(path.size() - 4);
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".sl1";
+}
+
+// What export needs of a layer besides its image, found in the same visit to its points (hot in
+// cache for the rasterizer then), not in passes of their own over the whole stack: the closed
+// contours' area (shoelace; holes run clockwise and subtract) for the resin volume, and their
+// extent. validate_slices leaves the points to this pass: a non-finite x or y makes a contour's
+// shoelace sum non-finite, so only then are its points looked at, and a point that cannot be
+// drawn is refused (open contours are not drawn, and z is not used).
+struct LayerSummary {
+  double area = 0;
+  double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
+};
+
+LayerSummary summarize_layer(const Slices& s, size_t k) {
+  LayerSummary m;
+  for (uint64_t c = s.layer_begin[k]; c < s.layer_begin[k + 1]; ++c) {
+    if (s.contour_open[c]) continue;
+    const uint64_t b = s.contour_begin[c], e = s.contour_begin[c + 1];
+    const double* p = s.xyz.data();
+    const double area = contour_area(s, c);
+    if (!std::isfinite(area))  // a non-finite point, or products beyond the double range
+      for (uint64_t i = b; i < e; ++i)
+        if (!std::isfinite(p[3 * i]) || !std::isfinite(p[3 * i + 1]))
+          throw Error(format("contour point %llu (layer %zu) has a coordinate that is not a finite number",
+                             (unsigned long long)i, k));
+    m.area += area;
+    for (uint64_t i = b; i < e; ++i) {
+      m.lo_x = std::min(m.lo_x, p[3 * i]);
+      m.hi_x = std::max(m.hi_x, p[3 * i]);
+      m.lo_y = std::min(m.lo_y, p[3 * i + 1]);
+      m.hi_y = std::max(m.hi_y, p[3 * i + 1]);
+    }
+  }
+  return m;
+}
+
+// The layers' summaries as the encoders make them, on any thread, in any order: areas kept per
+// layer and summed in layer order, so the volume does not depend on the schedule.
+class StackSummary {
+ public:
+  explicit StackSummary(size_t layers) : area_(layers, 0) {}
+
+  void add(size_t k, const LayerSummary& m) {
+    area_[k] = m.area;
+    std::lock_guard<std::mutex> lock(mutex_);
+    extent_.lo_x = std::min(extent_.lo_x, m.lo_x);
+    extent_.hi_x = std::max(extent_.hi_x, m.hi_x);
+    extent_.lo_y = std::min(extent_.lo_y, m.lo_y);
+    extent_.hi_y = std::max(extent_.hi_y, m.hi_y);
+  }
+
+  // Resin volume in ml; layer thickness in mm.
+  double used_material_ml(double thickness) const {
+    double mm3 = 0;
+    for (double a : area_) mm3 += std::max(0.0, a) * thickness;
+    return mm3 / 1000;
+  }
+
+  // The display covers |x + offset_x| <= width * pixel / 2 around the model origin (likewise y).
+  void measure_extent(const PrinterProfile& p, MaskExportStats& stats) const {
+    const LayerSummary& e = extent_;
+    if (e.lo_x > e.hi_x) return;  // no closed contour: nothing is drawn
+    stats.min_x = e.lo_x;
+    stats.max_x = e.hi_x;
+    stats.min_y = e.lo_y;
+    stats.max_y = e.hi_y;
+    const double half_w = 0.5e-3 * p.width_px * p.pixel_size_x_um, half_h = 0.5e-3 * p.height_px * p.pixel_size_y_um;
+    stats.outside_display = e.lo_x + p.offset_x_mm < -half_w || e.hi_x + p.offset_x_mm > half_w ||
+                            e.lo_y + p.offset_y_mm < -half_h || e.hi_y + p.offset_y_mm > half_h;
+  }
+
+ private:
+  std::vector<double> area_;
+  std::mutex mutex_;
+  LayerSummary extent_;
+};
+
+// The stack an export works on: one Slices, or ranges of layers made on demand (SliceChunks),
+// each dropped before the next is made. Layer numbers are the stack's; a range's own slices
+// count from 0.
+class Stack {
+ public:
+  explicit Stack(const Slices& s) : whole_(&s), first_{0, s.layers()}, thickness_(s.thickness) {}
+  explicit Stack(const SliceChunks& c) : chunks_(&c), first_(c.first), thickness_(c.thickness) {
+    if (first_.size() < 2 || first_.front() != 0 ||
+        std::adjacent_find(first_.begin(), first_.end(), std::greater_equal<size_t>()) != first_.end())
+      throw Error("mask export: the layer ranges must start at layer 0 and each hold at least one layer");
+  }
+
+  size_t layers() const { return first_.back(); }
+  size_t ranges() const { return first_.size() - 1; }
+  size_t begin(size_t i) const { return first_[i]; }
+  size_t end(size_t i) const { return first_[i + 1]; }
+  double thickness() const { return thickness_; }
+  // Where range i's share of the export begins, and where its encoding begins within it: a range
+  // made on demand spends the first half of its share being made.
+  double share_begin(size_t i) const { return double(begin(i)) / double(layers()); }
+  double encoding_begin(size_t i) const {
+    return whole_ ? share_begin(i) : 0.5 * (share_begin(i) + double(end(i)) / double(layers()));
+  }
+
+  // Range i's slices, checked; the previous range's are freed first.
+  const Slices& range(size_t i, const Progress& progress) {
+    if (whole_) return *whole_;
+    held_ = Slices();
+    held_ = chunks_->make(i, sub_progress(progress, share_begin(i), encoding_begin(i)));
+    if (held_.layers() != end(i) - begin(i))
+      throw Error(format("mask export: layer range %zu holds %zu layers, expected %zu", i, held_.layers(),
+                         end(i) - begin(i)));
+    check(held_);
+    return held_;
+  }
+
+  static void check(const Slices& s) {
+    validate_slices(s, false);  // the points: summarize_layer
+    if (!s.has_points()) throw Error("mask export needs contour points, but the slices carry only an encoding");
+  }
+
+ private:
+  const Slices* whole_ = nullptr;
+  const SliceChunks* chunks_ = nullptr;
+  std::vector<size_t> first_;
+  double thickness_ = 0;
+  Slices held_;
+};
+
+// Layer `local` of range s, layer `k` of the stack.
+void encode_layer(const Slices& s, size_t local, size_t k, const PrinterProfile& p, int bits,
+                  std::vector<uint8_t>& png, StackSummary& summary) {
+  summary.add(k, summarize_layer(s, local));
+  if (bits == 8 && !p.antialiasing) {  // binary 8-bit (.sl1): straight from the runs
+    thread_local MaskRuns runs;
+    rasterize_layer_runs(s, local, p, runs);
+    encode_mask_png(runs, png);
+    return;
+  }
+  thread_local Buffer<uint8_t> image;
+  image.resize(size_t(p.width_px) * size_t(p.height_px));
+  rasterize_layer(s, local, p, image.data());
+  encode_mask_png(image.data(), p.width_px, p.height_px, bits, png);
+}
+
+void write_file(const std::string& path, const std::vector<uint8_t>& data) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) throw Error("cannot create '" + path + "': " + std::strerror(errno));
+  size_t done = 0;
+  while (done < data.size()) {
+    const ssize_t n = ::write(fd, data.data() + done, data.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int e = errno;
+      ::close(fd);
+      throw Error("cannot write '" + path + "': " + std::strerror(n < 0 ? e : ENOSPC));
+    }
+    done += size_t(n);
+  }
+  if (::close(fd) != 0) throw Error("cannot write '" + path + "': " + std::strerror(errno));
+}
+
+// The images are written into a staged folder that replaces the target (or moves its images
+// into an existing target) only when all are written; images of a former, longer export there
+// are removed then.
+void export_folder(Stack& stack, const PrinterProfile& p, const std::string& folder, StackSummary& summary,
+                   size_t& open_contours, const Progress& progress) {
+  StagedOutputs outputs;
+  const std::string staged = outputs.folder(folder);
+  for (size_t i = 0; i < stack.ranges(); ++i) {
+    const Slices& s = stack.range(i, progress);
+    open_contours += s.open_contours();
+    const size_t first = stack.begin(i);
+    parallel_blocks(
+        s.layers(),
+        [&](size_t local) {
+          thread_local std::vector<uint8_t> png;
+          encode_layer(s, local, first + local, p, p.antialiasing ? 8 : 1, png, summary);
+          // Plain writes: the staged folder as a whole is what appears atomically.
+          write_file(staged + "/" + mask_layer_file_name(FOLDER_PREFIX, first + local), png);
+        },
+        sub_progress(progress, stack.encoding_begin(i), double(stack.end(i)) / double(stack.layers())), PHASE);
+  }
+  // Last chance to cancel: once committed, the export is done and no longer reports.
+  report_progress(progress, 1, PHASE);
+  outputs.commit();
+  for (size_t k = stack.layers();; ++k) {
+    const std::string stale = folder + "/" + mask_layer_file_name(FOLDER_PREFIX, k);
+    if (::unlink(stale.c_str()) != 0) break;
+  }
+}
+
+// Encodes layers on all cores, a window ahead of write_sl1, which asks for them in order: range
+// by range, the next one made when write_sl1 first asks for one of its layers.
+// Always 8-bit: PrusaSlicer's SL1 import decodes only 8-bit greyscale PNGs (1-bit layers would
+// import as empty).
+class Sl1Layers {
+ public:
+  Sl1Layers(Stack& stack, const PrinterProfile& p, StackSummary& summary, size_t& open_contours,
+            const Progress& progress)
+      : stack_(stack), p_(p), summary_(summary), open_contours_(open_contours), progress_(progress) {}
+
+  const std::vector<uint8_t>& operator()(size_t k) {
+    if (!items_ || k >= stack_.end(range_)) next_range();
+    const size_t local = k - stack_.begin(range_);
+    if (local % 64 == 0) {
+      const double from = stack_.encoding_begin(range_), to = double(stack_.end(range_)) / double(stack_.layers());
+      report_progress(progress_, from + (to - from) * double(local) / double(stack_.end(range_) - stack_.begin(range_)),
+                      PHASE);
+    }
+    return items_->get(local);
+  }
+
+ private:
+  void next_range() {
+    if (items_) ++range_;
+    items_.reset();  // all of the range's layers were taken: its workers are idle
+    const Slices& s = stack_.range(range_, progress_);
+    open_contours_ += s.open_contours();
+    const size_t first = stack_.begin(range_);
+    items_ = std::make_unique<OrderedParallel>(
+        s.layers(), size_t(16) * size_t(omp_get_max_threads()),
+        [this, &s, first](size_t local, std::vector<uint8_t>& png) {
+          encode_layer(s, local, first + local, p_, 8, png, summary_);
+        });
+  }
+
+  Stack& stack_;
+  const PrinterProfile& p_;
+  StackSummary& summary_;
+  size_t& open_contours_;
+  const Progress& progress_;
+  size_t range_ = 0;
+  std::unique_ptr<OrderedParallel> items_;
+};
+
+MaskExportStats export_stack(Stack& stack, const PrinterProfile& profile, const std::string& output_path,
+                             const Progress& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  validate_printer_profile(profile);
+  if (stack.layers() == 0) throw Error("mask export: the slices have no layers");
+  if (output_path.empty()) throw Error("mask export: no output path given");
+  report_progress(progress, 0, PHASE);
+  StackSummary summary(stack.layers());
+  MaskExportStats stats;
+  if (is_sl1(output_path)) {
+    Sl1Layers encoder(stack, profile, summary, stats.ignored_open_contours, progress);
+    write_sl1(output_path,
+              Sl1Job{profile, stack.layers(), stack.thickness(),
+                     [&] { return summary.used_material_ml(stack.thickness()); }},
+              std::ref(encoder));
+  } else {
+    export_folder(stack, profile, output_path, summary, stats.ignored_open_contours, progress);
+  }
+  stats.layers = stack.layers();
+  summary.measure_extent(profile, stats);
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return stats;
+}
+
+}  // namespace
+
+MaskExportStats export_masks(const Slices& s, const PrinterProfile& profile,
+                             const std::string& output_path, const Progress& progress) {
+  Stack::check(s);
+  Stack stack(s);
+  return export_stack(stack, profile, output_path, progress);
+}
+
+MaskExportStats export_masks(const SliceChunks& chunks, const PrinterProfile& profile,
+                             const std::string& output_path, const Progress& progress) {
+  Stack stack(chunks);
+  return export_stack(stack, profile, output_path, progress);
+}
+
+}  // namespace slicereuse

@@ -1,0 +1,223 @@
+#include "sl1_writer.h"
+
+#include <zip.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <ctime>
+#include <exception>
+#include <memory>
+
+#include "mask_stack.h"
+#include "slicereuse/util/atomic_file.h"
+#include "slicereuse/util/error.h"
+
+namespace slicereuse {
+namespace {
+
+// Placeholder exposure settings: the printer profile has no resin data; SL1 defaults.
+constexpr double EXPOSURE_S = 6, FIRST_EXPOSURE_S = 35, TILT_S = 5;
+constexpr size_t FADED_LAYERS = 10;
+
+std::string num(double v) {
+  char buf[32];
+  return std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
+}
+
+std::string utc_timestamp(std::time_t now) {
+  std::tm tm;
+  gmtime_r(&now, &tm);
+  char buf[64];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d at %H:%M:%S UTC", &tm);
+  return buf;
+}
+
+std::string config_ini(const Sl1Job& j, const std::string& job, std::time_t now, double used_material_ml) {
+  const size_t fade = std::min(FADED_LAYERS, j.layers);
+  const double print_s = double(fade) * FIRST_EXPOSURE_S + double(j.layers - fade) * EXPOSURE_S +
+                         double(j.layers) * TILT_S;
+  return "action = print\n"
+         "expTime = " + num(EXPOSURE_S) + "\n"
+         "expTimeFirst = " + num(FIRST_EXPOSURE_S) + "\n"
+         "expUserProfile = 0\n"
+         "fileCreationTimestamp = " + utc_timestamp(now) + "\n"
+         "hollow = 0\n"
+         "jobDir = " + job + "\n"
+         "layerHeight = " + num(j.layer_height_mm) + "\n"
+         "materialName = slicereuse\n"
+         "numFade = " + std::to_string(fade) + "\n"
+         "numFast = " + std::to_string(j.layers) + "\n"
+         "numSlow = 0\n"
+         "printProfile = slicereuse\n"
+         "printTime = " + num(std::round(print_s)) + "\n"
+         "printerModel = SL1\n"
+         "printerProfile = slicereuse\n"
+         "printerVariant = default\n"
+         "prusaSlicerVersion = slicereuse\n"
+         "usedMaterial = " + num(std::round(used_material_ml * 1000) / 1000) + "\n";
+}
+
+std::string prusaslicer_ini(const Sl1Job& j) {
+  const PrinterProfile& p = j.profile;
+  const std::string w = num(p.width_px * p.pixel_size_x_um / 1000);
+  const std::string h = num(p.height_px * p.pixel_size_y_um / 1000);
+  const double height = std::max(150.0, std::ceil(double(j.layers) * j.layer_height_mm));
+  return "bed_shape = 0x0," + w + "x0," + w + "x" + h + ",0x" + h + "\n"
+         "display_height = " + h + "\n"
+         "display_mirror_x = " + std::to_string(int(p.mirror_x)) + "\n"
+         "display_mirror_y = " + std::to_string(int(p.mirror_y)) + "\n"
+         "display_orientation = landscape\n"
+         "display_pixels_x = " + std::to_string(p.width_px) + "\n"
+         "display_pixels_y = " + std::to_string(p.height_px) + "\n"
+         "display_width = " + w + "\n"
+         "exposure_time = " + num(EXPOSURE_S) + "\n"
+         "faded_layers = " + std::to_string(std::min(FADED_LAYERS, j.layers)) + "\n"
+         "gamma_correction = " + (p.antialiasing ? "1" : "0") + "\n"
+         "initial_exposure_time = " + num(FIRST_EXPOSURE_S) + "\n"
+         "initial_layer_height = " + num(j.layer_height_mm) + "\n"
+         "layer_height = " + num(j.layer_height_mm) + "\n"
+         "max_print_height = " + num(height) + "\n"
+         "printer_model = SL1\n"
+         "printer_settings_id = slicereuse\n"
+         "printer_technology = SLA\n"
+         "printer_variant = default\n"
+         "sla_material_settings_id = slicereuse\n"
+         "sla_print_settings_id = slicereuse\n";
+}
+
+struct ZipError {
+  zip_error_t e;
+  ZipError() { zip_error_init(&e); }
+  ~ZipError() { zip_error_fini(&e); }
+};
+
+// One layer entry: its bytes are asked for only when libzip reaches it on close.
+struct Layers {
+  const LayerPng* layer_png;
+  std::time_t mtime;
+  std::exception_ptr failure;
+  ZipError error;
+};
+
+struct LayerEntry {
+  Layers* layers;
+  size_t k;
+  size_t pos = 0;
+  const std::vector<uint8_t>* bytes = nullptr;
+};
+
+zip_int64_t layer_cb(void* ud, void* data, zip_uint64_t len, zip_source_cmd_t cmd) {
+  LayerEntry& e = *static_cast<LayerEntry*>(ud);
+  Layers& ls = *e.layers;
+  try {
+    switch (cmd) {
+      case ZIP_SOURCE_SUPPORTS:
+        return ZIP_SOURCE_SUPPORTS_READABLE;
+      case ZIP_SOURCE_STAT: {
+        auto* st = ZIP_SOURCE_GET_ARGS(zip_stat_t, data, len, &ls.error.e);
+        if (!st) return -1;
+        zip_stat_init(st);
+        e.bytes = &(*ls.layer_png)(e.k);
+        st->size = e.bytes->size();
+        st->mtime = ls.mtime;
+        st->valid = ZIP_STAT_SIZE | ZIP_STAT_MTIME;
+        return sizeof(zip_stat_t);
+      }
+      case ZIP_SOURCE_OPEN:
+        e.bytes = &(*ls.layer_png)(e.k);
+        e.pos = 0;
+        return 0;
+      case ZIP_SOURCE_READ: {
+        const size_t n = std::min<size_t>(len, e.bytes->size() - e.pos);
+        std::memcpy(data, e.bytes->data() + e.pos, n);
+        e.pos += n;
+        return zip_int64_t(n);
+      }
+      case ZIP_SOURCE_ERROR:
+        return zip_error_to_data(&ls.error.e, data, len);
+      case ZIP_SOURCE_CLOSE:
+      case ZIP_SOURCE_FREE:
+        return 0;
+      default:
+        zip_error_set(&ls.error.e, ZIP_ER_OPNOTSUPP, 0);
+        return -1;
+    }
+  } catch (...) {
+    // Exceptions must not unwind through libzip's C frames; carried out after zip_close.
+    if (!ls.failure) ls.failure = std::current_exception();
+    zip_error_set(&ls.error.e, ZIP_ER_INTERNAL, 0);
+    return -1;
+  }
+}
+
+std::string job_name(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  if (name.size() > 4) name.resize(name.size() - 4);  // ".sl1"
+  return name;
+}
+
+void add_entry(zip_t* za, const std::string& name, zip_source_t* src, bool store,
+               const std::string& path) {
+  if (!src) throw Error("cannot write '" + path + "': " + zip_strerror(za));
+  const zip_int64_t i = zip_file_add(za, name.c_str(), src, ZIP_FL_ENC_UTF_8);
+  if (i < 0) {
+    zip_source_free(src);
+    throw Error("cannot write '" + path + "': entry '" + name + "': " + zip_strerror(za));
+  }
+  if (store && zip_set_file_compression(za, zip_uint64_t(i), ZIP_CM_STORE, 0) != 0)
+    throw Error("cannot write '" + path + "': " + zip_strerror(za));
+}
+
+}  // namespace
+
+void write_sl1(const std::string& path, const Sl1Job& job, const LayerPng& layer_png) {
+  const std::time_t now = std::time(nullptr);
+  const std::string name = job_name(path);
+  // Entry k < layers is layer k's PNG; entry `layers` is config.ini, made when libzip reaches
+  // it, after the last layer, when the material is known.
+  std::vector<uint8_t> config;
+  const LayerPng entry_bytes = [&](size_t k) -> const std::vector<uint8_t>& {
+    if (k < job.layers) return layer_png(k);
+    const std::string text = config_ini(job, name, now, job.used_material_ml ? job.used_material_ml() : 0.0);
+    config.assign(text.begin(), text.end());
+    return config;
+  };
+  // Declared before the archive: zip_discard (on any error) calls layer_cb to free each entry's
+  // source, so the entries must outlive the archive.
+  Layers layers{&entry_bytes, now, nullptr, {}};
+  std::vector<LayerEntry> entries(job.layers + 1);
+  // libzip writes the archive on zip_close to a temporary file next to the staged one and
+  // renames it onto it; the staged file then replaces path.
+  StagedOutputs outputs;
+  const std::string staged = outputs.file(path);
+  int error = 0;
+  zip_t* za = zip_open(staged.c_str(), ZIP_TRUNCATE, &error);
+  if (!za) {
+    ZipError e;
+    zip_error_init_with_code(&e.e, error);
+    throw Error("cannot write '" + path + "': " + zip_error_strerror(&e.e));
+  }
+  std::unique_ptr<zip_t, void (*)(zip_t*)> archive(za, zip_discard);
+
+  const std::string slicer = prusaslicer_ini(job);
+  add_entry(za, "prusaslicer.ini", zip_source_buffer(za, slicer.data(), slicer.size(), 0), false,
+            path);
+  for (size_t k = 0; k <= job.layers; ++k) {
+    entries[k].layers = &layers;
+    entries[k].k = k;
+    const bool is_config = k == job.layers;
+    add_entry(za, is_config ? std::string("config.ini") : mask_layer_file_name(name, k),
+              zip_source_function(za, layer_cb, &entries[k]), !is_config, path);
+  }
+  if (zip_close(za) != 0) {
+    if (layers.failure) std::rethrow_exception(layers.failure);
+    throw Error("cannot write '" + path + "': " + zip_strerror(za));
+  }
+  archive.release();
+  outputs.commit();
+}
+
+}  // namespace slicereuse

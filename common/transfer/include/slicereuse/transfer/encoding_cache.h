@@ -1,0 +1,44 @@
+#pragma once
+// EncodingCache: the last encoding file read, kept in memory with its edge ends
+// (encoded_edge_ends), so that a loop over a family's members, in pymeshlab or in a
+// meshlabserver script, reads and prepares the source's encoding once instead of per member.
+//
+// In: an encoding file's path and a member mesh of the family (its faces give the edge ends).
+// Out: the shared entry, read on a miss. One entry: the key is the path plus the file's size,
+// modification time and checksum (slice_file_identity), so a rewritten file is read again;
+// another key replaces the entry. Memory while it is kept: the encoding (13 bytes per point)
+// and the edge ends (8 bytes per point), about 1.5 GB for the 73 M points of a 545k-face part
+// at 1 um. clear() releases it. Thread safe.
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include "slicereuse/formats/slice_files.h"
+#include "slicereuse/mesh/mesh.h"
+#include "slicereuse/slicing/slices.h"
+#include "slicereuse/util/buffer.h"
+#include "slicereuse/util/progress.h"
+
+namespace slicereuse {
+
+struct CachedEncoding {
+  std::string path;
+  FileIdentity identity;
+  Slices encoding;
+  Buffer<uint32_t> edge_ends;  // encoded_edge_ends(encoding, any member)
+};
+
+class EncodingCache {
+ public:
+  // *hit tells whether the entry was already there. Throws Error for an unreadable file, or a
+  // member whose faces differ from the encoding's mesh.
+  std::shared_ptr<const CachedEncoding> get(const std::string& path, const Mesh& member, bool* hit = nullptr,
+                                            const Progress& progress = {});
+  void clear();
+
+ private:
+  std::mutex mutex_;
+  std::shared_ptr<const CachedEncoding> entry_;
+};
+
+}  // namespace slicereuse

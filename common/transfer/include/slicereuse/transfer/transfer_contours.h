@@ -1,0 +1,64 @@
+#pragma once
+// transfer_contours: computes a target mesh's contours from a source's encoding and the
+// target's vertices (the target must have the source's faces, checked by fingerprint).
+//
+// Exact mode: every encoded point lies on a mesh edge; the same edge of the target is cut by
+// the same plane layer_z[k] (every member sits on the same build plate). A layer is certified
+// when every one of its edges still straddles its plane the same way up and the target has
+// exactly as many straddling edges on that plane as the layer has points; otherwise that layer
+// alone is re-sliced directly on the target. Layers run up to the target's own top, as direct
+// slicing with the source's z_start and thickness would give: a taller target's extra layers are
+// sliced directly (and counted as re-sliced), a shorter target's surplus layers are dropped.
+// The result therefore equals direct slicing of the target layer by layer (up to the order of
+// contours and the start point of each loop), bit for bit.
+// Barycentric mode: the method's Eq. 2, p = sum lambda_i * v_i on the target face, on the
+// source's layers as they are; points may leave the plane when the target differs in z
+// (max_plane_deviation reports by how much).
+//
+// Output: Slices with xyz and, when `encoding` is true, the target's own encoding, so the target
+// can be a source later. Without it, transfer writes 24 instead of 37 bytes per point; it is
+// memory-bound, so that is what it costs.
+#include "slicereuse/mesh/mesh.h"
+#include "slicereuse/slicing/slices.h"
+#include "slicereuse/util/progress.h"
+
+namespace slicereuse {
+
+enum class TransferMode { Exact = 0, Barycentric = 1 };
+
+// Explicit, so a bare TransferMode argument does not silently mean "with the encoding".
+struct TransferOptions {
+  TransferMode mode;
+  bool encoding;  // also compute the target's encoding (face, edge, t per point)
+  explicit TransferOptions(TransferMode m = TransferMode::Exact, bool with_encoding = true)
+      : mode(m), encoding(with_encoding) {}
+};
+
+struct TransferStats {
+  size_t transferred_layers = 0;
+  size_t resliced_layers = 0;
+  double max_plane_deviation = 0;  // barycentric mode: max |z - layer_z|
+  // Barycentric transfer through a map (transfer_through_map.h): carried points left where the
+  // map carried them, because no section of the target was found near their images, and
+  // contours dropped because none of their points was (the target has no surface there).
+  size_t unplaced_points = 0;
+  size_t dropped_contours = 0;
+};
+
+// Throws Error when target's fingerprint differs from encoding.fingerprint.
+Slices transfer_contours(const Slices& encoding, const Mesh& target, const TransferOptions& options,
+                         TransferStats* stats = nullptr, const Progress& progress = {});
+
+// encoded_edge_ends: for every encoded point, the ids of its edge's two vertices (corner j,
+// then corner j+1 of its face), 2 per point, from the encoding and the faces of any member of
+// the family. Transfer is bound by looking each face up; a pipeline that transfers one encoding
+// to many members computes these once and passes them to every transfer below.
+// Throws Error when mesh's fingerprint differs from encoding.fingerprint.
+Buffer<uint32_t> encoded_edge_ends(const Slices& encoding, const Mesh& mesh);
+
+// The same transfer, reading edge_ends (from encoded_edge_ends) instead of the faces.
+Slices transfer_contours(const Slices& encoding, const Buffer<uint32_t>& edge_ends, const Mesh& target,
+                         const TransferOptions& options, TransferStats* stats = nullptr,
+                         const Progress& progress = {});
+
+}  // namespace slicereuse

@@ -1,0 +1,20 @@
+#include "slicereuse/util/format.h"
+
+#include <cstdarg>
+#include <cstdio>
+
+namespace slicereuse {
+
+std::string format(const char* fmt, ...) {
+  va_list args, copy;
+  va_start(args, fmt);
+  va_copy(copy, args);
+  const int n = std::vsnprintf(nullptr, 0, fmt, copy);
+  va_end(copy);
+  std::string s(n > 0 ? size_t(n) : 0, '\0');
+  if (n > 0) std::vsnprintf(s.data(), s.size() + 1, fmt, args);
+  va_end(args);
+  return s;
+}
+
+}  // namespace slicereuse
