@@ -7,6 +7,7 @@
 //   add_parameters<Api>(params, md, list)       ParamSpecs -> RichParameters (defaults, labels)
 //   read_parameters<Api>(params, md, list)      RichParameters -> ParamValues; Error names the
 //                                                parameter if it is missing or of another type
+//                                                (values are checked by filter_params.h)
 //   DocumentHost<Api>                           Host over a MeshDocument (meshes, new layers,
 //                                                vertex colours,
 //                                                log, progress clamped and throttled)
@@ -134,13 +135,8 @@ ParamValues read_parameters(const std::vector<ParamSpec>& params, const MeshDocu
       case ParamType::Float: values.numbers[p.name] = float_as_typed(float(v.getFloat())); break;
       case ParamType::Int: values.numbers[p.name] = v.getInt(); break;
       case ParamType::Bool: values.numbers[p.name] = v.getBool() ? 1 : 0; break;
-      case ParamType::Enum: {
-        const int index = Api::enum_index(v);
-        if (index < 0 || size_t(index) >= p.enum_values.size())
-          throw Error("parameter '" + p.name + "' must be " + param_kind(p) + ", got " + std::to_string(index));
-        values.numbers[p.name] = index;
-        break;
-      }
+      // Its range is checked where it is read (filter_params.h), with every other value's.
+      case ParamType::Enum: values.numbers[p.name] = Api::enum_index(v); break;
       case ParamType::String: values.texts[p.name] = v.getString().toStdString(); break;
       case ParamType::FileOpen:
       case ParamType::FileSave: values.texts[p.name] = Api::file_name(v).toStdString(); break;
@@ -329,7 +325,7 @@ std::optional<std::string> run_logged(int id, MeshDocument& md, const RichParame
   return failure_of(f->name, [&] {
     const ParamValues values = read_parameters<Api>(f->params, md, list);
     DocumentHost<Api> host(md, logger, cb);
-    result = run_filter(f->id, values, host);
+    result = f->run(values, host);
     host.log(result_line(f->python_name, result));
   });
 }

@@ -159,6 +159,12 @@ print_job)
   edit slice.mlx direct.mlx 's#out/slice\.#out/direct.#g'
   ok log_direct.txt -i "$m1" -s direct.mlx
   "$HOST_CHECK" same --prefix out/job.ctr out/direct.ctr
+  # Free Cached Memory after a print job in the same process gives back the encoding it cached.
+  { sed '$d' job.mlx; sed -n '/<filter name="Free Cached Memory">/,/<\/filter>/p' "$EXAMPLES/free_cached_memory.mlx"
+    echo '</FilterScript>'; } >job_free.mlx
+  ok log_free.txt -i "$m1" -s job_free.mlx
+  above "$(result log_free.txt encoding_bytes)" 0 || fail "no cached encoding freed: $(grep slicereuse-result log_free.txt)"
+  above "$(result log_free.txt freed_bytes)" 0 || fail "no memory freed: $(grep slicereuse-result log_free.txt)"
   # A member with other faces is refused, and nothing is written.
   "$GEN_FAMILY" --shape torus --faces 1000 --members 1 --height 6 --seed 1 --out other >/dev/null
   edit print_job.mlx other.mlx 's#out/print_job\.sl1#out/other.sl1#'

@@ -101,6 +101,7 @@ def test_barycentric_transfer_masks(mapped):
                         mode="barycentric", map_file=str(tmp / "st.map"), contour_file=str(tmp / "b.srb"))
     # Every layer carried through the map (none re-sliced), each point placed on its plane.
     assert b["transferred_layers"] == b["layers"] > 0 and b["resliced_layers"] == 0
+    assert b["through_map"] == 1 and b["unplaced_points"] == 0
     assert 0 <= b["max_plane_deviation"] < 0.05
     c = ms.apply_filter("compare_mask_stacks", stack_a=str(_masks(ms, tmp / "b.srb", tmp / "m_bary")),
                         stack_b=str(tmp / "m_direct"), report_file=str(tmp / "bary.csv"))

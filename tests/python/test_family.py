@@ -149,6 +149,26 @@ def test_print_job_reads_the_encoding_once(pymeshlab, make_family, tmp_path):
     assert job(members[1], tmp_path / "moved.srb")["encoding_cached"] == 0
 
 
+def test_free_cached_memory_gives_back_the_encoding(pymeshlab, make_family, tmp_path):
+    """free_cached_memory drops the encoding that make_print_job kept (its bytes reported), and
+    the next print job reads the file again."""
+    members = make_family("arch", 2)
+    encoding = tmp_path / "source.srb"
+    ms = pymeshlab.MeshSet()
+    ms.load_new_mesh(str(members[0]))
+    ms.apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS, contour_file="",
+                    encoding_file=str(encoding), file_format=1)
+    ms.load_new_mesh(str(members[1]))
+    job = ms.apply_filter("make_print_job", encoding_file=str(encoding), output_path=str(tmp_path / "m1.sl1"))
+    freed = ms.apply_filter("free_cached_memory")
+    # The cache holds the encoding (face, edge, t: 13 bytes per point) and its edge ends (8).
+    assert freed["encoding_bytes"] >= 21 * job["points"]
+    assert freed["freed_bytes"] >= freed["encoding_bytes"]
+    assert ms.apply_filter("free_cached_memory")["encoding_bytes"] == 0
+    again = ms.apply_filter("make_print_job", encoding_file=str(encoding), output_path=str(tmp_path / "m1b.sl1"))
+    assert again["encoding_cached"] == 0 and again["transferred_layers"] == job["transferred_layers"] == 80
+
+
 def test_print_job_within_a_memory_limit_slices_a_range_at_a_time(pymeshlab, make_family, tmp_path, monkeypatch):
     """A direct print job whose contours would take more than a quarter of the memory it may use
     (here capped by SLICEREUSE_MEMORY_LIMIT) is sliced and exported a range of layers at a time;

@@ -20,12 +20,13 @@ def sliced(pymeshlab, make_family, tmp_path):
 
 def test_slice_result(sliced):
     ms, _, _, r, tmp, _ = sliced
-    assert set(r) == {"layers", "contours", "points", "open_contours", "z_start", "slicing_seconds",
-                      "seconds", "duplicate_faces", "zero_area_faces", "repeated_vertex_faces",
-                      "boundary_edges", "non_manifold_edges"}
+    assert set(r) == {"layers", "contours", "points", "open_contours", "z_start", "mesh_z_min",
+                      "mesh_z_max", "slicing_seconds", "seconds", "duplicate_faces", "zero_area_faces",
+                      "repeated_vertex_faces", "boundary_edges", "non_manifold_edges"}
     assert [r[k] for k in ("duplicate_faces", "zero_area_faces", "repeated_vertex_faces",
                            "boundary_edges", "non_manifold_edges")] == [0, 0, 0, 0, 0]
-    assert r["z_start"] == 0.0 and 0 <= r["slicing_seconds"] <= r["seconds"]
+    assert r["z_start"] == r["mesh_z_min"] == 0.0 and r["mesh_z_max"] > 7.9
+    assert 0 <= r["slicing_seconds"] <= r["seconds"]
     assert all(isinstance(r[k], int) for k in ("layers", "contours", "points", "open_contours"))
     assert isinstance(r["seconds"], float)
     header, layers = read_text_contours(tmp / "s.ctr")
@@ -56,8 +57,10 @@ def test_transfer_result_equals_direct(sliced):
     t = ms.apply_filter("transfer_slicing_to_mesh", encoding_file=str(tmp / "s.enc"),
                         target_mesh=target, contour_file=str(tmp / "t.ctr"),
                         target_encoding_file=str(tmp / "t.enc"))
-    assert set(t) == {"points", "layers", "transferred_layers", "resliced_layers",
-                      "max_plane_deviation", "transfer_seconds", "seconds"}
+    assert set(t) == {"points", "layers", "transferred_layers", "resliced_layers", "through_map",
+                      "max_plane_deviation", "dropped_contours", "unplaced_points", "transfer_seconds",
+                      "seconds"}
+    assert (t["through_map"], t["dropped_contours"], t["unplaced_points"]) == (0, 0, 0)
     assert 0 <= t["transfer_seconds"] <= t["seconds"]
     # Member 1 differs from member 0 in x-y only: every layer is certified and transferred.
     assert (t["layers"], t["transferred_layers"], t["resliced_layers"]) == (80, 80, 0)
@@ -125,8 +128,10 @@ def test_masks_and_compare_results(sliced):
     profile = dict(width_px=256, height_px=192, pixel_size_x_um=300, pixel_size_y_um=300)
     m = ms.apply_filter("export_mask_images", contour_file=str(tmp / "s.ctr"),
                         output_path=str(tmp / "masks"), **profile)
-    assert set(m) == {"layers", "ignored_open_contours", "outside_display", "seconds"}
+    assert set(m) == {"layers", "ignored_open_contours", "outside_display", "part_min_x_mm",
+                      "part_max_x_mm", "part_min_y_mm", "part_max_y_mm", "seconds"}
     assert m["outside_display"] == 0
+    assert m["part_min_x_mm"] < m["part_max_x_mm"] and m["part_min_y_mm"] < m["part_max_y_mm"]
     assert m["layers"] == r["layers"] and m["ignored_open_contours"] == 0
     assert len(list((tmp / "masks").glob("*.png"))) == r["layers"]
     # An independently produced stack of the same member: sliced again to a binary file and

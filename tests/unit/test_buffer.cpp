@@ -24,3 +24,17 @@ TEST(ReuseBuffers, KeepsFreedLargeBuffersForTheNextMember) {
     EXPECT_NE(c.data(), first);
   }
 }
+
+TEST(ReuseBuffers, KeptBuffersAreReleasedOnDemandAndKeepingGoesOn) {
+  const size_t n = size_t(4) << 20;  // 32 MB: large enough to be kept
+  const ReuseBuffers keep;
+  release_kept_buffers();
+  { Buffer<double> a(n); }
+  const size_t kept = kept_buffer_bytes();
+  EXPECT_GE(kept, n * sizeof(double));
+  EXPECT_EQ(release_kept_buffers(), kept);
+  EXPECT_EQ(kept_buffer_bytes(), 0u);
+  { Buffer<double> b(n); }
+  EXPECT_EQ(kept_buffer_bytes(), kept);  // still keeping while `keep` lives
+  release_kept_buffers();
+}

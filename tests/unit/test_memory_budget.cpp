@@ -3,12 +3,14 @@
 #include <gtest/gtest.h>
 #include <stdlib.h>
 
+#include <memory>
 #include <string>
 
 #include "error_of.h"
 #include "shapes.h"
 #include "slicereuse/slicing/slice_layers.h"
 #include "slicereuse/transfer/transfer_contours.h"
+#include "slicereuse/util/buffer.h"
 #include "slicereuse/util/memory_budget.h"
 
 using namespace slicereuse;
@@ -64,4 +66,30 @@ TEST_F(MemoryLimit, TransferRefusesAnOutputAboveItWithTheFigures) {
       << e;
   ::unsetenv("SLICEREUSE_MEMORY_LIMIT");
   EXPECT_EQ(transfer_contours(encoding, box, TransferOptions()).points(), encoding.points());
+}
+
+// A job short of memory first gives back what caches keep (reclaim_memory), then refuses if it
+// still does not fit; each freed byte is counted once, also when it passed through the kept
+// buffers.
+TEST_F(MemoryLimit, ReclaimersAreCalledBeforeARefusalAndCountedOnce) {
+  auto calls = std::make_shared<int>(0);
+  auto cached = std::make_shared<Buffer<double>>();
+  add_memory_reclaimer([calls, cached] {
+    ++*calls;
+    const uint64_t bytes = cached->size() * sizeof(double);
+    Buffer<double>().swap(*cached);
+    return bytes;
+  });
+  const ReuseBuffers keep;
+  release_kept_buffers();
+  cached->resize(size_t(4) << 20);  // 32 MB that the cache frees into the kept buffers
+  const uint64_t freed = reclaim_memory();
+  EXPECT_EQ(*calls, 1);
+  EXPECT_GE(freed, uint64_t(32) << 20);
+  EXPECT_LT(freed, uint64_t(64) << 20);  // not once from the cache and again from the kept buffers
+  set("1M");
+  EXPECT_ERROR(check_memory_for(uint64_t(2) << 20, "a job of 2 MB", "try less"), "a job of 2 MB needs");
+  EXPECT_EQ(*calls, 2);
+  check_memory_for(uint64_t(1) << 19, "a job of 0.5 MB", "try less");
+  EXPECT_EQ(*calls, 2);  // it fit: nothing reclaimed
 }

@@ -23,9 +23,31 @@ std::shared_ptr<const CachedEncoding> EncodingCache::get(const std::string& path
   return entry_;
 }
 
-void EncodingCache::clear() {
+namespace {
+
+template <class Array>
+size_t bytes_of(const Array& a) {
+  return a.size() * sizeof(a[0]);
+}
+
+size_t bytes_of_entry(const CachedEncoding& e) {
+  const Slices& s = e.encoding;
+  return bytes_of(s.layer_z) + bytes_of(s.layer_begin) + bytes_of(s.contour_begin) + bytes_of(s.contour_open) +
+         bytes_of(s.xyz) + bytes_of(s.face) + bytes_of(s.edge) + bytes_of(s.t) + bytes_of(e.edge_ends);
+}
+
+}  // namespace
+
+size_t EncodingCache::bytes() const {
   std::lock_guard<std::mutex> lock(mutex_);
+  return entry_ ? bytes_of_entry(*entry_) : 0;
+}
+
+size_t EncodingCache::clear() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  const size_t freed = entry_ ? bytes_of_entry(*entry_) : 0;
   entry_.reset();
+  return freed;
 }
 
 }  // namespace slicereuse

@@ -109,15 +109,30 @@ ReuseBuffers::ReuseBuffers() {
 }
 
 ReuseBuffers::~ReuseBuffers() {
-  std::vector<std::pair<void*, size_t>> release;
+  bool last;
   {
     std::lock_guard<std::mutex> lock(pool().mutex);
-    if (--pool().users == 0) {
-      release.swap(pool().kept);
-      pool().kept_bytes = 0;
-    }
+    last = --pool().users == 0;
+  }
+  if (last) release_kept_buffers();
+}
+
+size_t release_kept_buffers() {
+  std::vector<std::pair<void*, size_t>> release;
+  size_t bytes;
+  {
+    std::lock_guard<std::mutex> lock(pool().mutex);
+    release.swap(pool().kept);
+    bytes = pool().kept_bytes;
+    pool().kept_bytes = 0;
   }
   for (auto& b : release) std::free(b.first);
+  return bytes;
+}
+
+size_t kept_buffer_bytes() {
+  std::lock_guard<std::mutex> lock(pool().mutex);
+  return pool().kept_bytes;
 }
 
 }  // namespace slicereuse

@@ -4,9 +4,13 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <string>
 #include <cstring>
+#include <functional>
+#include <mutex>
+#include <string>
+#include <vector>
 
+#include "slicereuse/util/buffer.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
 
@@ -96,6 +100,16 @@ uint64_t user_limit() {
   return uint64_t(n * scale);
 }
 
+std::mutex& reclaimers_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+std::vector<std::function<uint64_t()>>& reclaimers() {
+  static std::vector<std::function<uint64_t()>> r;
+  return r;
+}
+
 }  // namespace
 
 uint64_t available_memory() {
@@ -110,8 +124,27 @@ uint64_t available_memory() {
   return std::min({uint64_t(kib) * 1024, cgroup_headroom(), user_limit()});
 }
 
+void add_memory_reclaimer(std::function<uint64_t()> reclaim) {
+  std::lock_guard<std::mutex> lock(reclaimers_mutex());
+  reclaimers().push_back(std::move(reclaim));
+}
+
+uint64_t reclaim_memory() {
+  // What the reclaimers free may join the kept buffers: counted once, when those are released.
+  const uint64_t kept_before = kept_buffer_bytes();
+  uint64_t freed = 0;
+  {
+    std::lock_guard<std::mutex> lock(reclaimers_mutex());
+    for (const auto& reclaim : reclaimers()) freed += reclaim();
+  }
+  const uint64_t kept_now = kept_buffer_bytes();
+  const uint64_t joined = kept_now > kept_before ? kept_now - kept_before : 0;
+  return (freed > joined ? freed - joined : 0) + release_kept_buffers();
+}
+
 void check_memory_for(uint64_t bytes, const std::string& what, const std::string& advice) {
-  const uint64_t available = available_memory();
+  uint64_t available = available_memory();
+  if (available != 0 && bytes > available && reclaim_memory() > 0) available = available_memory();
   if (available != 0 && bytes > available)
     throw Error(format("%s needs %.1f GB of memory, but only %.1f GB are available; %s", what.c_str(),
                        double(bytes) * 1e-9, double(available) * 1e-9, advice.c_str()));

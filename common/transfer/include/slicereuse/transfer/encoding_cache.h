@@ -34,10 +34,13 @@ class EncodingCache {
   // member whose faces differ from the encoding's mesh.
   std::shared_ptr<const CachedEncoding> get(const std::string& path, const Mesh& member, bool* hit = nullptr,
                                             const Progress& progress = {});
-  void clear();
+  // The bytes the entry holds (its arrays), 0 when empty.
+  size_t bytes() const;
+  // Drops the entry; returns its bytes.
+  size_t clear();
 
  private:
-  std::mutex mutex_;
+  mutable std::mutex mutex_;
   std::shared_ptr<const CachedEncoding> entry_;
 };
 

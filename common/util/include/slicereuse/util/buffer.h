@@ -26,6 +26,12 @@ class ReuseBuffers {
   ReuseBuffers& operator=(const ReuseBuffers&) = delete;
 };
 
+// Frees every buffer kept for reuse now (ReuseBuffers goes on keeping those freed later);
+// returns their bytes. reclaim_memory() (memory_budget.h) calls it when a job needs memory.
+size_t release_kept_buffers();
+// The bytes of the buffers kept for reuse now.
+size_t kept_buffer_bytes();
+
 template <class T>
 struct DefaultInitAllocator : std::allocator<T> {
   template <class U> struct rebind { using other = DefaultInitAllocator<U>; };

@@ -1,12 +1,14 @@
 #pragma once
 // The host-independent face of the slicereuse filters: what each filter is called, which
-// parameters it takes, which meshes it needs, and what it does. Written once; host_adapter.h
+// parameters it takes, which meshes it needs, and what it does. Written once (each filter's
+// file declares its spec, its typed parameters (filter_params.h) and its run); host_adapter.h
 // turns FilterSpec into MeshLab declarations and RichParameters, implements Host over a
 // MeshDocument and turns Error into the host's error path, for both MeshLab API generations
 // (their differences are in host_meshlab_2020.h / host_meshlab_2025.h).
 // No Qt and no MeshLab headers here.
 #include <charconv>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <variant>
@@ -33,7 +35,7 @@ struct ParamSpec {
 };
 
 enum class FilterId { SliceWithEncoding, TransferSlicing, ExportMasks, CompareMasks, MakePrintJob,
-                      CrossParameterize };
+                      CrossParameterize, FreeCachedMemory };
 
 // Which meshes a filter works on (MeshLab's arity): none (files only), the current mesh, or the
 // meshes its Mesh parameters name.
@@ -41,23 +43,6 @@ enum class Arity { None, CurrentMesh, MeshParameters };
 
 // The menus a filter appears in (bits; MeshLab's FilterClass has one value per menu).
 enum FilterClass : unsigned { kLayerClass = 1, kMeasureClass = 2, kRemeshingClass = 4 };
-
-struct FilterSpec {
-  FilterId id;
-  std::string name;         // menu name, e.g. "Slice Mesh with Encoding"
-  std::string python_name;  // e.g. "slice_mesh_with_encoding"
-  std::string description;  // HTML, shown in the dialog and in pymeshlab's doc
-  Arity arity;
-  unsigned filter_class;    // FilterClass bits
-  bool needs_faces;         // precondition: the current mesh must have faces
-  std::vector<ParamSpec> params;
-  // Post-condition: the filter colours the vertices of the meshes its Mesh parameters name
-  // (Host::set_vertex_colors), so the host must redraw them with their colours.
-  bool colors_vertices = false;
-};
-
-const std::vector<FilterSpec>& filter_specs();
-const FilterSpec* find_filter_spec(int id);  // nullptr if no filter has this id
 
 // Parameter values as the host adapter read them: numbers (Float/Int/Enum/Bool, and Mesh as
 // the host's mesh reference: list index in 2020, mesh id in 2025) and texts.
@@ -67,12 +52,12 @@ struct ParamValues {
   std::map<std::string, std::string> texts;
   double number(const std::string& name) const {  // throws Error if missing
     auto it = numbers.find(name);
-    if (it == numbers.end()) throw Error("missing numeric parameter '" + name + "'");
+    if (it == numbers.end()) throw Error("parameter '" + name + "' is missing");
     return it->second;
   }
   const std::string& text(const std::string& name) const {
     auto it = texts.find(name);
-    if (it == texts.end()) throw Error("missing text parameter '" + name + "'");
+    if (it == texts.end()) throw Error("parameter '" + name + "' is missing");
     return it->second;
   }
 };
@@ -114,7 +99,24 @@ class Host {
 // Statistics a filter returns: pymeshlab gets them as its result dict, the log as one line.
 using Result = std::map<std::string, std::variant<double, int64_t, std::string>>;
 
-// Runs a filter; throws Error (with a message that names the problem) on bad input.
-Result run_filter(FilterId id, const ParamValues& values, Host& host);
+struct FilterSpec {
+  FilterId id;
+  std::string name;         // menu name, e.g. "Slice Mesh with Encoding"
+  std::string python_name;  // e.g. "slice_mesh_with_encoding"
+  std::string description;  // HTML, shown in the dialog and in pymeshlab's doc
+  Arity arity;
+  unsigned filter_class;    // FilterClass bits
+  bool needs_faces;         // precondition: the current mesh must have faces
+  std::vector<ParamSpec> params;
+  // Post-condition: the filter colours the vertices of the meshes its Mesh parameters name
+  // (Host::set_vertex_colors), so the host must redraw them with their colours.
+  bool colors_vertices = false;
+  // Runs the filter: reads and checks the values (filter_params.h), does the work through the
+  // host, returns the figures. Throws Error with a message that names the problem.
+  std::function<Result(const ParamValues&, Host&)> run;
+};
+
+const std::vector<FilterSpec>& filter_specs();
+const FilterSpec* find_filter_spec(int id);  // nullptr if no filter has this id
 
 }  // namespace slicereuse::plugin

@@ -1,0 +1,60 @@
+#pragma once
+// What the filter implementations (filters_*.cpp) share; internal to the plugin. Each filter's
+// file declares its parameters (filter_params.h), its spec and its run, and returns them as one
+// FilterSpec; filter_specs() lists them.
+#include <chrono>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "filter_api.h"
+#include "filter_params.h"
+#include "slicereuse/formats/slice_files.h"
+#include "slicereuse/masks/export_masks.h"
+#include "slicereuse/masks/printer_profile.h"
+#include "slicereuse/slicing/slice_layers.h"
+#include "slicereuse/transfer/encoding_cache.h"
+#include "slicereuse/util/format.h"
+
+namespace slicereuse::plugin {
+
+FilterSpec slice_filter();
+FilterSpec transfer_filter();
+FilterSpec export_masks_filter();
+FilterSpec compare_masks_filter();
+FilterSpec print_job_filter();
+FilterSpec cross_parameterize_filter();
+FilterSpec free_cached_memory_filter();
+
+// The method's reference, closing every description.
+extern const char* const kReference;
+
+// The printer's display (filters_display.cpp): its parameters, bound to PrinterProfile (whose
+// defaults they are), the warning for a part that does not fit it, and its figures in a result
+// (open contours ignored, outside_display, the part's extent in mm).
+ParamList<PrinterProfile> printer_params();
+void log_display_warning(Host& host, const char* filter, const MaskExportStats& stats,
+                         const PrinterProfile& profile);
+void add_display_figures(const MaskExportStats& stats, Result& result);
+// What an empty output_path of the mask filters is told.
+inline const char* const kMaskOutputWhenEmpty = "choose a folder or a .sl1 file";
+
+// z_start's default, and the values that mean the mesh's lowest vertex: at or below
+// kZStartLowestVertexBelow (a spec default can be neither NaN nor depend on the mesh).
+constexpr double kZStartLowestVertex = -1e30;
+constexpr double kZStartLowestVertexBelow = -1e29;
+SliceOptions slice_options(double layer_thickness, double z_start);
+
+// The plugin's one cached encoding (Make Print Job; Free Cached Memory frees it).
+EncodingCache& encoding_cache();
+
+// Binary when the name ends in .srb, text otherwise.
+FileFormat format_for_name(const std::string& path);
+
+// Checks that every non-empty output path can be written and that no two are the same file,
+// naming the parameter in the error; called before any work is done.
+void check_outputs(const std::vector<std::pair<const char*, std::string>>& named_paths);
+
+double seconds_since(std::chrono::steady_clock::time_point start);
+
+}  // namespace slicereuse::plugin

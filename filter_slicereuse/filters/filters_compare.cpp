@@ -1,0 +1,68 @@
+// "Compare Mask Stacks": the method's similarity S of two mask stacks, layer by layer; no mesh
+// involved.
+#include "filter_params.h"
+#include "filters_common.h"
+#include "slicereuse/masks/compare_mask_stacks.h"
+
+namespace slicereuse::plugin {
+namespace {
+
+struct CompareParams {
+  std::string stack_a;
+  std::string stack_b;
+  std::string report_file;
+};
+
+ParamList<CompareParams> compare_params() {
+  ParamList<CompareParams> l;
+  l.file(&CompareParams::stack_a, ParamType::FileOpen, "stack_a", "Stack A", "*.sl1",
+         "choose the first mask stack (a folder of PNG images or a .sl1 archive)",
+         "First mask stack: a folder of PNG images or a .sl1 archive.")
+      .file(&CompareParams::stack_b, ParamType::FileOpen, "stack_b", "Stack B", "*.sl1",
+            "choose the second mask stack (a folder of PNG images or a .sl1 archive)",
+            "Second mask stack: a folder of PNG images or a .sl1 archive.")
+      .file(&CompareParams::report_file, ParamType::FileSave, "report_file", "Report file (CSV)", "*.csv", nullptr,
+            "Where to write one CSV row per layer (layer, similarity, differing pixels). Empty: no report is "
+            "written.");
+  return l;
+}
+
+Result run_compare_masks(const CompareParams& p, Host& host) {
+  const auto start = std::chrono::steady_clock::now();
+  check_outputs({{"report_file", p.report_file}});
+
+  const StackComparison c = compare_mask_stacks(p.stack_a, p.stack_b, p.report_file, host.progress());
+
+  const double seconds = seconds_since(start);
+  host.log(format("Compare Mask Stacks: %zu layers, min similarity %.9g at layer %zu, %llu differing pixels, %.3f s",
+                  c.layers.size(), c.min_similarity, c.worst_layer,
+                  (unsigned long long)c.differing_pixels, seconds));
+  return {{"layers", int64_t(c.layers.size())},
+          {"min_similarity", c.min_similarity},
+          {"worst_layer", int64_t(c.worst_layer)},
+          {"differing_pixels", int64_t(c.differing_pixels)},
+          {"seconds", seconds}};
+}
+
+}  // namespace
+
+FilterSpec compare_masks_filter() {
+  FilterSpec f;
+  f.id = FilterId::CompareMasks;
+  f.name = "Compare Mask Stacks";
+  f.python_name = "compare_mask_stacks";
+  f.description = std::string(
+      "<p>Compares two stacks of mask images (folders of PNG images or .sl1 "
+      "archives, e.g. from a transferred and a directly sliced member) layer by "
+      "layer. The similarity of a layer is S = (pixels equal in both images) / "
+      "(all pixels), so S = 1 means identical masks. Logs the lowest S, the layer "
+      "where it occurs and the total number of differing pixels; optionally writes "
+      "one CSV row per layer. The stacks must have the same number of layers and "
+      "image size. The current mesh is not used.</p>") + kReference;
+  f.arity = Arity::None;
+  f.filter_class = kLayerClass | kMeasureClass;
+  f.needs_faces = false;
+  return typed_filter(f, compare_params(), run_compare_masks);
+}
+
+}  // namespace slicereuse::plugin

@@ -1,0 +1,82 @@
+// "Export Mask Images": a contour file (or the current contour layer) to a folder of PNG masks
+// or an .sl1 archive; no mesh involved.
+#include "filter_params.h"
+#include "filters_common.h"
+#include "slicereuse/formats/slice_files.h"
+#include "slicereuse/masks/export_masks.h"
+#include "slicereuse/util/error.h"
+
+namespace slicereuse::plugin {
+namespace {
+
+struct ExportParams {
+  std::string contour_file;
+  std::string output_path;
+  PrinterProfile printer;
+};
+
+ParamList<ExportParams> export_params() {
+  ParamList<ExportParams> l;
+  l.file(&ExportParams::contour_file, ParamType::FileOpen, "contour_file", "Contour file", "*.ctr *.srb", nullptr,
+         "Contour file written by Slice Mesh with Encoding or Transfer Slicing to Mesh. Empty: the current layer, a "
+         "contour file opened with File > Import Mesh (.ctr, .srb, .cli).")
+      .file(&ExportParams::output_path, ParamType::FileSave, "output_path", "Output folder or .sl1", "*.sl1",
+            kMaskOutputWhenEmpty,
+            "A folder for PNG images (created if missing; its parent must exist), or a file name ending in .sl1 for "
+            "a Prusa SL1 archive.")
+      .include(&ExportParams::printer, printer_params());
+  return l;
+}
+
+Result run_export_masks(const ExportParams& p, Host& host) {
+  const auto start = std::chrono::steady_clock::now();
+  check_outputs({{"output_path", p.output_path}});
+
+  const Progress progress = host.progress();
+  // No file: the current layer, opened from a contour file through io_encoding.
+  Slices s;
+  if (!p.contour_file.empty()) {
+    s = read_contour_file(p.contour_file, sub_progress(progress, 0, 0.1));
+  } else {
+    try {
+      s = host.current_contour_layer();
+    } catch (const Error& e) {
+      throw Error(std::string("contour_file is empty and ") + e.what());
+    }
+  }
+  const MaskExportStats stats = export_masks(s, p.printer, p.output_path, sub_progress(progress, 0.1, 1));
+
+  const double seconds = seconds_since(start);
+  host.log(format("Export Mask Images: %zu layers of %dx%d pixels to %s, %zu open contours ignored, %.3f s",
+                  stats.layers, p.printer.width_px, p.printer.height_px, p.output_path.c_str(),
+                  stats.ignored_open_contours, seconds));
+  log_display_warning(host, "Export Mask Images", stats, p.printer);
+  Result result = {{"layers", int64_t(stats.layers)}, {"seconds", seconds}};
+  add_display_figures(stats, result);
+  return result;
+}
+
+}  // namespace
+
+FilterSpec export_masks_filter() {
+  FilterSpec f;
+  f.id = FilterId::ExportMasks;
+  f.name = "Export Mask Images";
+  f.python_name = "export_mask_images";
+  f.description = std::string(
+      "<p>Rasterizes the layers of a contour file into one mask image per layer "
+      "for mask-projection (DLP/LCD) printers: a folder of PNG images "
+      "(NNNNN.png), or a Prusa SL1 archive when the output path ends in .sl1.</p>"
+      "<p>A pixel is lit when its centre lies inside the layer by the nonzero "
+      "winding rule of the closed contours; open contours are ignored and counted. "
+      "The model's XY origin sits at the image centre, shifted by the offsets; row "
+      "0 is the top of the image (largest y). Pixel sizes are in micrometres, "
+      "offsets in mm. With an empty contour file the contours come from the current "
+      "layer, a contour file opened in MeshLab (.ctr, .srb or .cli).</p>") + kReference;
+  f.arity = Arity::None;
+  f.filter_class = kLayerClass;
+  f.needs_faces = false;
+  return typed_filter(f, export_params(), run_export_masks);
+}
+
+}  // namespace slicereuse::plugin

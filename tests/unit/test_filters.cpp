@@ -1,0 +1,272 @@
+// Every filter run through a fake host, without MeshLab: the specs and the examples that list
+// them, the typed parameters (a mistyped or missing name, a value out of range, each refused in
+// words), and the result dicts with every figure the filters log.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "error_of.h"
+#include "filter_api.h"
+#include "shapes.h"
+#include "shuffle_mesh.h"
+#include "slicereuse/formats/slice_files.h"
+#include "slicereuse/slicing/slice_layers.h"
+#include "slicereuse/transfer/transfer_contours.h"
+#include "temp_folder.h"
+
+namespace slicereuse::plugin {
+namespace {
+
+using test::error_of;
+using test::make_sphere;
+using test::shuffle_mesh;
+
+// A document of meshes as MeshLab would hold them: mesh_at(i) is the i-th, the current one is
+// `current`; what the filters add or colour is recorded.
+class FakeHost : public Host {
+ public:
+  std::vector<Mesh> meshes;
+  int current = 0;
+  std::vector<std::string> lines;
+  std::vector<std::string> added_layers;
+  std::map<int, std::vector<uint8_t>> colors;
+
+  Mesh current_mesh() override {
+    if (meshes.empty()) throw Error("there is no current mesh: open a mesh first");
+    return meshes.at(size_t(current));
+  }
+  Mesh mesh_at(int ref) override {
+    if (ref < 0 || size_t(ref) >= meshes.size()) throw Error("there is no mesh with index " + std::to_string(ref));
+    return meshes[size_t(ref)];
+  }
+  Slices current_contour_layer() override { throw Error("the layer is not a contour layer"); }
+  void add_polyline_layer(const std::string& name, const std::vector<double>&, const std::vector<uint32_t>&) override {
+    added_layers.push_back(name);
+  }
+  void set_vertex_colors(int ref, const std::vector<uint8_t>& rgba) override { colors[ref] = rgba; }
+  void log(const std::string& line) override { lines.push_back(line); }
+  Progress progress() override { return {}; }
+};
+
+const FilterSpec& spec_named(const std::string& python_name) {
+  for (const FilterSpec& f : filter_specs())
+    if (f.python_name == python_name) return f;
+  throw Error("no filter " + python_name);
+}
+
+// The values a host reads from a dialog left at its defaults, with `changes` applied.
+ParamValues defaults(const FilterSpec& f, const std::map<std::string, std::string>& texts = {},
+                     const std::map<std::string, double>& numbers = {}) {
+  ParamValues v;
+  for (const ParamSpec& p : f.params) {
+    const bool text = p.type == ParamType::String || p.type == ParamType::FileOpen || p.type == ParamType::FileSave;
+    if (text) v.texts[p.name] = p.default_text;
+    else v.numbers[p.name] = p.default_number;
+  }
+  for (const auto& [name, value] : texts) v.texts.at(name) = value;
+  for (const auto& [name, value] : numbers) v.numbers.at(name) = value;
+  return v;
+}
+
+std::set<std::string> keys_of(const Result& r) {
+  std::set<std::string> keys;
+  for (const auto& entry : r) keys.insert(entry.first);
+  return keys;
+}
+
+int64_t count(const Result& r, const std::string& key) { return std::get<int64_t>(r.at(key)); }
+
+TEST(Filters, NamesAreUniqueAndEveryParameterIsDeclaredOnce) {
+  std::set<int> ids;
+  std::set<std::string> names, python_names;
+  for (const FilterSpec& f : filter_specs()) {
+    EXPECT_TRUE(ids.insert(int(f.id)).second) << f.name;
+    EXPECT_TRUE(names.insert(f.name).second) << f.name;
+    EXPECT_TRUE(python_names.insert(f.python_name).second) << f.python_name;
+    EXPECT_TRUE(f.run) << f.name;
+    EXPECT_EQ(find_filter_spec(int(f.id)), &f);
+    std::set<std::string> params;
+    for (const ParamSpec& p : f.params) EXPECT_TRUE(params.insert(p.name).second) << f.name << ": " << p.name;
+  }
+  EXPECT_EQ(filter_specs().size(), 7u);
+  EXPECT_EQ(find_filter_spec(-1), nullptr);
+}
+
+// A name the spec does not declare (a typo in a script or a test), and one it declares that the
+// values lack, are refused by every filter with the parameter's name, before anything is done.
+TEST(Filters, AMistypedOrMissingParameterNameIsRefusedByEveryFilter) {
+  for (const FilterSpec& f : filter_specs()) {
+    FakeHost host;
+    ParamValues typo = defaults(f);
+    typo.numbers["layer_thicknes"] = 0.1;
+    EXPECT_NE(error_of([&] { f.run(typo, host); }).find("there is no parameter 'layer_thicknes'"), std::string::npos)
+        << f.name;
+    for (const ParamSpec& p : f.params) {
+      ParamValues missing = defaults(f);
+      missing.numbers.erase(p.name);
+      missing.texts.erase(p.name);
+      EXPECT_EQ(error_of([&] { f.run(missing, host); }), "parameter '" + p.name + "' is missing") << f.name;
+    }
+    EXPECT_TRUE(host.lines.empty()) << f.name;
+  }
+}
+
+TEST(Filters, ValuesOutOfRangeAreRefusedOnceWithTheirRange) {
+  FakeHost host;
+  host.meshes.push_back(make_sphere(1, 12, 16));
+  const FilterSpec& slice = spec_named("slice_mesh_with_encoding");
+  EXPECT_EQ(error_of([&] { slice.run(defaults(slice, {}, {{"layer_thickness", 0}}), host); }),
+            "layer_thickness must be greater than 0 mm (got 0)");
+  EXPECT_EQ(error_of([&] { slice.run(defaults(slice, {}, {{"z_start", HUGE_VAL}}), host); }),
+            "z_start must be a finite number (got inf)");
+  EXPECT_EQ(error_of([&] { slice.run(defaults(slice, {}, {{"file_format", 2}}), host); }),
+            "file_format must be one of 0 (text), 1 (binary), got 2");
+  EXPECT_EQ(error_of([&] { slice.run(defaults(slice, {}, {{"preview_layers", -1}}), host); }),
+            "preview_layers must be at least 0 layers (got -1)");
+  const FilterSpec& masks = spec_named("export_mask_images");
+  EXPECT_EQ(error_of([&] { masks.run(defaults(masks, {{"output_path", "/tmp/x"}}, {{"width_px", 65536}}), host); }),
+            "width_px must be between 1 and 65535 pixels (got 65536)");
+  EXPECT_EQ(error_of([&] { masks.run(defaults(masks), host); }), "output_path is empty: choose a folder or a .sl1 file");
+  EXPECT_TRUE(host.lines.empty());
+}
+
+class FiltersThroughAFakeHost : public test::TempFolderTest {};
+
+// The family's pipeline, every filter at its spec defaults but for the files: slice a sphere,
+// transfer to a moved member, masks, a print job by reuse, compare (S = 1), cross-parameterize
+// onto a renumbered copy, free the cached encoding. Each result holds exactly its figures.
+TEST_F(FiltersThroughAFakeHost, EveryFilterRunsAndReturnsEveryFigureItLogs) {
+  FakeHost host;
+  host.meshes.push_back(make_sphere(1, 24, 32));
+  Mesh moved = host.meshes[0];
+  for (size_t i = 0; i < moved.V.size(); i += 3) moved.V[i] = 1.1 * moved.V[i] + 0.05 * moved.V[i + 2];
+  host.meshes.push_back(moved);
+  host.meshes.push_back(shuffle_mesh(host.meshes[0], 7).mesh);
+
+  const Result slice = spec_named("slice_mesh_with_encoding")
+                           .run(defaults(spec_named("slice_mesh_with_encoding"),
+                                         {{"contour_file", path("s.ctr")}, {"encoding_file", path("s.srb")}},
+                                         {{"preview_layers", 3}}),
+                                host);
+  SliceOptions options;
+  options.thickness = 0.1;
+  const Slices direct = slice_layers(host.meshes[0], options);
+  EXPECT_EQ(keys_of(slice), (std::set<std::string>{"layers", "contours", "points", "open_contours", "duplicate_faces",
+                                                   "zero_area_faces", "repeated_vertex_faces", "boundary_edges",
+                                                   "non_manifold_edges", "z_start", "mesh_z_min", "mesh_z_max",
+                                                   "slicing_seconds", "seconds"}));
+  EXPECT_EQ(count(slice, "layers"), int64_t(direct.layers()));
+  EXPECT_EQ(count(slice, "points"), int64_t(direct.points()));
+  EXPECT_EQ(count(slice, "open_contours"), 0);
+  EXPECT_EQ(std::get<double>(slice.at("mesh_z_min")), -1);
+  EXPECT_EQ(host.added_layers, std::vector<std::string>{"slice preview"});
+
+  const FilterSpec& transfer_spec = spec_named("transfer_slicing_to_mesh");
+  const Result transfer =
+      transfer_spec.run(defaults(transfer_spec, {{"encoding_file", path("s.srb")}, {"contour_file", path("t.ctr")}},
+                                 {{"target_mesh", 1}}),
+                        host);
+  EXPECT_EQ(keys_of(transfer), (std::set<std::string>{"points", "layers", "transferred_layers", "resliced_layers",
+                                                      "through_map", "max_plane_deviation", "dropped_contours",
+                                                      "unplaced_points", "transfer_seconds", "seconds"}));
+  EXPECT_EQ(count(transfer, "transferred_layers"), int64_t(direct.layers()));
+  EXPECT_EQ(count(transfer, "resliced_layers"), 0);
+  EXPECT_EQ(count(transfer, "dropped_contours"), 0);
+  EXPECT_EQ(count(transfer, "through_map"), 0);
+
+  const std::set<std::string> display = {"ignored_open_contours", "outside_display", "part_min_x_mm", "part_max_x_mm",
+                                         "part_min_y_mm", "part_max_y_mm"};
+  const FilterSpec& masks_spec = spec_named("export_mask_images");
+  const Result masks =
+      masks_spec.run(defaults(masks_spec, {{"contour_file", path("t.ctr")}, {"output_path", path("t_masks")}}), host);
+  std::set<std::string> masks_keys = display;
+  masks_keys.insert({"layers", "seconds"});
+  EXPECT_EQ(keys_of(masks), masks_keys);
+  EXPECT_EQ(count(masks, "outside_display"), 0);
+  EXPECT_NEAR(std::get<double>(masks.at("part_max_x_mm")), 1.1 + 0.05 * 0.5, 0.06);
+
+  const FilterSpec& job_spec = spec_named("make_print_job");
+  host.current = 1;
+  const ParamValues job_values =
+      defaults(job_spec, {{"encoding_file", path("s.srb")}, {"output_path", path("t.sl1")}});
+  const Result job = job_spec.run(job_values, host);
+  std::set<std::string> job_keys = display;
+  job_keys.insert({"layers", "points", "transferred_layers", "resliced_layers", "encoding_cached", "layer_ranges",
+                   "slicing_seconds", "masks_seconds", "seconds"});
+  EXPECT_EQ(keys_of(job), job_keys);
+  EXPECT_EQ(count(job, "transferred_layers"), int64_t(direct.layers()));
+  EXPECT_EQ(count(job_spec.run(job_values, host), "encoding_cached"), 1);
+
+  const FilterSpec& compare_spec = spec_named("compare_mask_stacks");
+  const Result compare = compare_spec.run(
+      defaults(compare_spec, {{"stack_a", path("t_masks")}, {"stack_b", path("t.sl1")}, {"report_file", path("c.csv")}}),
+      host);
+  EXPECT_EQ(std::get<double>(compare.at("min_similarity")), 1.0);
+  EXPECT_EQ(count(compare, "differing_pixels"), 0);
+  EXPECT_EQ(count(compare, "layers"), int64_t(direct.layers()));
+
+  const FilterSpec& crossparam_spec = spec_named("cross_parameterize_meshes");
+  const Result crossparam = crossparam_spec.run(
+      defaults(crossparam_spec, {{"map_file", path("m.srb")}}, {{"source_mesh", 0}, {"target_mesh", 2}}), host);
+  EXPECT_EQ(keys_of(crossparam),
+            (std::set<std::string>{"patches", "genus", "flipped_triangles", "max_height_error", "rms_height_error",
+                                   "area_distortion", "angle_distortion", "map_seconds", "seconds"}));
+  EXPECT_EQ(count(crossparam, "flipped_triangles"), 0);
+  EXPECT_EQ(host.colors.at(0).size(), 4 * host.meshes[0].V.size() / 3);
+  EXPECT_EQ(host.colors.at(2).size(), 4 * host.meshes[2].V.size() / 3);
+
+  // What the cache holds is the encoding file's arrays and their edge ends.
+  const Slices encoding = read_encoding_file(path("s.srb"));
+  const size_t expected = encoding.layer_z.size() * 8 + (encoding.layer_begin.size() + encoding.contour_begin.size()) * 8 +
+                          encoding.contour_open.size() + encoding.face.size() * 4 + encoding.edge.size() +
+                          encoding.t.size() * 8 + encoded_edge_ends(encoding, host.meshes[1]).size() * 4;
+  const FilterSpec& free_spec = spec_named("free_cached_memory");
+  const Result freed = free_spec.run(defaults(free_spec), host);
+  EXPECT_EQ(keys_of(freed), (std::set<std::string>{"freed_bytes", "encoding_bytes"}));
+  EXPECT_EQ(count(freed, "encoding_bytes"), int64_t(expected));
+  EXPECT_GE(count(freed, "freed_bytes"), count(freed, "encoding_bytes"));
+  EXPECT_EQ(count(free_spec.run(defaults(free_spec), host), "encoding_bytes"), 0);
+  EXPECT_EQ(count(job_spec.run(job_values, host), "encoding_cached"), 0);
+}
+
+// examples/*.mlx: every filter is in one, and wherever a script names a filter it lists every
+// parameter of the spec, in order, with its type (meshlabserver 2020.09 aborts on a missing one).
+TEST(Filters, EveryFilterHasAnExampleListingEveryParameterInOrder) {
+  const std::map<ParamType, std::string> rich = {
+      {ParamType::Float, "RichFloat"},       {ParamType::Int, "RichInt"},          {ParamType::Bool, "RichBool"},
+      {ParamType::Enum, "RichEnum"},         {ParamType::String, "RichString"},    {ParamType::FileOpen, "RichOpenFile"},
+      {ParamType::FileSave, "RichSaveFile"}, {ParamType::Mesh, "RichMesh"}};
+  // filter name -> for each use, "type name" per Param
+  std::map<std::string, std::vector<std::vector<std::string>>> listed;
+  for (const auto& entry : std::filesystem::directory_iterator(SLICEREUSE_EXAMPLES_DIR)) {
+    if (entry.path().extension() != ".mlx") continue;
+    std::ifstream in(entry.path());
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string s = text.str();
+    static const std::regex filter(R"re(<filter name="([^"]+)">([\s\S]*?)</filter>)re");
+    static const std::regex param(R"re(<Param type="(\w+)" name="(\w+)")re");
+    for (std::sregex_iterator f(s.begin(), s.end(), filter), end; f != end; ++f) {
+      std::vector<std::string>& params = listed[(*f)[1]].emplace_back();
+      const std::string body = (*f)[2];
+      for (std::sregex_iterator p(body.begin(), body.end(), param); p != end; ++p)
+        params.push_back((*p)[1].str() + " " + (*p)[2].str());
+    }
+  }
+  for (const FilterSpec& f : filter_specs()) {
+    std::vector<std::string> expected;
+    for (const ParamSpec& p : f.params) expected.push_back(rich.at(p.type) + " " + p.name);
+    ASSERT_TRUE(listed.count(f.name)) << "no example .mlx for " << f.name;
+    for (const std::vector<std::string>& use : listed[f.name]) EXPECT_EQ(use, expected) << f.name;
+  }
+}
+
+}  // namespace
+}  // namespace slicereuse::plugin
