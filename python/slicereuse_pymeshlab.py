@@ -134,6 +134,8 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
             entry["min_similarity"] = c["min_similarity"]
         results.append(entry)
         del ms
+    if not direct:  # the plugin's cached encoding is not needed after the last member
+        pymeshlab.MeshSet().apply_filter("free_cached_memory")
     if progress:
         progress(steps, steps, "done")
     return {"source": str(source), "seconds": time.perf_counter() - start, "targets": results}
