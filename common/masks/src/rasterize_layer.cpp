@@ -11,9 +11,9 @@
 namespace slicereuse {
 namespace {
 
-// Anti-aliased masks sample every pixel on a SUPERSAMPLE x SUPERSAMPLE grid of sample centres
+// Anti-aliased masks sample every pixel on a kSupersample x kSupersample grid of sample centres
 // with the same nonzero rule as binary masks (64 samples -> 65 grey levels).
-constexpr int SUPERSAMPLE = 8;
+constexpr int kSupersample = 8;
 
 // An edge in sample units, stored from its lower endpoint (smaller row coordinate) so both
 // directions of the same segment give bit-identical crossings.
@@ -241,7 +241,7 @@ size_t rasterize_layer(const Slices& s, size_t k, const PrinterProfile& profile,
     sweep(w, H, W, [&](int r, int a, int b) { std::memset(out + size_t(r) * W + a, 255, b - a); });
     return open;
   }
-  constexpr int S = SUPERSAMPLE;
+  constexpr int S = kSupersample;
   const size_t open = build_edges(s, k, profile, S, w, H * S);
   w.coverage.assign(size_t(W) * H, 0);
   uint16_t* cov = w.coverage.data();

@@ -18,8 +18,8 @@ namespace slicereuse {
 namespace {
 
 // Placeholder exposure settings: the printer profile has no resin data; SL1 defaults.
-constexpr double EXPOSURE_S = 6, FIRST_EXPOSURE_S = 35, TILT_S = 5;
-constexpr size_t FADED_LAYERS = 10;
+constexpr double kExposureSeconds = 6, kFirstExposureSeconds = 35, kTiltSeconds = 5;
+constexpr size_t kFadedLayers = 10;
 
 std::string num(double v) {
   char buf[32];
@@ -35,12 +35,12 @@ std::string utc_timestamp(std::time_t now) {
 }
 
 std::string config_ini(const Sl1Job& j, const std::string& job, std::time_t now, double used_material_ml) {
-  const size_t fade = std::min(FADED_LAYERS, j.layers);
-  const double print_s = double(fade) * FIRST_EXPOSURE_S + double(j.layers - fade) * EXPOSURE_S +
-                         double(j.layers) * TILT_S;
+  const size_t fade = std::min(kFadedLayers, j.layers);
+  const double print_s = double(fade) * kFirstExposureSeconds + double(j.layers - fade) * kExposureSeconds +
+                         double(j.layers) * kTiltSeconds;
   return "action = print\n"
-         "expTime = " + num(EXPOSURE_S) + "\n"
-         "expTimeFirst = " + num(FIRST_EXPOSURE_S) + "\n"
+         "expTime = " + num(kExposureSeconds) + "\n"
+         "expTimeFirst = " + num(kFirstExposureSeconds) + "\n"
          "expUserProfile = 0\n"
          "fileCreationTimestamp = " + utc_timestamp(now) + "\n"
          "hollow = 0\n"
@@ -72,10 +72,10 @@ std::string prusaslicer_ini(const Sl1Job& j) {
          "display_pixels_x = " + std::to_string(p.width_px) + "\n"
          "display_pixels_y = " + std::to_string(p.height_px) + "\n"
          "display_width = " + w + "\n"
-         "exposure_time = " + num(EXPOSURE_S) + "\n"
-         "faded_layers = " + std::to_string(std::min(FADED_LAYERS, j.layers)) + "\n"
+         "exposure_time = " + num(kExposureSeconds) + "\n"
+         "faded_layers = " + std::to_string(std::min(kFadedLayers, j.layers)) + "\n"
          "gamma_correction = " + (p.antialiasing ? "1" : "0") + "\n"
-         "initial_exposure_time = " + num(FIRST_EXPOSURE_S) + "\n"
+         "initial_exposure_time = " + num(kFirstExposureSeconds) + "\n"
          "initial_layer_height = " + num(j.layer_height_mm) + "\n"
          "layer_height = " + num(j.layer_height_mm) + "\n"
          "max_print_height = " + num(height) + "\n"

@@ -1,13 +1,13 @@
 #pragma once
 // mesh_topology: the counts that classify a triangle mesh's surface topologically.
 //
-// Input: a valid mesh (validate_mesh). Output: referenced vertices V, undirected edges E, faces
-// F (a face's side from a vertex to itself is no edge), edges used by one face only (boundary) or by more than two (non-manifold), boundary loops
-// (connected groups of boundary edges), connected components (faces joined through shared
-// vertices), Euler characteristic chi = V - E + F and the total genus
-//   g = (2 * components - boundary_loops - chi) / 2,
-// which is exact for orientable manifold meshes: 0 for a sphere or a disc, 1 for a torus.
-// Unreferenced vertices are ignored (they are not part of the surface).
+// Input: a valid mesh (validate_mesh). Output: referenced vertices V, undirected edges E, faces F
+// (a face's side from a vertex to itself is no edge), edges used by one face only (boundary) or by
+// more than two (non-manifold), boundary loops (connected groups of boundary edges), connected
+// components (faces joined through shared vertices), Euler characteristic chi = V - E + F and the
+// total genus g = (2 * components - boundary_loops - chi) / 2, which is exact for orientable
+// manifold meshes: 0 for a sphere or a disc, 1 for a torus. Unreferenced vertices are ignored (they
+// are not part of the surface).
 #include <cstdint>
 
 #include "slicereuse/mesh/mesh.h"
