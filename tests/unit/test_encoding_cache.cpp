@@ -1,10 +1,9 @@
 // EncodingCache and slice_file_identity: the cached encoding is the file's, it is read once per
 // file content, a rewritten or other file is read again, and members with other faces are
-// refused. OrderedParallel: items arrive in order, errors reach the caller.
+// refused.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -15,7 +14,6 @@
 #include "slicereuse/transfer/encoding_cache.h"
 #include "slicereuse/transfer/transfer_contours.h"
 #include "slicereuse/util/error.h"
-#include "slicereuse/util/ordered_parallel.h"
 #include "temp_folder.h"
 
 using namespace slicereuse;
@@ -105,45 +103,4 @@ TEST_F(Cache, RefusesAMemberWithOtherFacesAndKeepsNothing) {
   cache.get(path, member, &hit);
   EXPECT_FALSE(hit);
   EXPECT_THROW(cache.get(dir + "/missing.srb", member), Error);
-}
-
-TEST(OrderedParallel, HandsOutItemsInOrder) {
-  std::atomic<int> made{0};
-  OrderedParallel items(1000, 7, [&](size_t k, std::vector<uint8_t>& bytes) {
-    bytes.assign(k % 50 + 1, uint8_t(k));
-    ++made;
-  });
-  for (size_t k = 0; k < 1000; ++k) {
-    const std::vector<uint8_t>& b = items.get(k);
-    ASSERT_EQ(b.size(), k % 50 + 1);
-    ASSERT_EQ(b[0], uint8_t(k));
-  }
-  EXPECT_EQ(made, 1000);
-  EXPECT_THROW(items.get(3), Error);  // out of order
-}
-
-TEST(OrderedParallel, ErrorsReachTheCallerAndStopTheWorkers) {
-  OrderedParallel items(10000, 16, [](size_t k, std::vector<uint8_t>& bytes) {
-    if (k == 20) throw Error("item 20 failed");
-    bytes.assign(1, uint8_t(k));
-  });
-  for (size_t k = 0; k < 20; ++k) EXPECT_EQ(items.get(k)[0], uint8_t(k));
-  try {
-    items.get(20);
-    FAIL() << "no error";
-  } catch (const Error& e) {
-    EXPECT_STREQ(e.what(), "item 20 failed");
-  }
-  // Leaving the scope with items not asked for must not hang or crash.
-}
-
-TEST_F(Cache, SlicingWithoutEncodingGivesTheSamePoints) {
-  SliceOptions s;
-  s.thickness = 0.1;
-  s.encoding = false;
-  const Slices bare = slice_layers(base, s);
-  EXPECT_TRUE(bare.face.empty() && bare.edge.empty() && bare.t.empty());
-  EXPECT_EQ(bare.layer_begin, source.layer_begin);
-  EXPECT_EQ(bare.contour_begin, source.contour_begin);
-  EXPECT_TRUE(bare.xyz == source.xyz);
 }
