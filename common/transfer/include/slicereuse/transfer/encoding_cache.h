@@ -4,11 +4,12 @@
 // meshlabserver script, reads and prepares the source's encoding once instead of per member.
 //
 // In: an encoding file's path and a member mesh of the family (its faces give the edge ends).
-// Out: the shared entry, read on a miss. One entry: the key is the path plus the file's size,
-// modification time and checksum (slice_file_identity), so a rewritten file is read again;
+// Out: the shared entry, read on a miss. One entry: the key is the path plus the file's size
+// and content checksum (slice_file_identity), so a file rewritten with other content is read
+// again however coarse the file system's clock, and one rewritten with the same bytes is not;
 // another key replaces the entry. Memory while it is kept: the encoding (13 bytes per point)
 // and the edge ends (8 bytes per point), about 1.5 GB for the 73 M points of a 545k-face part
-// at 1 um. clear() releases it. Thread safe.
+// at 1 um; bytes() reports it, clear() releases it and returns what it freed. Thread safe.
 #include <memory>
 #include <mutex>
 #include <string>
@@ -34,10 +35,15 @@ class EncodingCache {
   // member whose faces differ from the encoding's mesh.
   std::shared_ptr<const CachedEncoding> get(const std::string& path, const Mesh& member, bool* hit = nullptr,
                                             const Progress& progress = {});
-  void clear();
+  // Bytes held by the entry: the sizes of its encoding's arrays and of its edge ends; 0 when
+  // empty.
+  size_t bytes() const;
+  // Drops the entry and returns the bytes it held (bytes() just before). They are freed at
+  // once unless a caller still holds the entry that get() returned.
+  size_t clear();
 
  private:
-  std::mutex mutex_;
+  mutable std::mutex mutex_;
   std::shared_ptr<const CachedEncoding> entry_;
 };
 
