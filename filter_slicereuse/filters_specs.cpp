@@ -203,7 +203,7 @@ FilterSpec print_job_spec() {
                    "directly when no encoding file is given, then its masks (as <i>Export Mask "
                    "Images</i>), with no contour file in between unless one is asked for.</p>"
                    "<p>The last encoding file read stays in memory (one entry, checked against "
-                   "the file's size and a checksum of its content), so a script or a "
+                   "the file's size, modification time and checksum), so a script or a "
                    "pymeshlab loop over a family's members reads it only once. A member whose "
                    "layers fail their certificate (e.g. changed in z) is sliced directly.</p>"
                    "<p>When directly sliced contours would take more than a quarter of the memory "

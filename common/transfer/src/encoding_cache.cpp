@@ -3,22 +3,6 @@
 #include "slicereuse/transfer/transfer_contours.h"
 
 namespace slicereuse {
-namespace {
-
-template <class Array>
-size_t array_bytes(const Array& a) {
-  return a.size() * sizeof(typename Array::value_type);
-}
-
-size_t entry_bytes(const CachedEncoding* e) {
-  if (!e) return 0;
-  const Slices& s = e->encoding;
-  return array_bytes(s.layer_z) + array_bytes(s.layer_begin) + array_bytes(s.contour_begin) +
-         array_bytes(s.contour_open) + array_bytes(s.xyz) + array_bytes(s.face) + array_bytes(s.edge) +
-         array_bytes(s.t) + array_bytes(e->edge_ends);
-}
-
-}  // namespace
 
 std::shared_ptr<const CachedEncoding> EncodingCache::get(const std::string& path, const Mesh& member, bool* hit,
                                                          const Progress& progress) {
@@ -39,14 +23,29 @@ std::shared_ptr<const CachedEncoding> EncodingCache::get(const std::string& path
   return entry_;
 }
 
+namespace {
+
+template <class Array>
+size_t bytes_of(const Array& a) {
+  return a.size() * sizeof(a[0]);
+}
+
+size_t bytes_of_entry(const CachedEncoding& e) {
+  const Slices& s = e.encoding;
+  return bytes_of(s.layer_z) + bytes_of(s.layer_begin) + bytes_of(s.contour_begin) + bytes_of(s.contour_open) +
+         bytes_of(s.xyz) + bytes_of(s.face) + bytes_of(s.edge) + bytes_of(s.t) + bytes_of(e.edge_ends);
+}
+
+}  // namespace
+
 size_t EncodingCache::bytes() const {
   std::lock_guard<std::mutex> lock(mutex_);
-  return entry_bytes(entry_.get());
+  return entry_ ? bytes_of_entry(*entry_) : 0;
 }
 
 size_t EncodingCache::clear() {
   std::lock_guard<std::mutex> lock(mutex_);
-  const size_t freed = entry_bytes(entry_.get());
+  const size_t freed = entry_ ? bytes_of_entry(*entry_) : 0;
   entry_.reset();
   return freed;
 }

@@ -35,11 +35,9 @@ class EncodingCache {
   // member whose faces differ from the encoding's mesh.
   std::shared_ptr<const CachedEncoding> get(const std::string& path, const Mesh& member, bool* hit = nullptr,
                                             const Progress& progress = {});
-  // Bytes held by the entry: the sizes of its encoding's arrays and of its edge ends; 0 when
-  // empty.
+  // The bytes the entry holds (its arrays), 0 when empty.
   size_t bytes() const;
-  // Drops the entry and returns the bytes it held (bytes() just before). They are freed at
-  // once unless a caller still holds the entry that get() returned.
+  // Drops the entry; returns its bytes.
   size_t clear();
 
  private:
