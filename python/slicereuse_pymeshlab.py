@@ -7,10 +7,10 @@
     r = ms.apply_filter("slice_mesh_with_encoding", layer_thickness=0.1, encoding_file="a.srb")
 
 The plugin is build/2025/plugins/libfilter_slicereuse.so, or $SLICEREUSE_PLUGIN; the IO plugin
-libio_encoding.so next to it is loaded too, so that ms.load_new_mesh("x.ctr") opens a contour
-file as a layer and ms.save_current_mesh("x.cli") writes it (also .srb, .slc). Filters
-loaded late are not MeshSet methods: call them through ms.apply_filter(name, **params); the
-result is a dict. Errors raise pymeshlab.PyMeshLabException with the filter's message. After
+libio_encoding.so next to it is loaded too (load() refuses to go on without it), so that
+ms.load_new_mesh("x.ctr") opens a contour file as a layer and ms.save_current_mesh("x.cli")
+writes it (also .srb, .slc). Filters loaded late are not MeshSet methods: call them through
+ms.apply_filter(name, **params); the result is a dict. Errors raise pymeshlab.PyMeshLabException with the filter's message. After
 catching one, keep that MeshSet alive (or run a filter on it that succeeds) before loading meshes
 into another: pymeshlab 2025.7.post1 otherwise logs into the freed MeshSet (see README).
 """
@@ -27,20 +27,21 @@ _pymeshlab = None
 
 
 def load(plugin=None):
-    """Imports pymeshlab, loads the slicereuse plugin into it once and returns the module."""
+    """Imports pymeshlab, loads the slicereuse filter plugin and the IO plugin beside it into it
+    once and returns the module. Raises RuntimeError naming a missing plugin file before
+    loading either: without the IO plugin, contour files would not open as layers."""
     global _pymeshlab
     if _pymeshlab is not None:
         return _pymeshlab
     plugin = Path(plugin or PLUGIN)
-    if not plugin.is_file():
-        raise RuntimeError(f"slicereuse plugin not found: {plugin}; build it with "
-                           f"cmake -S {ROOT} -B {ROOT}/build/2025 -G Ninja "
-                           f"-DSLICEREUSE_MESHLAB_API=2025 && cmake --build {ROOT}/build/2025")
+    io_plugin = plugin.parent / "libio_encoding.so"
+    for what, path in (("filter plugin", plugin), ("IO plugin (beside the filter plugin)", io_plugin)):
+        if not path.is_file():
+            raise RuntimeError(f"slicereuse {what} not found: {path}; build both plugins with "
+                               f"{ROOT / 'scripts' / 'build'} (into {ROOT / 'build' / '2025' / 'plugins'})")
     import pymeshlab
     pymeshlab.load_plugin(str(plugin))
-    io_plugin = plugin.parent / "libio_encoding.so"
-    if io_plugin.is_file():
-        pymeshlab.load_plugin(str(io_plugin))
+    pymeshlab.load_plugin(str(io_plugin))
     _pymeshlab = pymeshlab
     return pymeshlab
 

@@ -16,6 +16,24 @@ def _box(n=4):
     return m.vertex_matrix().copy(), m.face_matrix().copy()
 
 
+DEFECTS = ("duplicate_faces", "zero_area_faces", "repeated_vertex_faces", "boundary_edges", "non_manifold_edges")
+
+
+def _defects(r):
+    """The slice result's five defect counts, by name."""
+    return {k: r[k] for k in DEFECTS}
+
+
+def _counts(**nonzero):
+    """Expected defect counts: the ones named, all others 0."""
+    return {k: nonzero.get(k, 0) for k in DEFECTS}
+
+
+def _edges(faces):
+    """The undirected edges of faces, as sorted vertex pairs."""
+    return {tuple(sorted((int(t[j]), int(t[(j + 1) % 3])))) for t in faces for j in range(3)}
+
+
 def _slice(pymeshlab, v, f, tmp_path, thickness=0.05):
     ms = pymeshlab.MeshSet()
     ms.add_mesh(pymeshlab.Mesh(vertex_matrix=v, face_matrix=f))
@@ -27,15 +45,15 @@ def test_clean_box_has_no_defects(pymeshlab, tmp_path):
     v, f = _box()
     _, r = _slice(pymeshlab, v, f, tmp_path)
     assert r["open_contours"] == 0 and r["contours"] == r["layers"] == 20
-    assert r["duplicate_faces"] == r["boundary_edges"] == r["non_manifold_edges"] == 0
+    assert _defects(r) == _counts()
 
 
 def test_duplicated_faces_are_counted_with_the_open_contours_they_cause(pymeshlab, tmp_path):
     v, f = _box()
     dup = f[:50][:, [1, 2, 0]]
     _, r = _slice(pymeshlab, v, np.vstack([f, dup]), tmp_path)
-    assert r["duplicate_faces"] == 50
-    assert r["non_manifold_edges"] > 0
+    # Every edge of a duplicated face had 2 faces and now has 3 or 4.
+    assert _defects(r) == _counts(duplicate_faces=50, non_manifold_edges=len(_edges(f[:50])))
     assert r["open_contours"] > 0
 
 
@@ -44,8 +62,20 @@ def test_hole_gives_boundary_edges(pymeshlab, tmp_path):
     z = v[f][:, :, 2]
     side = int(np.argmax(z.max(axis=1) > z.min(axis=1)))  # a face the planes cut
     _, r = _slice(pymeshlab, v, np.delete(f, side, axis=0), tmp_path)
-    assert r["boundary_edges"] == 3
+    assert _defects(r) == _counts(boundary_edges=3)
     assert r["open_contours"] > 0
+
+
+def test_repeated_vertex_and_zero_area_faces_are_counted(pymeshlab, tmp_path):
+    v, f = _box()
+    n = len(v)
+    # Beside the box: a face naming vertex n twice (its one edge n - n+1 then has 2 uses, so it
+    # is neither a boundary nor a non-manifold edge), and a face on three collinear points (exact
+    # in binary: the cross product is exactly 0), whose 3 edges have 1 use each.
+    extra_v = [[2, 1, -0.25], [3, 1, 0.25], [2, 0, -0.25], [3, 0, 0], [4, 0, 0.25]]
+    extra_f = [[n, n, n + 1], [n + 2, n + 3, n + 4]]
+    _, r = _slice(pymeshlab, np.vstack([v, extra_v]), np.vstack([f, extra_f]), tmp_path)
+    assert _defects(r) == _counts(repeated_vertex_faces=1, zero_area_faces=1, boundary_edges=3)
 
 
 def test_mesh_between_two_planes_gives_no_contours(pymeshlab, tmp_path):
@@ -53,6 +83,7 @@ def test_mesh_between_two_planes_gives_no_contours(pymeshlab, tmp_path):
     v = v * np.array([1.0, 1.0, 0.01])  # 0.01 mm tall; the one plane at 0.025 mm misses it
     _, r = _slice(pymeshlab, v, f, tmp_path)
     assert (r["layers"], r["contours"], r["points"]) == (1, 0, 0)
+    assert _defects(r) == _counts()
 
 
 def test_non_finite_vertices_are_refused_in_words(pymeshlab, tmp_path):

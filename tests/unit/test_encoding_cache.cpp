@@ -1,10 +1,9 @@
 // EncodingCache and slice_file_identity: the cached encoding is the file's, it is read once per
-// file content, a rewritten or other file is read again, and members with other faces are
-// refused. OrderedParallel: items arrive in order, errors reach the caller.
+// file content (a file rewritten with other content is read again, with the same bytes not;
+// another path is read again), members with other faces are refused, and the memory it holds
+// is reported and freed.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -15,7 +14,6 @@
 #include "slicereuse/transfer/encoding_cache.h"
 #include "slicereuse/transfer/transfer_contours.h"
 #include "slicereuse/util/error.h"
-#include "slicereuse/util/ordered_parallel.h"
 #include "temp_folder.h"
 
 using namespace slicereuse;
@@ -36,10 +34,14 @@ class Cache : public test::TempFolderTest {
     SliceOptions s;
     s.thickness = 0.1;
     source = slice_layers(base, s);
+    // Planes 1 nm higher: the same layers, contours and points (a binary file of the same
+    // size), other t values.
+    s.z_start = source.z_start + 1e-6;
+    other = slice_layers(base, s);
   }
   test::FamilyOptions o;
   Mesh base, member;
-  Slices source;
+  Slices source, other;  // two encodings of the same mesh
 };
 
 }  // namespace
@@ -58,11 +60,19 @@ TEST_F(Cache, ReadsEachFileContentOnce) {
     const auto second = cache.get(path, member, &hit);
     EXPECT_TRUE(hit);
     EXPECT_EQ(first.get(), second.get());
-    // The same content rewritten: new modification time, read again.
-    ::usleep(10000);
+    // The same bytes rewritten: the same content, not read again.
     write_encoding_file(path, source, format);
-    cache.get(path, member, &hit);
+    EXPECT_EQ(cache.get(path, member, &hit).get(), first.get());
+    EXPECT_TRUE(hit);
+    // Other content under the same name, at once (a coarse clock may give it the same
+    // modification time; a binary file has the same size): read again.
+    const auto size = fs::file_size(path);
+    write_encoding_file(path, other, format);
+    if (format == FileFormat::Binary) ASSERT_EQ(fs::file_size(path), size);
+    const auto third = cache.get(path, member, &hit);
     EXPECT_FALSE(hit);
+    EXPECT_TRUE(third->encoding.t == other.t);
+    EXPECT_FALSE(third->encoding.t == source.t);
     // Another name for the same content: read again (the key includes the path).
     fs::copy_file(path, path + ".copy");
     cache.get(path + ".copy", member, &hit);
@@ -71,6 +81,25 @@ TEST_F(Cache, ReadsEachFileContentOnce) {
     cache.get(path + ".copy", member, &hit);
     EXPECT_FALSE(hit);
   }
+}
+
+// bytes() is what the entry's arrays hold: the encoding's (layer heights and offsets, open
+// flags, face, edge, t; no points in an encoding file) and the edge ends.
+TEST_F(Cache, ReportsAndFreesItsMemory) {
+  const std::string path = dir + "/enc.srb";
+  write_encoding_file(path, source, FileFormat::Binary);
+  EncodingCache cache;
+  EXPECT_EQ(cache.bytes(), 0u);
+  cache.get(path, member);
+  const size_t L = source.layers(), C = source.contours(), P = source.points();
+  ASSERT_GT(P, 0u);
+  // layer_z, layer_begin, contour_begin (doubles, uint64), contour_open (uint8); face (uint32),
+  // edge (uint8), t (double) per point; two uint32 edge ends per point.
+  const size_t expected = 8 * L + 8 * (L + 1) + 8 * (C + 1) + C + (4 + 1 + 8) * P + 2 * 4 * P;
+  EXPECT_EQ(cache.bytes(), expected);
+  EXPECT_EQ(cache.clear(), expected);
+  EXPECT_EQ(cache.bytes(), 0u);
+  EXPECT_EQ(cache.clear(), 0u);
 }
 
 TEST_F(Cache, IdentityFollowsTheContent) {
@@ -105,45 +134,4 @@ TEST_F(Cache, RefusesAMemberWithOtherFacesAndKeepsNothing) {
   cache.get(path, member, &hit);
   EXPECT_FALSE(hit);
   EXPECT_THROW(cache.get(dir + "/missing.srb", member), Error);
-}
-
-TEST(OrderedParallel, HandsOutItemsInOrder) {
-  std::atomic<int> made{0};
-  OrderedParallel items(1000, 7, [&](size_t k, std::vector<uint8_t>& bytes) {
-    bytes.assign(k % 50 + 1, uint8_t(k));
-    ++made;
-  });
-  for (size_t k = 0; k < 1000; ++k) {
-    const std::vector<uint8_t>& b = items.get(k);
-    ASSERT_EQ(b.size(), k % 50 + 1);
-    ASSERT_EQ(b[0], uint8_t(k));
-  }
-  EXPECT_EQ(made, 1000);
-  EXPECT_THROW(items.get(3), Error);  // out of order
-}
-
-TEST(OrderedParallel, ErrorsReachTheCallerAndStopTheWorkers) {
-  OrderedParallel items(10000, 16, [](size_t k, std::vector<uint8_t>& bytes) {
-    if (k == 20) throw Error("item 20 failed");
-    bytes.assign(1, uint8_t(k));
-  });
-  for (size_t k = 0; k < 20; ++k) EXPECT_EQ(items.get(k)[0], uint8_t(k));
-  try {
-    items.get(20);
-    FAIL() << "no error";
-  } catch (const Error& e) {
-    EXPECT_STREQ(e.what(), "item 20 failed");
-  }
-  // Leaving the scope with items not asked for must not hang or crash.
-}
-
-TEST_F(Cache, SlicingWithoutEncodingGivesTheSamePoints) {
-  SliceOptions s;
-  s.thickness = 0.1;
-  s.encoding = false;
-  const Slices bare = slice_layers(base, s);
-  EXPECT_TRUE(bare.face.empty() && bare.edge.empty() && bare.t.empty());
-  EXPECT_EQ(bare.layer_begin, source.layer_begin);
-  EXPECT_EQ(bare.contour_begin, source.contour_begin);
-  EXPECT_TRUE(bare.xyz == source.xyz);
 }

@@ -5,6 +5,7 @@
 #include <set>
 #include <utility>
 
+#include "family.h"
 #include "shapes.h"
 #include "slicereuse/slicing/layer_planes.h"
 #include "slicereuse/slicing/slice_layers.h"
@@ -233,6 +234,27 @@ TEST(SliceLayers, NonManifoldAndFlippedFacesNeverBreakTheSlicer) {
   s = slice(a, 0.1);
   expect_encoding_consistent(a, s);
   EXPECT_GT(s.open_contours(), 20u);
+}
+
+// Without encoding (the masks' path) the slicer finds the same points as with it.
+TEST(SliceLayers, WithoutEncodingGivesTheSamePoints) {
+  test::FamilyOptions o;
+  o.shape = "arch";
+  o.faces = 3000;
+  o.height = 5;
+  o.seed = 3;
+  const Mesh base = test::make_family_base(o);
+  SliceOptions s;
+  s.thickness = 0.1;
+  const Slices encoded = slice_layers(base, s);
+  s.encoding = false;
+  const Slices bare = slice_layers(base, s);
+  ASSERT_GT(encoded.points(), 0u);
+  EXPECT_TRUE(bare.face.empty() && bare.edge.empty() && bare.t.empty());
+  EXPECT_EQ(bare.layer_begin, encoded.layer_begin);
+  EXPECT_EQ(bare.contour_begin, encoded.contour_begin);
+  EXPECT_EQ(bare.contour_open, encoded.contour_open);
+  EXPECT_TRUE(bare.xyz == encoded.xyz);
 }
 
 TEST(SliceLayers, RejectsBadInput) {

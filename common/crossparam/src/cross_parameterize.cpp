@@ -43,6 +43,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "landmark_warp.h"
 #include "lattice_registration.h"
@@ -344,6 +345,7 @@ CrossParamResult cross_parameterize(const Mesh& source, const Mesh& target, cons
     const int corner = int(std::max_element(s.bary, s.bary + 3) - s.bary);
     result.target_patch[i] = result.source_patch[source.F[3 * size_t(s.face) + corner]];
   }
+  result.registered = std::move(moved);
   q.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   report_progress(progress, 1, "done");
   return result;

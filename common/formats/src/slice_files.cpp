@@ -1,7 +1,5 @@
 #include "slicereuse/formats/slice_files.h"
 
-#include <sys/stat.h>
-
 #include <cerrno>
 #include <cstring>
 #include <memory>
@@ -76,7 +74,6 @@ FileIdentity slice_file_identity(const std::string& path) {
   const detail::InputFile f = detail::open_input_file(path);
   FileIdentity id;
   id.size = f.size();
-  id.mtime_ns = int64_t(f.st.st_mtim.tv_sec) * 1000000000 + f.st.st_mtim.tv_nsec;
   unsigned char head[detail::kFixedHeaderBytes];
   const size_t got = std::fread(head, 1, sizeof head, f.get());
   if (got == sizeof head && std::memcmp(head, detail::kBinaryMagic, sizeof detail::kBinaryMagic) == 0) {

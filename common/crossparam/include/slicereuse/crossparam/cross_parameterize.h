@@ -4,8 +4,9 @@
 // source vertex at height h maps onto the target at height h.
 //
 // Input: source and target meshes and options (landmark pairs, in_plane).
-// Output: the SurfaceMap (one target point per source vertex), a quality report, and a patch id
-// per vertex of both meshes (the same id marks corresponding regions, for colouring).
+// Output: the SurfaceMap (one target point per source vertex), a quality report, a patch id
+// per vertex of both meshes (the same id marks corresponding regions, for colouring), and the
+// registered source vertices.
 // Throws Error with a message that names the problem for input it cannot map (see the .cpp
 // header comment for the approach and its limits): meshes of different genus, connected
 // components or boundary loops (both values named), bad landmarks, or, without landmarks, a
@@ -49,6 +50,12 @@ struct CrossParamResult {
   CrossParamQuality quality;
   std::vector<uint32_t> source_patch;  // per source vertex
   std::vector<uint32_t> target_patch;  // per target vertex; same id = corresponding patch
+  // Per source vertex (3 each), its position after alignment and registration: the point its
+  // image was sought from (on the target's level set at the vertex's own height in plane; with
+  // in_plane = false the nearest target surface point facing the same way), before untangling
+  // moved the images of folded triangles, if any.
+  // What the registration did, apart from the projection: for inspection and tests.
+  std::vector<double> registered;
 };
 
 CrossParamResult cross_parameterize(const Mesh& source, const Mesh& target, const CrossParamOptions& options,

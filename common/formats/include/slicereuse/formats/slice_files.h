@@ -25,17 +25,16 @@ void write_encoding_file(const std::string& path, const Slices& s, FileFormat fo
 Slices read_contour_file(const std::string& path, const Progress& progress = {});
 Slices read_encoding_file(const std::string& path, const Progress& progress = {});
 
-// What identifies a slice file's content without reading it all: its size, its modification
-// time (ns) and a checksum. For a binary file the checksum is the one stored over its header
-// and section table, which holds every section's checksum (only the header is read);
-// a text file has none stored and is hashed whole (XXH3). Throws Error if it cannot be read.
+// What identifies a slice file's content: its size and a checksum of the content. For a binary
+// file the checksum is the one stored over its header and section table, which holds every
+// section's checksum (only the header is read); a text file has none stored and is hashed
+// whole (XXH3). No file times: a file rewritten within the clock's resolution keeps its
+// modification time, and one rewritten with the same bytes is the same content. Throws Error
+// if it cannot be read.
 struct FileIdentity {
   uint64_t size = 0;
-  int64_t mtime_ns = 0;
   uint64_t checksum = 0;
-  bool operator==(const FileIdentity& o) const {
-    return size == o.size && mtime_ns == o.mtime_ns && checksum == o.checksum;
-  }
+  bool operator==(const FileIdentity& o) const { return size == o.size && checksum == o.checksum; }
 };
 FileIdentity slice_file_identity(const std::string& path);
 

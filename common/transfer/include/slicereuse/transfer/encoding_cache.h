@@ -4,11 +4,12 @@
 // meshlabserver script, reads and prepares the source's encoding once instead of per member.
 //
 // In: an encoding file's path and a member mesh of the family (its faces give the edge ends).
-// Out: the shared entry, read on a miss. One entry: the key is the path plus the file's size,
-// modification time and checksum (slice_file_identity), so a rewritten file is read again;
+// Out: the shared entry, read on a miss. One entry: the key is the path plus the file's size
+// and content checksum (slice_file_identity), so a file rewritten with other content is read
+// again however coarse the file system's clock, and one rewritten with the same bytes is not;
 // another key replaces the entry. Memory while it is kept: the encoding (13 bytes per point)
 // and the edge ends (8 bytes per point), about 1.5 GB for the 73 M points of a 545k-face part
-// at 1 um. clear() releases it. Thread safe.
+// at 1 um; bytes() reports it, clear() releases it and returns what it freed. Thread safe.
 #include <memory>
 #include <mutex>
 #include <string>
