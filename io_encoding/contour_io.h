@@ -9,8 +9,9 @@
 // B.enc and B_enc.srb that exists is read as its encoding (it must describe the same layers,
 // contours and points) and becomes the per-vertex face and area coordinates.
 // Save: .ctr / .srb write the contour file (text / binary) and, when the layer carries an
-// encoding, B.enc / B_enc.srb beside it; .cli writes CLI (ASCII, or binary when the save
-// parameter "binary" is set); .slc writes SLC (open contours are left out and counted).
+// encoding, B.enc / B_enc.srb beside it, staged together (both appear or neither); .cli writes
+// CLI (ASCII, or binary when the save parameter "binary" is set); .slc writes SLC (open contours
+// are left out and counted).
 // Every function throws Error with a message naming the file and the problem.
 #include <sys/stat.h>
 
@@ -22,6 +23,7 @@
 #include "slicereuse/formats/cli_file.h"
 #include "slicereuse/formats/slc_file.h"
 #include "slicereuse/formats/slice_files.h"
+#include "slicereuse/util/atomic_file.h"
 #include "slicereuse/util/progress.h"
 
 namespace slicereuse::plugin {
@@ -115,12 +117,19 @@ std::string save_contour_layer(const std::string& format, const std::string& pat
   std::string also;
   if (ext == "CTR" || ext == "SRB") {
     const FileFormat f = ext == "SRB" ? FileFormat::Binary : FileFormat::Text;
-    write_contour_file(path, s, f, progress);
-    if (s.has_encoding()) {
-      also = base_of(path) + (f == FileFormat::Binary ? "_enc.srb" : ".enc");
-      write_encoding_file(also, s, f);
-      also = ", encoding to " + also;
+    // Staged together (atomic_file.h): the contour file and its encoding appear both or neither.
+    // Both names are reserved first, so a target that cannot be written stops the save early.
+    StagedOutputs outputs;
+    const std::string contours = outputs.file(path);
+    const std::string encoding =
+        s.has_encoding() ? base_of(path) + (f == FileFormat::Binary ? "_enc.srb" : ".enc") : "";
+    const std::string encoding_staged = encoding.empty() ? "" : outputs.file(encoding);
+    write_contour_file(contours, s, f, progress);
+    if (!encoding.empty()) {
+      write_encoding_file(encoding_staged, s, f);
+      also = ", encoding to " + encoding;
     }
+    outputs.commit();
   } else if (ext == "CLI") {
     write_cli_file(path, s, binary_cli ? CliEncoding::Binary : CliEncoding::Ascii, progress);
     also = binary_cli ? " (binary)" : " (ASCII)";

@@ -143,6 +143,23 @@ def test_round_trip_through_binary_is_exact(pymeshlab, sliced):
     assert (out / "back.enc").read_bytes() == (out / "slice.enc").read_bytes()
 
 
+def test_contour_file_and_encoding_are_saved_both_or_neither(pymeshlab, sliced):
+    out, ctr = sliced
+    (out / "pair.ctr").write_text("old")
+    (out / "pair.enc").mkdir()  # the encoding cannot be written there
+    ms = pymeshlab.MeshSet()
+    ms.load_new_mesh(str(ctr))
+    with pytest.raises(pymeshlab.PyMeshLabException, match=r"pair\.enc': it is a folder"):
+        ms.save_current_mesh(str(out / "pair.ctr"))
+    assert (out / "pair.ctr").read_text() == "old"  # not replaced without its encoding
+    assert (out / "pair.enc").is_dir() and not any((out / "pair.enc").iterdir())
+    assert not list(out.glob("pair.*.tmp-*"))  # nothing staged is left
+    (out / "pair.enc").rmdir()
+    ms.save_current_mesh(str(out / "pair.ctr"))  # a save that succeeds after the error (see README)
+    assert (out / "pair.ctr").read_bytes() == ctr.read_bytes()
+    assert (out / "pair.enc").read_bytes() == (out / "slice.enc").read_bytes()
+
+
 @pytest.mark.parametrize("binary", [False, True])
 def test_cli_export_matches_the_layer(pymeshlab, sliced, binary):
     out, ctr = sliced

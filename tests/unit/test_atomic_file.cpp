@@ -84,6 +84,25 @@ TEST_F(AtomicOutputs, FolderIntoAFolderWithEntriesMovesItsEntries) {
   EXPECT_EQ(slurp(path("masks/notes.txt")), "mine");
 }
 
+// A target that is a folder would fail only at the rename in commit(), after the outputs staged
+// before it had replaced theirs: file() refuses it up front.
+TEST_F(AtomicOutputs, AFileOntoAFolderIsRefusedBeforeAnythingIsWritten) {
+  spit(path("a.ctr"), "old");
+  fs::create_directory(path("a.enc"));
+  {
+    StagedOutputs outputs;
+    spit(outputs.file(path("a.ctr")), "new");
+    try {
+      outputs.file(path("a.enc"));
+      ADD_FAILURE() << "staged a file onto a folder";
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()), "cannot write '" + path("a.enc") + "': it is a folder");
+    }
+  }
+  EXPECT_EQ(listing(), (std::vector<std::string>{"a.ctr", "a.enc"}));
+  EXPECT_EQ(slurp(path("a.ctr")), "old");
+}
+
 TEST_F(AtomicOutputs, StagedFileKeepsTheModeOfTheFileItReplaces) {
   spit(path("a.ctr"), "old");
   ::chmod(path("a.ctr").c_str(), 0640);

@@ -80,15 +80,19 @@ TEST_F(PickPoints, DamageIsReportedClearly) {
   EXPECT_NE(error(" <point x=\"1\" y=\"0\" z=\"0\" name=\"a\"/>\n <point x=\"2\" y=\"0\" z=\"0\" name=\"a\"/>\n")
                 .find("line 10: two active points are named 'a'"),
             std::string::npos);
-  EXPECT_NE(error(" <point x=\"1\" y=\"0\" z=\"0\" name=\"a\n").find("malformed XML"), std::string::npos);
-  EXPECT_NE(error(" <point x=1 y=\"0\" z=\"0\" name=\"a\"/>\n").find("is not quoted"), std::string::npos);
+  EXPECT_NE(error(" <point x=\"1\" y=\"0\" z=\"0\" name=\"a\n").find("line 9: malformed XML: error parsing element attribute"),
+            std::string::npos);
+  EXPECT_NE(error(" <point x=1 y=\"0\" z=\"0\" name=\"a\"/>\n").find("line 9: malformed XML: error parsing element attribute"),
+            std::string::npos);
+  EXPECT_NE(error(" <point x=\"1\" y=\"0\" z=\"0\" name=\"a\">\n").find("line 10: malformed XML: start-end tags mismatch"),
+            std::string::npos);
   const std::string p = dir + "/x.pp";
   std::ofstream(p) << "<Other><point x=\"1\" y=\"0\" z=\"0\" name=\"a\"/></Other>";
   try {
     read_pickpoints_file(p);
     FAIL();
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("not a MeshLab PickPoints file"), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()), "'" + p + "': not a MeshLab PickPoints file (its root element is <Other>, not <PickedPoints>)");
   }
   try {
     read_pickpoints_file(dir + "/missing.pp");
@@ -101,5 +105,22 @@ TEST_F(PickPoints, DamageIsReportedClearly) {
     FAIL();
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("not a regular file"), std::string::npos) << e.what();
+  }
+}
+
+// Found by scripts/fuzz: the hand-written scanner this reader had took the quote after y"= for the
+// start of a value, found no closing quote, and (npos + 1 == 0) started the tag over, forever.
+TEST_F(PickPoints, AnAttributeValueWithoutItsClosingQuoteIsRefusedNotLoopedOn) {
+  // The same bytes as tests/fuzz_corpus/pickpoints_file/unterminated_attribute.pp.
+  const std::string p = file("unterminated_attribute.pp",
+                             " <point x=\"-12.5\" y=\"3.25\" z=\"1e-3\" active=\"1\" name=\"left molar\"/>\n"
+                             " <point =\"0.5\" y\"=\" z='14.25' active='1' name='incisor'/>\n"
+                             " <point x=\"3.125\" y=\"-7.5\" z=\"2\" active=\"0\" name=\"canine\"/>\n"
+                             " <point x=\"-4\" y=\"6.75\" z=\"0.5\" active=\"1\" name=\"premolar\"/>\n");
+  try {
+    read_pickpoints_file(p);
+    FAIL() << "read a file with a malformed tag";
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()), "'" + p + "', line 10: malformed XML: error parsing start element tag");
   }
 }

@@ -1,6 +1,9 @@
 #include "slicereuse/formats/pickpoints_file.h"
 
+#include <pugixml.hpp>
+
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -13,48 +16,18 @@
 namespace slicereuse {
 namespace {
 
-// The text of an XML attribute value with the predefined and numeric character references
-// replaced; false when a reference is malformed.
-bool decode_entities(const std::string& raw, std::string& out) {
-  out.clear();
-  for (size_t i = 0; i < raw.size(); ++i) {
-    if (raw[i] != '&') {
-      out += raw[i];
-      continue;
-    }
-    const size_t semi = raw.find(';', i);
-    if (semi == std::string::npos) return false;
-    const std::string ent = raw.substr(i + 1, semi - i - 1);
-    if (ent == "amp") out += '&';
-    else if (ent == "lt") out += '<';
-    else if (ent == "gt") out += '>';
-    else if (ent == "quot") out += '"';
-    else if (ent == "apos") out += '\'';
-    else if (ent.size() > 1 && ent[0] == '#') {
-      unsigned long code = 0;
-      const bool hex = ent[1] == 'x' || ent[1] == 'X';
-      const char* b = ent.data() + (hex ? 2 : 1);
-      const auto r = std::from_chars(b, ent.data() + ent.size(), code, hex ? 16 : 10);
-      if (r.ec != std::errc() || r.ptr != ent.data() + ent.size() || code == 0 || code > 0x10ffff) return false;
-      if (code < 0x80) {
-        out += char(code);
-      } else if (code < 0x800) {
-        out += char(0xc0 | (code >> 6)), out += char(0x80 | (code & 0x3f));
-      } else if (code < 0x10000) {
-        out += char(0xe0 | (code >> 12)), out += char(0x80 | ((code >> 6) & 0x3f)), out += char(0x80 | (code & 0x3f));
-      } else {
-        out += char(0xf0 | (code >> 18)), out += char(0x80 | ((code >> 12) & 0x3f));
-        out += char(0x80 | ((code >> 6) & 0x3f)), out += char(0x80 | (code & 0x3f));
-      }
-    } else {
-      return false;
-    }
-    i = semi;
-  }
-  return true;
-}
-
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+
+// A coordinate: a finite number, blanks around it and a leading '+' allowed (what QString's
+// toDouble, MeshLab's own reader, accepts).
+bool parse_coordinate(const char* b, const char* e, double& x) {
+  while (b < e && is_space(*b)) ++b;
+  if (b < e && *b == '+') ++b;
+  const auto r = std::from_chars(b, e, x);
+  const char* rest = r.ptr;
+  while (rest < e && is_space(*rest)) ++rest;
+  return r.ec == std::errc() && rest == e && std::isfinite(x);
+}
 
 }  // namespace
 
@@ -66,90 +39,48 @@ std::vector<PickedPoint> read_pickpoints_file(const std::string& path) {
     if (!text.empty() && std::fread(text.data(), 1, text.size(), in.get()) != text.size())
       throw Error("cannot read '" + path + "': " + std::strerror(errno));
   }
-  auto fail = [&](size_t at, const std::string& what) -> void {
-    const size_t line = 1 + size_t(std::count(text.begin(), text.begin() + std::min(at, text.size()), '\n'));
+  // at: a byte offset into the file (pugixml's offsets are into its copy of text, which is
+  // byte for byte the file because it is parsed as UTF-8, as MeshLab writes it).
+  auto fail = [&](ptrdiff_t at, const std::string& what) -> void {
+    const size_t end = std::min(size_t(std::max<ptrdiff_t>(at, 0)), text.size());
+    const size_t line = 1 + size_t(std::count(text.begin(), text.begin() + ptrdiff_t(end), '\n'));
     throw Error("'" + path + "', line " + std::to_string(line) + ": " + what);
   };
 
+  pugi::xml_document doc;
+  const pugi::xml_parse_result parsed =
+      doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_utf8);
+  if (!parsed) {
+    std::string why = parsed.description();  // "Error parsing element attribute", ...
+    if (!why.empty()) why[0] = char(std::tolower(static_cast<unsigned char>(why[0])));
+    fail(parsed.offset, "malformed XML: " + why);
+  }
+  const pugi::xml_node root = doc.document_element();
+  if (std::strcmp(root.name(), "PickedPoints") != 0)
+    throw Error("'" + path + "': not a MeshLab PickPoints file (its root element is <" + root.name() +
+                ">, not <PickedPoints>)");
+
   std::vector<PickedPoint> points;
-  bool root = false;
   std::map<std::string, size_t> seen;
-  for (size_t i = text.find('<'); i != std::string::npos; i = text.find('<', i)) {
-    if (text.compare(i, 4, "<!--") == 0) {
-      const size_t e = text.find("-->", i + 4);
-      if (e == std::string::npos) fail(i, "unterminated XML comment");
-      i = e + 3;
-      continue;
-    }
-    // The tag's end: the first '>' outside a quoted attribute value.
-    size_t e = i + 1;
-    char quote = 0;
-    for (; e < text.size(); ++e) {
-      if (quote) {
-        if (text[e] == quote) quote = 0;
-      } else if (text[e] == '"' || text[e] == '\'') {
-        quote = text[e];
-      } else if (text[e] == '>') {
-        break;
-      } else if (text[e] == '<') {
-        fail(e, "malformed XML: '<' inside a tag");
-      }
-    }
-    if (e >= text.size()) fail(i, "malformed XML: unterminated tag or attribute value");
-    const std::string tag = text.substr(i + 1, e - i - 1);
-    const size_t tag_at = i;
-    i = e + 1;
-    size_t k = 0;
-    while (k < tag.size() && !is_space(tag[k]) && tag[k] != '/') ++k;
-    const std::string element = tag.substr(0, k);
-    if (element == "PickedPoints") root = true;
-    if (element != "point") continue;
-    if (!root) fail(tag_at, "a <point> outside the <PickedPoints> root element: not a MeshLab PickPoints file");
-    std::map<std::string, std::string> attr;
-    while (true) {
-      while (k < tag.size() && is_space(tag[k])) ++k;
-      if (k >= tag.size() || tag[k] == '/') break;
-      const size_t name_at = k;
-      while (k < tag.size() && !is_space(tag[k]) && tag[k] != '=') ++k;
-      const std::string key = tag.substr(name_at, k - name_at);
-      while (k < tag.size() && is_space(tag[k])) ++k;
-      if (k >= tag.size() || tag[k] != '=') fail(tag_at, "malformed XML: attribute '" + key + "' has no value");
-      ++k;
-      while (k < tag.size() && is_space(tag[k])) ++k;
-      if (k >= tag.size() || (tag[k] != '"' && tag[k] != '\''))
-        fail(tag_at, "malformed XML: the value of attribute '" + key + "' is not quoted");
-      const char q = tag[k];
-      const size_t close = tag.find(q, k + 1);
-      std::string value;
-      if (!decode_entities(tag.substr(k + 1, close - k - 1), value))
-        fail(tag_at, "malformed XML: bad character reference in attribute '" + key + "'");
-      attr[key] = value;
-      k = close + 1;
-    }
+  for (const pugi::xml_node node : root.children("point")) {
+    const ptrdiff_t at = node.offset_debug();
     PickedPoint p;
-    if (!attr.count("name")) fail(tag_at, "a <point> without a name attribute");
-    p.name = attr["name"];
+    const pugi::xml_attribute name = node.attribute("name");
+    if (!name) fail(at, "a <point> without a name attribute");
+    p.name = name.value();
     const char* axis[3] = {"x", "y", "z"};
     for (int a = 0; a < 3; ++a) {
-      if (!attr.count(axis[a])) fail(tag_at, "point '" + p.name + "' has no " + axis[a] + " attribute");
-      const std::string& v = attr[axis[a]];
-      double x = 0;
-      const char* b = v.data();
-      while (b < v.data() + v.size() && is_space(*b)) ++b;
-      if (b < v.data() + v.size() && *b == '+') ++b;
-      const auto r = std::from_chars(b, v.data() + v.size(), x);
-      const char* rest = r.ptr;
-      while (rest < v.data() + v.size() && is_space(*rest)) ++rest;
-      if (r.ec != std::errc() || rest != v.data() + v.size() || !std::isfinite(x))
-        fail(tag_at, "point '" + p.name + "': " + axis[a] + " = '" + v + "' is not a finite number");
-      p.xyz[a] = x;
+      const pugi::xml_attribute c = node.attribute(axis[a]);
+      if (!c) fail(at, "point '" + p.name + "' has no " + axis[a] + " attribute");
+      const char* v = c.value();
+      if (!parse_coordinate(v, v + std::strlen(v), p.xyz[a]))
+        fail(at, "point '" + p.name + "': " + axis[a] + " = '" + v + "' is not a finite number");
     }
-    p.active = !(attr.count("active") && attr["active"] == "0");
+    p.active = std::strcmp(node.attribute("active").value(), "0") != 0;
     if (p.active && !seen.emplace(p.name, points.size()).second)
-      fail(tag_at, "two active points are named '" + p.name + "': landmarks are matched by name");
+      fail(at, "two active points are named '" + p.name + "': landmarks are matched by name");
     points.push_back(p);
   }
-  if (!root) throw Error("'" + path + "': not a MeshLab PickPoints file (no <PickedPoints> element)");
   return points;
 }
 

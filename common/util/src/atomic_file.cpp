@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -83,6 +84,19 @@ void merge_folder(const std::string& from, const std::string& to) {
   ::rmdir(from.c_str());
 }
 
+// Puts what was written to path on the disk, by sync (fsync(2) or syncfs(2)) on a descriptor of
+// it. A rename is journalled on its own, so without this a power loss soon after a commit can
+// leave a final name on an empty or partly written file (ext4, XFS), or lose the rename. A file
+// system that cannot sync (EINVAL: some FUSE and network file systems) has nothing more to give.
+void sync_to_disk(const std::string& path, int (*sync)(int) = ::fsync) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw Error("cannot open '" + path + "' to write it to disk: " + why());
+  const int r = sync(fd);
+  const int e = errno;
+  ::close(fd);
+  if (r != 0 && e != EINVAL) throw Error("cannot write '" + path + "' to disk: " + std::strerror(e));
+}
+
 }  // namespace
 
 StagedOutputs::~StagedOutputs() {
@@ -91,6 +105,10 @@ StagedOutputs::~StagedOutputs() {
 }
 
 std::string StagedOutputs::file(const std::string& final_path) {
+  // Refused now rather than by the rename in commit(), after other outputs have been renamed.
+  struct stat st;
+  if (::stat(final_path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+    throw Error("cannot write '" + final_path + "': it is a folder");
   std::vector<char> name = template_for(final_path);
   const int fd = ::mkstemp(name.data());
   if (fd < 0) throw Error("cannot create a temporary file next to '" + final_path + "': " + why());
@@ -114,15 +132,28 @@ std::string StagedOutputs::folder(const std::string& path) {
 }
 
 void StagedOutputs::commit() {
+  // On the disk before renamed: a final name never refers to data that a power loss can take.
+  // A folder (thousands of mask images) by one syncfs of its file system: an fsync per image
+  // waits for a journal commit and a disk cache flush each (3,621 images: 4-14 s on the
+  // development machine, syncfs 0.1 s). syncfs also writes what other programs left in that
+  // file system's cache, and reports a write error of theirs as well.
+  for (const Output& o : outputs_) sync_to_disk(o.staged, o.is_folder ? ::syncfs : ::fsync);
+  std::vector<std::string> changed;  // folders whose entries the renames changed
   for (Output& o : outputs_) {
     if (::rename(o.staged.c_str(), o.final_path.c_str()) != 0) {
       if (!o.is_folder || (errno != ENOTEMPTY && errno != EEXIST))
         throw Error("cannot rename '" + o.staged + "' to '" + o.final_path + "': " + why());
       merge_folder(o.staged, o.final_path);
+      changed.push_back(o.final_path);
     }
+    changed.push_back(folder_of(o.final_path));
     o.staged.clear();
   }
   outputs_.clear();
+  // The renames themselves on the disk.
+  std::sort(changed.begin(), changed.end());
+  changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
+  for (const std::string& folder : changed) sync_to_disk(folder);
 }
 
 AtomicFile::AtomicFile(const std::string& path) : path_(path) {

@@ -10,10 +10,12 @@
 // Attributes come in any order; active="0" marks a point the user unchecked, any other value
 // or no active attribute (files from older MeshLab versions) an active one.
 //
-// read_pickpoints_file: every <point> of the file, in file order. Throws Error naming the file
-// for a missing or unreadable file, malformed XML (unterminated tag or attribute, no
-// <PickedPoints> root), a point without x, y, z or name, a coordinate that is not a finite
-// number, or two active points with the same name.
+// read_pickpoints_file: every <point> child of the <PickedPoints> root, in file order. The XML is
+// parsed by pugixml (as UTF-8, what MeshLab writes). Throws Error naming the file (and the line)
+// for a missing or unreadable file, malformed XML (pugixml's reason in words: an unterminated tag
+// or attribute value, a missing end tag, ...), a root element other than <PickedPoints>, a point
+// without x, y, z or name, a coordinate that is not a finite number, or two active points with
+// the same name.
 // landmark_pairs: the active points of two files matched by name, in the source file's order;
 // throws Error when fewer than min_pairs names match, listing the counts and the unmatched names.
 #include <array>

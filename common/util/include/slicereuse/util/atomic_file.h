@@ -1,13 +1,17 @@
 #pragma once
 // Atomic outputs: the one way slicereuse writes results, so that a failed, cancelled or
-// crashed run never leaves a truncated file, a half-filled folder or a broken archive under a
-// final name (nor replaces an older one).
+// crashed run, or a power loss, never leaves a truncated file, a half-filled folder or a broken
+// archive under a final name (nor replaces an older one).
 //
 // StagedOutputs: outputs that appear together. file(path) / folder(path) reserve a fresh name
 //   next to path (PATH.tmp-XXXXXX, same file system, so renames are atomic) as an empty file or
 //   folder and return it; the caller writes there by any means (stdio, plain writes into the
-//   folder, libzip's zip_open on the staged file); commit() renames every staged output onto its
-//   final path, in the order staged. Destroyed without commit: every staged output is removed.
+//   folder, libzip's zip_open on the staged file); commit() puts every staged output on the disk
+//   (fsync of a file, syncfs of a folder's file system), renames each onto its final path, in the
+//   order staged, then fsyncs the folders the renames changed: once commit() returns, a power
+//   loss keeps the outputs. Destroyed without commit: every staged output is removed.
+//   file(path) throws Error when path is an existing folder (folder(path): an existing
+//   non-folder), before anything is written, so that no rename in commit() fails for that.
 //   A staged file gets the mode of the file it replaces, else 0666 minus the umask. A staged
 //   folder replaces a missing or empty folder in one rename; into a folder that has entries, its
 //   entries are renamed one by one (other entries there are kept).
@@ -29,7 +33,6 @@ class StagedOutputs {
   ~StagedOutputs();
 
   std::string file(const std::string& final_path);
-  // Throws Error when final_path exists and is not a folder.
   std::string folder(const std::string& final_path);
   void commit();
 
