@@ -181,15 +181,12 @@ void for_contour_lines(const std::vector<Line>& lines, const Progress& progress,
   for (size_t c = 1; c < lines.size(); ++c)
     if (size_t(lines[c].b - lines[first.back()].b) >= kBlockBytes) first.push_back(c);
   first.push_back(lines.size());
-  const Progress scaled = [&](double fraction, const char* phase) {
-    return !progress || progress(from + (to - from) * fraction, phase);
-  };
   parallel_blocks(
       first.size() - 1,
       [&](size_t b) {
         for (size_t c = first[b]; c < first[b + 1]; ++c) f(c);
       },
-      scaled, "reading");
+      sub_progress(progress, from, to), "reading");
 }
 
 // Counts the points of a contour line and notes whether it starts with "open".
