@@ -15,6 +15,7 @@
 #include "slicereuse/util/atomic_file.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/input_file.h"
+#include "text_tokens.h"
 
 namespace slicereuse {
 namespace {
@@ -35,7 +36,9 @@ enum MapField : size_t {
 };
 const std::vector<uint32_t> kSectionIds = {detail::kSourceFaces, detail::kMapFace, detail::kMapBary};
 uint64_t section_bytes(uint32_t id, uint64_t source_faces, uint64_t source_vertices) {
-  return id == detail::kSourceFaces ? 12 * source_faces : id == detail::kMapFace ? 4 * source_vertices : 24 * source_vertices;
+  return id == detail::kSourceFaces ? 12 * source_faces
+         : id == detail::kMapFace   ? 4 * source_vertices
+                                    : 24 * source_vertices;
 }
 std::string num(uint64_t v) { return std::to_string(v); }
 
@@ -51,7 +54,9 @@ unsigned char* section_data(SurfaceMap& m, uint32_t id) {
          : id == detail::kMapFace   ? reinterpret_cast<unsigned char*>(m.face.data())
                                     : reinterpret_cast<unsigned char*>(m.bary.data());
 }
-const unsigned char* section_data(const SurfaceMap& m, uint32_t id) { return section_data(const_cast<SurfaceMap&>(m), id); }
+const unsigned char* section_data(const SurfaceMap& m, uint32_t id) {
+  return section_data(const_cast<SurfaceMap&>(m), id);
+}
 
 void write_binary(const std::string& path, const SurfaceMap& m, const Progress& progress) {
   unsigned char fields[detail::kKindFieldBytes] = {};
@@ -139,58 +144,40 @@ void write_text(const std::string& path, const SurfaceMap& m, const Progress& pr
   file.commit();
 }
 
+// The map's text lines, blank ones skipped, read with the text formats' tokenizer.
 struct TextReader {
   const std::string& path;
-  const char* p;
-  const char* end;
-  uint64_t line = 0;
-  std::string_view current;
+  detail::LineReader lines;
+  detail::Line l{};
 
-  [[noreturn]] void fail(const std::string& what) const {
-    throw Error("'" + path + "', line " + num(line) + ": " + what);
-  }
+  [[noreturn]] void fail(const std::string& what) const { detail::fail_at_line(path, l.number, what); }
   bool next() {
-    while (p < end) {
-      const char* nl = static_cast<const char*>(std::memchr(p, '\n', size_t(end - p)));
-      const char* e = nl ? nl : end;
-      current = std::string_view(p, size_t(e - p));
-      if (!current.empty() && current.back() == '\r') current.remove_suffix(1);
-      p = nl ? nl + 1 : end;
-      ++line;
-      if (current.find_first_not_of(" \t") != std::string_view::npos) return true;
-    }
+    while (lines.next(l))
+      if (!detail::at_end(l.b, l.e)) return true;
     return false;
   }
+  std::string_view current() const { return std::string_view(l.b, size_t(l.e - l.b)); }
   template <class T>
-  T number(size_t& at, const char* what, int base = 10) {
-    while (at < current.size() && (current[at] == ' ' || current[at] == '\t')) ++at;
+  T number(const char*& p, const char* what, int base = 10) const {
     T v{};
-    std::from_chars_result r;
-    if constexpr (std::is_floating_point_v<T>)
-      r = std::from_chars(current.data() + at, current.data() + current.size(), v);
-    else
-      r = std::from_chars(current.data() + at, current.data() + current.size(), v, base);
-    if (r.ec != std::errc() || (r.ptr < current.data() + current.size() && *r.ptr != ' ' && *r.ptr != '\t'))
-      fail(std::string("expected ") + what);
-    at = size_t(r.ptr - current.data());
+    if (!detail::parse_number(p, l.e, v, base)) fail(std::string("expected ") + what);
     return v;
   }
-  void expect_end(size_t at) {
-    while (at < current.size() && (current[at] == ' ' || current[at] == '\t')) ++at;
-    if (at != current.size()) fail("unexpected text at the end of the line");
+  void expect_end(const char* p) const {
+    if (!detail::at_end(p, l.e)) fail("unexpected text at the end of the line");
   }
 };
 
 SurfaceMap read_text(const std::string& path, const std::vector<char>& data) {
-  TextReader r{path, data.data(), data.data() + data.size(), 0, {}};
+  TextReader r{path, detail::LineReader(data.data(), data.data() + data.size())};
   const std::string first = "# slicereuse map " + num(kFormatVersion);
-  if (!r.next() || r.line != 1 || r.current.substr(0, 16) != "# slicereuse map")
+  if (!r.next() || r.l.number != 1 || r.current().substr(0, 16) != "# slicereuse map")
     throw Error("'" + path + "': not a slicereuse map file: it must start with '" + first + "' (text) or the binary magic");
-  if (r.current != first) r.fail("the first line must be '" + first + "' (other versions are not supported)");
+  if (r.current() != first) r.fail("the first line must be '" + first + "' (other versions are not supported)");
   SurfaceMap m;
   for (const char* key : {"# source ", "# target "}) {
-    if (!r.next() || r.current.substr(0, 9) != key) r.fail(std::string("expected '") + key + "<vertices> <faces> <hash>'");
-    size_t at = 9;
+    if (!r.next() || r.current().substr(0, 9) != key) r.fail(std::string("expected '") + key + "<vertices> <faces> <hash>'");
+    const char* at = r.l.b + 9;
     const bool source = key[2] == 's';
     (source ? m.source_vertices : m.target_vertices) = r.number<uint64_t>(at, "a vertex count");
     Fingerprint& fp = source ? m.source : m.target;
@@ -207,15 +194,15 @@ SurfaceMap read_text(const std::string& path, const std::vector<char>& data) {
   m.bary.resize(3 * m.source_vertices);
   for (uint64_t f = 0; f < m.source.faces; ++f) {
     if (!r.next()) r.fail("the file ends after " + num(f) + " of " + num(m.source.faces) + " face lines (truncated file?)");
-    if (r.current.substr(0, 2) != "f ") r.fail("expected a face line 'f <a> <b> <c>'");
-    size_t at = 2;
+    if (r.current().substr(0, 2) != "f ") r.fail("expected a face line 'f <a> <b> <c>'");
+    const char* at = r.l.b + 2;
     for (int j = 0; j < 3; ++j) m.source_faces[3 * f + j] = r.number<uint32_t>(at, "a vertex index");
     r.expect_end(at);
   }
   for (uint64_t i = 0; i < m.source_vertices; ++i) {
     if (!r.next()) r.fail("the file ends after " + num(i) + " of " + num(m.source_vertices) + " vertex lines (truncated file?)");
-    if (r.current.substr(0, 2) != "v ") r.fail("expected a vertex line 'v <face> <b0> <b1> <b2>'");
-    size_t at = 2;
+    if (r.current().substr(0, 2) != "v ") r.fail("expected a vertex line 'v <face> <b0> <b1> <b2>'");
+    const char* at = r.l.b + 2;
     m.face[i] = r.number<uint32_t>(at, "a target face id");
     for (int j = 0; j < 3; ++j) m.bary[3 * i + j] = r.number<double>(at, "a number");
     r.expect_end(at);
