@@ -1,6 +1,7 @@
 // "Transfer Slicing to Mesh": a source encoding applied to a family member with the same faces,
 // or, through a map file from Cross-Parameterize Meshes, to a member with other faces.
 #include "filters_common.h"
+#include "slicereuse/formats/file_names.h"
 #include "slicereuse/formats/map_files.h"
 #include "slicereuse/formats/slice_files.h"
 #include "slicereuse/transfer/transfer_contours.h"
@@ -10,12 +11,9 @@
 
 namespace slicereuse::plugin {
 // The transfer and print job filters have no format parameter: the output name decides, .srb
-// being binary.
+// (any case) being binary.
 FileFormat format_for_name(const std::string& path) {
-  const std::string ext = ".srb";
-  const bool binary = path.size() >= ext.size() &&
-                      path.compare(path.size() - ext.size(), ext.size(), ext) == 0;
-  return binary ? FileFormat::Binary : FileFormat::Text;
+  return is_binary_file_name(path) ? FileFormat::Binary : FileFormat::Text;
 }
 
 Result run_transfer(const ParamValues& values, Host& host) {

@@ -57,7 +57,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
            direct=False, verify=False, keep_contours=False, details=False):
     """The production pipeline: one .sl1 print job per family member, out/<member stem>.sl1.
 
-    Default: slices source once with encoding (out/<source stem>.encoding.srb), then for each
+    Default: slices source once with encoding (out/<source stem>_enc.srb), then for each
     target loads it and runs make_print_job, which transfers the encoding (kept in memory by
     the plugin across members) and writes the masks, with no contour file in between.
     direct=True: the same outputs from slicing every target directly (the baseline), each
@@ -98,7 +98,9 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
         tick(f"slicing {Path(source).name}")
         ms = pymeshlab.MeshSet()
         _load_mesh(ms, source)
-        encoding = str(out / (Path(source).stem + (".encoding.srb" if binary else ".enc")))
+        # Named as the encoding beside the source's contour file <stem>.srb / .ctr would be
+        # (docs/formats.md, "File names").
+        encoding = str(out / (Path(source).stem + ("_enc.srb" if binary else ".enc")))
         ms.apply_filter("slice_mesh_with_encoding", layer_thickness=layer_thickness,
                         contour_file="", encoding_file=encoding, file_format=int(binary))
         del ms

@@ -54,7 +54,7 @@ def test_reuse_and_direct_write_identical_print_jobs(make_family, tmp_path, shap
     # No contour files in between: the encoding and the .sl1 archives only.
     names = sorted(p.name for p in (tmp_path / "reuse").iterdir())
     stems = [m.stem for m in members[1:]]
-    assert names == sorted([f"{members[0].stem}.encoding.srb"] + [f"{s}.sl1" for s in stems] +
+    assert names == sorted([f"{members[0].stem}_enc.srb"] + [f"{s}.sl1" for s in stems] +
                            [f"{s}.direct.sl1" for s in stems])
     assert sorted(p.name for p in (tmp_path / "direct").iterdir()) == sorted(f"{s}.sl1" for s in stems)
 

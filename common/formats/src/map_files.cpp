@@ -4,7 +4,6 @@
 // (slice_files_binary_layout.h).
 #include "slicereuse/formats/map_files.h"
 
-#include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <cstdio>
@@ -12,6 +11,7 @@
 #include <string_view>
 
 #include "slice_files_binary_layout.h"
+#include "slicereuse/formats/file_names.h"
 #include "slicereuse/util/atomic_file.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/input_file.h"
@@ -41,13 +41,6 @@ uint64_t section_bytes(uint32_t id, uint64_t source_faces, uint64_t source_verti
                                     : 24 * source_vertices;
 }
 std::string num(uint64_t v) { return std::to_string(v); }
-
-bool ends_with_srb(const std::string& path) {
-  if (path.size() < 4) return false;
-  std::string tail = path.substr(path.size() - 4);
-  for (char& c : tail) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return tail == ".srb";
-}
 
 unsigned char* section_data(SurfaceMap& m, uint32_t id) {
   return id == detail::kSourceFaces ? reinterpret_cast<unsigned char*>(m.source_faces.data())
@@ -219,7 +212,7 @@ void write_map_file(const std::string& path, const SurfaceMap& map, const Progre
   } catch (const Error& e) {
     throw Error("cannot write the map file '" + path + "': " + e.what());
   }
-  if (ends_with_srb(path))
+  if (is_binary_file_name(path))
     write_binary(path, map, progress);
   else
     write_text(path, map, progress);
