@@ -1,7 +1,7 @@
 // The contour-walk rule (contour_step.h) against its definition on every arrangement of a face's
 // corners around the plane: exit edge j has corner j below zk and corner j+1 at or above it,
-// entry edge the reverse; the next face's exit edge from the edge it is entered by; and points
-// on an edge, the same bits from both of its faces.
+// entry edge the reverse; the same edges from the lone corner and, entering by the entry edge,
+// from next_exit_edge; and points on an edge, the same bits from both of its faces.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -44,6 +44,13 @@ TEST(ContourStep, SectionEdgesFollowTheDefinitionForEveryArrangement) {
         EXPECT_EQ(got.entry == kNoEdge, got.exit == kNoEdge);
         if (got.exit == kNoEdge) continue;
         ++straddling;
+        // The lone corner's form (the slicer's), from the corner alone on its side.
+        const int n_below = (z0 < kZk) + (z1 < kZk) + (z2 < kZk);
+        const bool lone_below = n_below == 1;
+        uint32_t lone = 0;
+        while ((z[lone] < kZk) != lone_below) ++lone;
+        EXPECT_EQ(entry_edge_of_lone(lone, lone_below), got.entry);
+        EXPECT_EQ(exit_edge_of_lone(lone, lone_below), got.exit);
         // Entered by its entry edge, the face is left by its exit edge.
         EXPECT_EQ(next_exit_edge(V, F, 0, got.entry, kZk), got.exit) << z0 << " " << z1 << " " << z2;
       }

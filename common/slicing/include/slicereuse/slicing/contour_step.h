@@ -16,9 +16,13 @@
 // Points are computed on an edge from its corner below to its corner at or above (edge_point),
 // so an edge gives the same point bit for bit from both faces.
 //
+// section_edges applies the definition to a face met from scratch; the slicer, which knows each
+// face's lone corner per range of planes, uses entry_edge_of_lone / exit_edge_of_lone; walks use
+// next_exit_edge (tests/unit/test_contour_step.cpp checks they agree on every arrangement).
+//
 // Input: the mesh's flat arrays V (3 doubles per vertex) and F (3 corners per face), a face, an
 // edge, zk. Output: edges as local edge numbers, points as EdgePoint. Inline: these run in the
-// slicer's innermost loop.
+// slicer's innermost loop, and in this form they compile to its former instructions.
 #include <cstddef>
 #include <cstdint>
 
@@ -41,11 +45,12 @@ struct SectionEdges {
 };
 inline SectionEdges section_edges(const double* V, const uint32_t* F, uint32_t f, double zk) {
   const bool below[3] = {corner_of(V, F, f, 0)[2] < zk, corner_of(V, F, f, 1)[2] < zk, corner_of(V, F, f, 2)[2] < zk};
-  const int n_below = below[0] + below[1] + below[2];
-  if (n_below == 0 || n_below == 3) return {kNoEdge, kNoEdge};
-  const bool lone_below = n_below == 1;
-  const uint32_t lone = below[0] == lone_below ? 0 : below[1] == lone_below ? 1 : 2;
-  return {entry_edge_of_lone(lone, lone_below), exit_edge_of_lone(lone, lone_below)};
+  SectionEdges e{kNoEdge, kNoEdge};
+  for (uint32_t j = 0; j < 3; ++j) {
+    if (below[j] && !below[(j + 1) % 3]) e.exit = j;
+    if (!below[j] && below[(j + 1) % 3]) e.entry = j;
+  }
+  return e;
 }
 
 // The exit edge of face g entered by its local edge sg: corner sg is at or above zk and corner
