@@ -41,7 +41,7 @@ TEST(TextTokens, ANumberIsAWholeToken) {
   uint64_t h = 0;
   const std::string hex = "00ff";
   p = hex.data();
-  ASSERT_TRUE(parse_number(p, p + hex.size(), h, 16));
+  ASSERT_TRUE(parse_number<16>(p, p + hex.size(), h));
   EXPECT_EQ(h, 255u);
 }
 

@@ -150,10 +150,10 @@ struct TextReader {
     return false;
   }
   std::string_view current() const { return std::string_view(l.b, size_t(l.e - l.b)); }
-  template <class T>
-  T number(const char*& p, const char* what, int base = 10) const {
+  template <class T, int Base = 10>
+  T number(const char*& p, const char* what) const {
     T v{};
-    if (!detail::parse_number(p, l.e, v, base)) fail(std::string("expected ") + what);
+    if (!detail::parse_number<Base>(p, l.e, v)) fail(std::string("expected ") + what);
     return v;
   }
   void expect_end(const char* p) const {
@@ -175,7 +175,7 @@ SurfaceMap read_text(const std::string& path, const std::vector<char>& data) {
     (source ? m.source_vertices : m.target_vertices) = r.number<uint64_t>(at, "a vertex count");
     Fingerprint& fp = source ? m.source : m.target;
     fp.faces = r.number<uint64_t>(at, "a face count");
-    fp.hash = r.number<uint64_t>(at, "a 16-digit hexadecimal hash", 16);
+    fp.hash = r.number<uint64_t, 16>(at, "a 16-digit hexadecimal hash");
     r.expect_end(at);
   }
   // Each face and vertex line takes at least 8 bytes: counts beyond that are corrupt.

@@ -84,7 +84,7 @@ void parse_header_line(const std::string& path, const Line& l, Header& h, Slices
       bad("layers <L> contours <C> points <P>");
   } else if (key == "fingerprint") {
     once(h.has_fingerprint);
-    if (!parse_number(p, e, s.fingerprint.faces) || !parse_number(p, e, s.fingerprint.hash, 16) || !at_end(p, e))
+    if (!parse_number(p, e, s.fingerprint.faces) || !parse_number<16>(p, e, s.fingerprint.hash) || !at_end(p, e))
       bad("fingerprint <faces> <16 hex digits>");
   }
 }

@@ -6,8 +6,9 @@
 //   Blanks separate tokens: space and tab (CLI's parameters run over line ends, so its blanks,
 //   AcrossLines, are also '\r' and '\n').
 //   from_chars_number: a number at p as std::from_chars reads it (decimal or exponent notation
-//   with an optional '-', no '+'; integers in `base`); parse_number: one blank-separated number
-//   token, which must be entirely a number; next_word, at_end: words and the end of a line.
+//   with an optional '-', no '+'; integers in base Base, a constant so that it compiles to the
+//   base's own parser); parse_number: one blank-separated number token, which must be entirely a
+//   number; next_word, at_end: words and the end of a line.
 //   quoted: text for an error message, at most 40 bytes, unprintable bytes shown as '?', so that
 //   garbage cannot flood the message.
 // Inline: the readers parse tens of millions of numbers through these.
@@ -64,23 +65,23 @@ inline const char* skip_blanks(const char* p, const char* e) {
 inline bool at_end(const char* p, const char* e) { return skip_blanks(p, e) == e; }
 
 // On success p moves past the number.
-template <class T>
-inline bool from_chars_number(const char*& p, const char* e, T& v, int base = 10) {
+template <int Base = 10, class T>
+inline bool from_chars_number(const char*& p, const char* e, T& v) {
   std::from_chars_result r;
   if constexpr (std::is_floating_point_v<T>)
     r = std::from_chars(p, e, v);
   else
-    r = std::from_chars(p, e, v, base);
+    r = std::from_chars(p, e, v, Base);
   if (r.ec != std::errc()) return false;
   p = r.ptr;
   return true;
 }
 
 // Blanks, then a number that ends at a blank or at e; on success p moves past it.
-template <class T>
-inline bool parse_number(const char*& p, const char* e, T& v, int base = 10) {
+template <int Base = 10, class T>
+inline bool parse_number(const char*& p, const char* e, T& v) {
   const char* q = skip_blanks(p, e);
-  if (!from_chars_number(q, e, v, base) || (q < e && !is_blank(*q))) return false;
+  if (!from_chars_number<Base>(q, e, v) || (q < e && !is_blank(*q))) return false;
   p = q;
   return true;
 }
