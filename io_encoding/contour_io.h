@@ -5,9 +5,10 @@
 // IO plugin interfaces. Header-only: it needs the generation's vcg mesh type.
 //
 // Open: .ctr / .srb (slicereuse contour file, text or binary) and .cli (Common Layer Interface,
-// ASCII or binary) become a contour layer. Beside a contour file B.ctr or B.srb, the first of
-// B.enc and B_enc.srb that exists is read as its encoding (it must describe the same layers,
-// contours and points) and becomes the per-vertex face and area coordinates.
+// ASCII or binary) become a contour layer. Beside a contour file B.ctr or B.srb, the encoding
+// file of its own format (B.enc / B_enc.srb, encoding_file_beside), else of the other, is read
+// as its encoding (it must describe the same layers, contours and points) and becomes the
+// per-vertex face and area coordinates.
 // Save: .ctr / .srb write the contour file (text / binary) and, when the layer carries an
 // encoding, B.enc / B_enc.srb beside it; .cli writes CLI (ASCII, or binary when the save
 // parameter "binary" is set); .slc writes SLC (open contours are left out and counted).
