@@ -36,17 +36,18 @@ def main():
     ap.add_argument("--verify", action="store_true",
                     help="also slice each member directly and compare the masks (min_similarity)")
     ap.add_argument("--keep-contours", action="store_true", help="also write each member's contour file")
-    ap.add_argument("--width", type=int, default=1024, help="mask width in pixels (1024)")
-    ap.add_argument("--height", type=int, default=768, help="mask height in pixels (768)")
-    ap.add_argument("--pixel-um", type=float, default=75, help="pixel size in micrometres (75)")
+    ap.add_argument("--width", type=int, help="mask width in pixels (default: make_print_job's)")
+    ap.add_argument("--height", type=int, help="mask height in pixels (default: make_print_job's)")
+    ap.add_argument("--pixel-um", type=float, help="pixel size in micrometres (default: make_print_job's)")
     ap.add_argument("--text", action="store_true",
                     help="write text .enc/.ctr instead of binary .srb (encoding, kept contours)")
     ap.add_argument("meshes", nargs="+", metavar="MESH", help="the sliced mesh, then its family members")
     args = ap.parse_args()
     if args.layer_thickness <= 0:
         ap.error("--layer-thickness must be greater than 0")
-    profile = {"width_px": args.width, "height_px": args.height,
-               "pixel_size_x_um": args.pixel_um, "pixel_size_y_um": args.pixel_um}
+    given = {"width_px": args.width, "height_px": args.height,
+             "pixel_size_x_um": args.pixel_um, "pixel_size_y_um": args.pixel_um}
+    profile = {k: v for k, v in given.items() if v is not None}
     try:
         sr.load()
         result = sr.family(args.meshes[0], args.meshes[1:], args.layer_thickness, args.out,

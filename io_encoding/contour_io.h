@@ -5,9 +5,10 @@
 // IO plugin interfaces. Header-only: it needs the generation's vcg mesh type.
 //
 // Open: .ctr / .srb (slicereuse contour file, text or binary) and .cli (Common Layer Interface,
-// ASCII or binary) become a contour layer. Beside a contour file B.ctr or B.srb, the first of
-// B.enc and B_enc.srb that exists is read as its encoding (it must describe the same layers,
-// contours and points) and becomes the per-vertex face and area coordinates.
+// ASCII or binary) become a contour layer. Beside a contour file B.ctr or B.srb, the encoding
+// file of its own format (B.enc / B_enc.srb, encoding_file_beside), else of the other, is read
+// as its encoding (it must describe the same layers, contours and points) and becomes the
+// per-vertex face and area coordinates.
 // Save: .ctr / .srb write the contour file (text / binary) and, when the layer carries an
 // encoding, B.enc / B_enc.srb beside it, staged together (both appear or neither); .cli writes
 // CLI (ASCII, or binary when the save parameter "binary" is set); .slc writes SLC (open contours
@@ -21,6 +22,7 @@
 
 #include "contour_layer.h"
 #include "slicereuse/formats/cli_file.h"
+#include "slicereuse/formats/file_names.h"
 #include "slicereuse/formats/slc_file.h"
 #include "slicereuse/formats/slice_files.h"
 #include "slicereuse/util/atomic_file.h"
@@ -52,23 +54,17 @@ inline std::string upper(std::string s) {
   return s;
 }
 
-// path without its extension (the last dot after the last slash).
-inline std::string base_of(const std::string& path) {
-  const size_t dot = path.find_last_of('.'), slash = path.find_last_of('/');
-  return dot == std::string::npos || (slash != std::string::npos && dot < slash) ? path : path.substr(0, dot);
-}
-
 inline bool is_file(const std::string& path) {
   struct stat st;
   return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
 }
 
 // The encoding file that belongs to the contour file at path, or "" if there is none: B.enc or
-// B_enc.srb, the one that saving as this extension writes (B.enc for .ctr, B_enc.srb for .srb)
-// first.
-inline std::string encoding_beside(const std::string& path, bool binary) {
-  const std::string text = base_of(path) + ".enc", bin = base_of(path) + "_enc.srb";
-  for (const std::string& candidate : binary ? std::vector<std::string>{bin, text} : std::vector<std::string>{text, bin})
+// B_enc.srb (encoding_file_beside), the one that saving in this format writes (B.enc for .ctr,
+// B_enc.srb for .srb) first.
+inline std::string encoding_beside(const std::string& path, FileFormat format) {
+  const FileFormat other = format == FileFormat::Binary ? FileFormat::Text : FileFormat::Binary;
+  for (const std::string& candidate : {encoding_file_beside(path, format), encoding_file_beside(path, other)})
     if (candidate != path && is_file(candidate)) return candidate;
   return "";
 }
@@ -96,7 +92,7 @@ std::string open_contour_file(const std::string& format, const std::string& path
     s = read_cli_file(path, progress);
   } else if (ext == "CTR" || ext == "SRB") {
     s = read_contour_file(path, progress);
-    encoding = encoding_beside(path, ext == "SRB");
+    encoding = encoding_beside(path, ext == "SRB" ? FileFormat::Binary : FileFormat::Text);
     if (!encoding.empty()) attach_encoding(s, read_encoding_file(encoding), encoding);
   } else {
     throw Error("io_encoding cannot open ." + format + " files");
@@ -121,8 +117,7 @@ std::string save_contour_layer(const std::string& format, const std::string& pat
     // Both names are reserved first, so a target that cannot be written stops the save early.
     StagedOutputs outputs;
     const std::string contours = outputs.file(path);
-    const std::string encoding =
-        s.has_encoding() ? base_of(path) + (f == FileFormat::Binary ? "_enc.srb" : ".enc") : "";
+    const std::string encoding = s.has_encoding() ? encoding_file_beside(path, f) : "";
     const std::string encoding_staged = encoding.empty() ? "" : outputs.file(encoding);
     write_contour_file(contours, s, f, progress);
     if (!encoding.empty()) {

@@ -46,9 +46,6 @@ def load(plugin=None):
     return pymeshlab
 
 
-DEFAULT_PROFILE = {"width_px": 1024, "height_px": 768, "pixel_size_x_um": 75.0, "pixel_size_y_um": 75.0}
-
-
 def _load_mesh(ms, path):
     ms.load_new_mesh(str(path))
     return ms.current_mesh_id()
@@ -58,7 +55,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
            direct=False, verify=False, keep_contours=False, details=False):
     """The production pipeline: one .sl1 print job per family member, out/<member stem>.sl1.
 
-    Default: slices source once with encoding (out/<source stem>.encoding.srb), then for each
+    Default: slices source once with encoding (out/<source stem>_enc.srb), then for each
     target loads it and runs make_print_job, which transfers the encoding (kept in memory by
     the plugin across members) and writes the masks, with no contour file in between.
     direct=True: the same outputs from slicing every target directly (the baseline), each
@@ -82,7 +79,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     if repeated:
         raise ValueError(f"members with the same file name would write the same output: {sorted(repeated)}")
     pymeshlab = load()
-    profile = dict(DEFAULT_PROFILE, **(profile or {}))
+    profile = profile or {}  # make_print_job's display parameters; the filter's defaults for the others
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     steps, step = 1 + len(targets) * (2 if verify else 1), 0
@@ -99,13 +96,14 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
         tick(f"slicing {Path(source).name}")
         ms = pymeshlab.MeshSet()
         _load_mesh(ms, source)
-        encoding = str(out / (Path(source).stem + (".encoding.srb" if binary else ".enc")))
+        # Named as the encoding beside the source's contour file <stem>.srb / .ctr would be
+        # (docs/formats.md, "File names").
+        encoding = str(out / (Path(source).stem + ("_enc.srb" if binary else ".enc")))
         ms.apply_filter("slice_mesh_with_encoding", layer_thickness=layer_thickness,
                         contour_file="", encoding_file=encoding, file_format=int(binary))
         del ms
     else:
         tick("slicing every member directly")
-    lowest_vertex = -1e30  # make_print_job's z_start for "the mesh's lowest vertex"
 
     results = []
     for target, stem in zip(targets, stems):
@@ -116,8 +114,9 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
         _load_mesh(ms, target)
         output = out / f"{stem}.sl1"
         contours = str(out / (stem + (".srb" if binary else ".ctr"))) if keep_contours else ""
+        # z_start is left at the filter's default: the mesh's lowest vertex.
         r = ms.apply_filter("make_print_job", encoding_file=encoding, layer_thickness=layer_thickness,
-                            z_start=lowest_vertex, contour_file=contours, output_path=str(output), **profile)
+                            contour_file=contours, output_path=str(output), **profile)
         entry = {"mesh": str(target), "layers": r["layers"], "points": r["points"],
                  "resliced_layers": r["resliced_layers"], "seconds": time.perf_counter() - t0,
                  "output": str(output)}
@@ -128,8 +127,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
             tick(f"{name}: verifying against direct slicing")
             check = out / f"{stem}.direct.sl1"
             ms.apply_filter("make_print_job", encoding_file="", layer_thickness=layer_thickness,
-                            z_start=lowest_vertex, contour_file="", output_path=str(check),
-                            **profile)
+                            contour_file="", output_path=str(check), **profile)
             c = ms.apply_filter("compare_mask_stacks", stack_a=str(output), stack_b=str(check),
                                 report_file="")
             entry["min_similarity"] = c["min_similarity"]

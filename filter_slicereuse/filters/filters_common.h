@@ -39,10 +39,8 @@ void add_display_figures(const MaskExportStats& stats, Result& result);
 // What an empty output_path of the mask filters is told.
 inline const char* const kMaskOutputWhenEmpty = "choose a folder or a .sl1 file";
 
-// z_start's default, and the values that mean the mesh's lowest vertex: at or below
-// kZStartLowestVertexBelow (a spec default can be neither NaN nor depend on the mesh).
-constexpr double kZStartLowestVertex = -1e30;
-constexpr double kZStartLowestVertexBelow = -1e29;
+// The slicing options of the layer_thickness and z_start parameters (z_start_option: at or
+// below kLowestVertexZStartAtOrBelow, the mesh's lowest vertex).
 SliceOptions slice_options(double layer_thickness, double z_start);
 
 // The plugin's one cached encoding (Make Print Job; Free Cached Memory frees it).

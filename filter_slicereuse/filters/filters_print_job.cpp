@@ -29,7 +29,7 @@ ParamList<PrintJobParams> print_job_params() {
       .number(&PrintJobParams::layer_thickness, "layer_thickness", "Layer thickness (mm)", 0.1, Range::above(0, "mm"),
               "Used when slicing directly (no encoding file): distance between slicing planes, in mm. With an "
               "encoding file, the encoding's layers are used.")
-      .number(&PrintJobParams::z_start, "z_start", "Start height (mm)", kZStartLowestVertex, Range::any(),
+      .number(&PrintJobParams::z_start, "z_start", "Start height (mm)", kLowestVertexZStart, Range::any(),
               "Used when slicing directly: bottom of the first layer, in mm; at or below -1e29 (the default): the "
               "lowest vertex of the mesh.")
       .file(&PrintJobParams::contour_file, ParamType::FileSave, "contour_file", "Contour file", "*.ctr *.srb", nullptr,

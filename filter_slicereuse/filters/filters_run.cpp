@@ -1,7 +1,6 @@
 // The list of filters and the helpers the filter implementations share (filters_common.h).
 #include <cstdio>
 #include <filesystem>
-#include <limits>
 
 #include "filters_common.h"
 #include "slicereuse/util/atomic_file.h"
@@ -30,7 +29,7 @@ const char* const kReference =
 SliceOptions slice_options(double layer_thickness, double z_start) {
   SliceOptions options;
   options.thickness = layer_thickness;
-  options.z_start = z_start <= kZStartLowestVertexBelow ? std::numeric_limits<double>::quiet_NaN() : z_start;
+  options.z_start = z_start_option(z_start);
   return options;
 }
 

@@ -1,8 +1,5 @@
 // "Slice Mesh with Encoding": slice_layers on the current mesh, then the contour and encoding
 // files (written together or not at all) and an optional preview layer.
-#include <cmath>
-#include <limits>
-
 #include "filter_params.h"
 #include "filters_common.h"
 #include "slicereuse/formats/slice_files.h"
@@ -27,7 +24,7 @@ ParamList<SliceParams> slice_params() {
   ParamList<SliceParams> l;
   l.number(&SliceParams::layer_thickness, "layer_thickness", "Layer thickness (mm)", 0.1, Range::above(0, "mm"),
            "Distance between consecutive slicing planes, in mm; must be greater than 0.")
-      .number(&SliceParams::z_start, "z_start", "Start height (mm)", kZStartLowestVertex, Range::any(),
+      .number(&SliceParams::z_start, "z_start", "Start height (mm)", kLowestVertexZStart, Range::any(),
               "Height of the bottom of the first layer, in mm. Any value at or below -1e29 (the default, -1e30) "
               "means: the lowest vertex of the mesh.")
       .file(&SliceParams::contour_file, ParamType::FileSave, "contour_file", "Contour file", "*.ctr *.srb", nullptr,

@@ -3,6 +3,7 @@
 #include "filter_params.h"
 #include "filters_common.h"
 #include "slicereuse/crossparam/surface_map.h"
+#include "slicereuse/formats/file_names.h"
 #include "slicereuse/formats/map_files.h"
 #include "slicereuse/formats/slice_files.h"
 #include "slicereuse/transfer/transfer_contours.h"
@@ -12,12 +13,9 @@
 
 namespace slicereuse::plugin {
 // The transfer and print job filters have no format parameter: the output name decides, .srb
-// being binary.
+// (in any case) being binary.
 FileFormat format_for_name(const std::string& path) {
-  const std::string ext = ".srb";
-  const bool binary = path.size() >= ext.size() &&
-                      path.compare(path.size() - ext.size(), ext.size(), ext) == 0;
-  return binary ? FileFormat::Binary : FileFormat::Text;
+  return is_binary_file_name(path) ? FileFormat::Binary : FileFormat::Text;
 }
 
 namespace {

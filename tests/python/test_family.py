@@ -54,7 +54,7 @@ def test_reuse_and_direct_write_identical_print_jobs(make_family, tmp_path, shap
     # No contour files in between: the encoding and the .sl1 archives only.
     names = sorted(p.name for p in (tmp_path / "reuse").iterdir())
     stems = [m.stem for m in members[1:]]
-    assert names == sorted([f"{members[0].stem}.encoding.srb"] + [f"{s}.sl1" for s in stems] +
+    assert names == sorted([f"{members[0].stem}_enc.srb"] + [f"{s}.sl1" for s in stems] +
                            [f"{s}.direct.sl1" for s in stems])
     assert sorted(p.name for p in (tmp_path / "direct").iterdir()) == sorted(f"{s}.sl1" for s in stems)
 
@@ -123,14 +123,15 @@ def test_members_with_the_same_file_name_are_refused(make_family, tmp_path):
 
 def test_print_job_reads_the_encoding_once(pymeshlab, make_family, tmp_path):
     """make_print_job keeps the last encoding in memory: read for the first member, reused for
-    the next, read again when the file is rewritten or another file is named."""
+    the next and when the same bytes are written again, read again when the file is rewritten
+    with another content or another file is named."""
     members = make_family("arch", 4)
     encoding = tmp_path / "source.srb"
 
-    def slice_source():
+    def slice_source(thickness=THICKNESS):
         ms = pymeshlab.MeshSet()
         ms.load_new_mesh(str(members[0]))
-        ms.apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS, contour_file="",
+        ms.apply_filter("slice_mesh_with_encoding", layer_thickness=thickness, contour_file="",
                         encoding_file=str(encoding), file_format=1)
 
     def job(member, enc=encoding):
@@ -143,8 +144,11 @@ def test_print_job_reads_the_encoding_once(pymeshlab, make_family, tmp_path):
     first, second = job(members[1]), job(members[2])
     assert (first["encoding_cached"], second["encoding_cached"]) == (0, 1)
     assert first["transferred_layers"] == second["transferred_layers"] == 80
-    slice_source()  # a new file under the same name
-    assert job(members[3])["encoding_cached"] == 0
+    slice_source()  # the same bytes written again
+    assert job(members[3])["encoding_cached"] == 1
+    slice_source(2 * THICKNESS)  # another encoding under the same name
+    rewritten = job(members[3])
+    assert rewritten["encoding_cached"] == 0 and rewritten["transferred_layers"] == 40
     encoding.rename(tmp_path / "moved.srb")
     assert job(members[1], tmp_path / "moved.srb")["encoding_cached"] == 0
 

@@ -12,6 +12,7 @@
 #include "error_of.h"
 #include "family.h"
 #include "slicereuse/formats/map_files.h"
+#include "slicereuse/formats/slice_files.h"
 #include "slicereuse/mesh/fingerprint.h"
 #include "slicereuse/util/error.h"
 #include "test_files.h"
@@ -160,4 +161,18 @@ TEST_F(MapFiles, WrongFingerprintsAreRejected) {
   EXPECT_ERROR(check_map_target(map, test::make_family_base(o)), "is not the map's target");
   // An empty file is no map file.
   EXPECT_ERROR((spit(path("e.srb"), ""), read_map_file(path("e.srb"))), "not a slicereuse map file");
+}
+
+TEST_F(MapFiles, SliceAndMapFilesAreToldApartByTheirKind) {
+  write_map_file(path("m.srb"), sample_map());
+  EXPECT_ERROR(read_contour_file(path("m.srb")), "this is a map file, expected a contour file");
+  Slices s;
+  s.thickness = 1;
+  s.layer_z = {0.5};
+  s.layer_begin = {0, 1};
+  s.contour_begin = {0, 1};
+  s.contour_open = {0};
+  s.xyz = {0, 0, 0.5};
+  write_contour_file(path("c.srb"), s, FileFormat::Binary);
+  EXPECT_ERROR(read_map_file(path("c.srb")), "this is a contour file, expected a map file");
 }

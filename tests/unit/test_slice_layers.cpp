@@ -277,3 +277,15 @@ TEST(SliceLayers, CancelledRunThrows) {
   o.thickness = 0.001;
   EXPECT_THROW(slice_layers(m, o, [](double, const char*) { return false; }), Cancelled);
 }
+
+TEST(SliceLayers, LowestVertexZStartMeansNaN) {
+  EXPECT_TRUE(std::isnan(z_start_option(kLowestVertexZStart)));
+  EXPECT_TRUE(std::isnan(z_start_option(kLowestVertexZStartAtOrBelow)));
+  EXPECT_EQ(z_start_option(-1e28), -1e28);
+  EXPECT_EQ(z_start_option(0.25), 0.25);
+  // The default slices from the lowest vertex, as a NaN z_start does.
+  const Mesh box = test::make_box(0, 0, 0.3, 1, 1, 1.3);
+  SliceOptions o;
+  o.z_start = z_start_option(kLowestVertexZStart);
+  EXPECT_EQ(slice_layers(box, o).z_start, 0.3);
+}

@@ -182,9 +182,6 @@ CrossParamResult cross_parameterize(const Mesh& source, const Mesh& target, cons
   CrossParamResult result;
   CrossParamQuality& q = result.quality;
   const bool in_plane = options.in_plane;
-  auto scaled = [&](double from, double to) -> Progress {
-    return [&progress, from, to](double f, const char* phase) { return !progress || progress(from + (to - from) * f, phase); };
-  };
   report_progress(progress, 0, "checking");
   check_topology(source, target, q);
   if (options.source_landmarks.size() != options.target_landmarks.size())
@@ -218,7 +215,7 @@ CrossParamResult cross_parameterize(const Mesh& source, const Mesh& target, cons
 
   RegistrationStats reg;
   const DisplacementField field =
-      register_on_lattice(aligned, source.F, grid, constraints, in_plane, &reg, scaled(0.1, 0.7));
+      register_on_lattice(aligned, source.F, grid, constraints, in_plane, &reg, sub_progress(progress, 0.1, 0.7));
   report_progress(progress, 0.7, "projecting");
   std::vector<double> moved(3 * nv);
 #pragma omp parallel for schedule(static)

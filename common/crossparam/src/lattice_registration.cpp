@@ -201,8 +201,9 @@ DisplacementField register_on_lattice(const std::vector<double>& V, const std::v
   }
   constexpr int T = DisplacementField::kPolyTerms;
   const int U = C * T;
+  const Progress polynomial_stage = sub_progress(progress, 0, 0.3), lattice_stage = sub_progress(progress, 0.3, 1);
   for (int it = 0; it < kPolyIterations; ++it) {
-    report_progress(progress, 0.3 * it / kPolyIterations, "registering");
+    report_progress(polynomial_stage, double(it) / kPolyIterations, "registering");
 #pragma omp parallel for schedule(static)
     for (long long i = 0; i < (long long)nv; ++i) field.apply(&V[3 * i], &P[3 * i]);
     const std::vector<double> normal = vertex_normals(P, F);
@@ -279,7 +280,7 @@ DisplacementField register_on_lattice(const std::vector<double>& V, const std::v
     if (solver.info() != Eigen::Success)
       throw Error("cross-parameterization: the registration system could not be factorized");
     for (int it = 0; it < per_level; ++it, ++iteration) {
-      report_progress(progress, 0.3 + 0.7 * iteration / total_iterations, "registering");
+      report_progress(lattice_stage, double(iteration) / total_iterations, "registering");
 #pragma omp parallel for schedule(static)
       for (long long i = 0; i < (long long)nv; ++i) field.apply(&V[3 * i], &P[3 * i]);
       const std::vector<double> normal = vertex_normals(P, F);

@@ -18,6 +18,7 @@
 #include "slicereuse/util/buffer.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/input_file.h"
+#include "text_tokens.h"
 
 namespace slicereuse {
 namespace {
@@ -67,31 +68,24 @@ class Reader {
   uint64_t line_ = 1;
 };
 
-inline bool blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
-const char* skip_blank(const char* p, const char* e) {
-  while (p < e && blank(*p)) ++p;
-  return p;
-}
+// A command's parameters run to the next "$$", over line ends: blanks are also '\r' and '\n'.
+constexpr bool kAcrossLines = true;
+using detail::is_blank;
+using detail::skip_blanks;
 
-// The text at p for messages, shortened so that garbage cannot flood the message.
+// The text at p, to the end of its line, for messages.
 std::string quote(const char* p, const char* e) {
-  const char* q = p;
-  while (q < e && q - p < 40 && *q != '\n' && *q != '\r') ++q;
-  std::string s(p, q);
-  for (char& c : s)
-    if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126) c = '?';
-  return "'" + s + "'";
+  return detail::quoted(p, e, [](char c) { return c == '\n' || c == '\r'; });
 }
 
 // One comma-separated field of an ASCII command: blanks, an optional '+', the number, blanks,
 // then a comma or the end of the parameters.
 template <class T>
 bool field(const char*& p, const char* e, T& v) {
-  p = skip_blank(p, e);
+  p = skip_blanks<kAcrossLines>(p, e);
   if (p < e && *p == '+') ++p;
-  const auto r = std::from_chars(p, e, v);
-  if (r.ec != std::errc()) return false;
-  p = skip_blank(r.ptr, e);
+  if (!detail::from_chars_number(p, e, v)) return false;
+  p = skip_blanks<kAcrossLines>(p, e);
   if (p < e) {
     if (*p != ',') return false;
     ++p;
@@ -122,7 +116,7 @@ struct Header {
 
 Header parse_header(Reader& r, const char* b, const char* e) {
   Header h;
-  const char* p = skip_blank(b, e);
+  const char* p = skip_blanks<kAcrossLines>(b, e);
   if (size_t(e - p) < kHeaderStart.size() || std::string_view(p, kHeaderStart.size()) != kHeaderStart)
     r.fail("not a CLI file: it does not start with $$HEADERSTART");
   const char* end = find(p, e, kHeaderEnd);
@@ -132,14 +126,14 @@ Header parse_header(Reader& r, const char* b, const char* e) {
   while ((p = next_command(p, end)) < end) {
     const char* name = p + 2;
     const char* q = name;
-    while (q < end && *q != '/' && !blank(*q) && *q != '$') ++q;
+    while (q < end && *q != '/' && !is_blank<kAcrossLines>(*q) && *q != '$') ++q;
     const std::string_view cmd(name, size_t(q - name));
     const char* params = q < end && *q == '/' ? q + 1 : q;
     const char* params_end = next_command(params, end);
     const Where at = r.line_at(p);
     auto number = [&](auto& v, const char* form) {
       const char* s = params;
-      if (!field(s, params_end, v) || skip_blank(s, params_end) != params_end)
+      if (!field(s, params_end, v) || skip_blanks<kAcrossLines>(s, params_end) != params_end)
         r.fail(at, "expected " + std::string(form) + ", found " + quote(p, end));
     };
     if (cmd == "ASCII") {
@@ -230,20 +224,20 @@ struct Sink {
 };
 
 void walk_ascii(Reader& r, const char* b, const char* e, Sink& sink, const Progress& progress) {
-  const char* p = skip_blank(b, e);
+  const char* p = skip_blanks<kAcrossLines>(b, e);
   constexpr std::string_view start = "$$GEOMETRYSTART";
   if (size_t(e - p) < start.size() || std::string_view(p, start.size()) != start)
     r.fail(r.line_at(p), "expected $$GEOMETRYSTART after the header, found " + quote(p, e));
   p += start.size();
   uint64_t next_report = 64 << 20;
   for (;;) {
-    p = skip_blank(p, e);
+    p = skip_blanks<kAcrossLines>(p, e);
     if (p == e) r.fail("the file ends before $$GEOMETRYEND: it is truncated");
     const Where at = r.line_at(p);
     if (e - p < 2 || p[0] != '$' || p[1] != '$') r.fail(at, "unexpected text " + quote(p, e));
     const char* name = p + 2;
     const char* q = name;
-    while (q < e && *q != '/' && !blank(*q) && *q != '$') ++q;
+    while (q < e && *q != '/' && !is_blank<kAcrossLines>(*q) && *q != '$') ++q;
     const std::string_view cmd(name, size_t(q - name));
     const char* params = q < e && *q == '/' ? q + 1 : q;
     const char* params_end = next_command(params, e);
@@ -261,14 +255,15 @@ void walk_ascii(Reader& r, const char* b, const char* e, Sink& sink, const Progr
       // Every point takes two fields: count the commas before trusting n.
       uint64_t commas = 0;
       for (const char* c = f; c < params_end; ++c) commas += *c == ',';
-      const uint64_t fields = skip_blank(f, params_end) == params_end ? 0 : commas + 1;
+      const uint64_t fields = skip_blanks<kAcrossLines>(f, params_end) == params_end ? 0 : commas + 1;
       if (n < 0 || fields != 2 * uint64_t(n))
         r.fail(at, "$$POLYLINE says " + std::to_string(n) + " points but carries " +
                        std::to_string(fields) + " coordinates");
       sink.polyline(at, dir, n, [&](double& x, double& y) {
         const char* c = f;
         if (!field(f, params_end, x) || !field(f, params_end, y))
-          r.fail(at, "a polyline coordinate is not a number: " + quote(skip_blank(c, params_end), params_end));
+          r.fail(at, "a polyline coordinate is not a number: " +
+                         quote(skip_blanks<kAcrossLines>(c, params_end), params_end));
       });
     } else if (cmd == "HATCHES") {
       // Infill, not contours: skipped.

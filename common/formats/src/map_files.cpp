@@ -1,147 +1,92 @@
 // Map files, text (.map) and binary (.srb kind 3); see docs/formats.md. The binary form shares
 // the slice files' container: magic, version, section table with XXH3 checksums, 8-byte
-// aligned sections (slice_files_detail.h).
+// aligned sections, written and read with its checks by write_container and ContainerReader
+// (slice_files_binary_layout.h).
 #include "slicereuse/formats/map_files.h"
 
-#include <sys/stat.h>
-#include <xxhash.h>
-
-#include <algorithm>
-#include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <cstdio>
 #include <cstring>
-#include <memory>
 #include <string_view>
 
 #include "slice_files_binary_layout.h"
+#include "slicereuse/formats/file_names.h"
 #include "slicereuse/util/atomic_file.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/input_file.h"
+#include "text_tokens.h"
 
 namespace slicereuse {
 namespace {
 
-using detail::align8;
 using detail::kBinaryMagic;
-using detail::kFixedHeaderBytes;
 using detail::kFormatVersion;
-using detail::kSectionEntryBytes;
 
-constexpr uint32_t kMapKind = 3;
-enum : uint32_t { kSourceFaces = 9, kMapFace = 10, kMapBary = 11 };
-constexpr uint32_t kSectionIds[3] = {kSourceFaces, kMapFace, kMapBary};
-const char* section_name(uint32_t id) {
-  return id == kSourceFaces ? "source_faces" : id == kMapFace ? "face" : "bary";
-}
+// The map's own header fields (docs/formats.md, "Map files"), byte offsets in the container's
+// fixed header.
+enum MapField : size_t {
+  kSourceVerticesAt = 16,     // uint64
+  kTargetVerticesAt = 24,     // uint64
+  kSourceFacesAt = 32,        // uint64, source fingerprint
+  kSourceHashAt = 40,         // uint64
+  kTargetFacesAt = 48,        // uint64, target fingerprint
+  kTargetHashAt = 56,         // uint64
+  kMapReservedAt = 64,        // uint64, 0
+};
+const std::vector<uint32_t> kSectionIds = {detail::kSourceFaces, detail::kMapFace, detail::kMapBary};
 uint64_t section_bytes(uint32_t id, uint64_t source_faces, uint64_t source_vertices) {
-  return id == kSourceFaces ? 12 * source_faces : id == kMapFace ? 4 * source_vertices : 24 * source_vertices;
+  return id == detail::kSourceFaces ? 12 * source_faces
+         : id == detail::kMapFace   ? 4 * source_vertices
+                                    : 24 * source_vertices;
 }
 std::string num(uint64_t v) { return std::to_string(v); }
 
-template <class T>
-void put(std::vector<unsigned char>& h, size_t at, T v) {
-  std::memcpy(h.data() + at, &v, sizeof v);
+unsigned char* section_data(SurfaceMap& m, uint32_t id) {
+  return id == detail::kSourceFaces ? reinterpret_cast<unsigned char*>(m.source_faces.data())
+         : id == detail::kMapFace   ? reinterpret_cast<unsigned char*>(m.face.data())
+                                    : reinterpret_cast<unsigned char*>(m.bary.data());
 }
-template <class T>
-T get(const unsigned char* h, size_t at) {
-  T v;
-  std::memcpy(&v, h + at, sizeof v);
-  return v;
-}
-
-bool ends_with_srb(const std::string& path) {
-  if (path.size() < 4) return false;
-  std::string tail = path.substr(path.size() - 4);
-  for (char& c : tail) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return tail == ".srb";
-}
-
-const void* section_data(const SurfaceMap& m, uint32_t id) {
-  return id == kSourceFaces ? static_cast<const void*>(m.source_faces.data())
-         : id == kMapFace   ? static_cast<const void*>(m.face.data())
-                            : static_cast<const void*>(m.bary.data());
+const unsigned char* section_data(const SurfaceMap& m, uint32_t id) {
+  return section_data(const_cast<SurfaceMap&>(m), id);
 }
 
 void write_binary(const std::string& path, const SurfaceMap& m, const Progress& progress) {
-  std::vector<unsigned char> fields(detail::kKindFieldBytes, 0);  // header bytes 16..72
-  put<uint64_t>(fields, 0, m.source_vertices);
-  put<uint64_t>(fields, 8, m.target_vertices);
-  put<uint64_t>(fields, 16, m.source.faces);
-  put<uint64_t>(fields, 24, m.source.hash);
-  put<uint64_t>(fields, 32, m.target.faces);
-  put<uint64_t>(fields, 40, m.target.hash);
+  unsigned char fields[detail::kKindFieldBytes] = {};
+  unsigned char* f = fields - detail::kThicknessAt;  // header offsets index into fields
+  detail::put<uint64_t>(f + kSourceVerticesAt, m.source_vertices);
+  detail::put<uint64_t>(f + kTargetVerticesAt, m.target_vertices);
+  detail::put<uint64_t>(f + kSourceFacesAt, m.source.faces);
+  detail::put<uint64_t>(f + kSourceHashAt, m.source.hash);
+  detail::put<uint64_t>(f + kTargetFacesAt, m.target.faces);
+  detail::put<uint64_t>(f + kTargetHashAt, m.target.hash);
   std::vector<detail::SectionOut> sections;
-  for (uint32_t id : kSectionIds) sections.push_back({id, section_data(m, id), section_bytes(id, m.source.faces, m.source_vertices)});
-  detail::write_container(path, kMapKind, fields.data(), sections, progress);
+  for (uint32_t id : kSectionIds)
+    sections.push_back({id, section_data(m, id), section_bytes(id, m.source.faces, m.source_vertices)});
+  detail::write_container(path, detail::kMapFileKind, fields, sections, progress);
 }
 
-SurfaceMap read_binary(const std::string& path, FILE* f, uint64_t size) {
-  auto fail = [&](const std::string& what) { throw Error("'" + path + "': " + what); };
-  auto read = [&](void* dst, uint64_t n, const std::string& what) {
-    if (n && std::fread(dst, 1, n, f) != n)
-      fail("cannot read " + what + ": " + (std::ferror(f) ? std::strerror(errno) : "unexpected end of file"));
-  };
-  const uint64_t header_bytes = kFixedHeaderBytes + kSectionEntryBytes * 3 + 8;
-  if (size < header_bytes)
-    fail("truncated file: " + num(size) + " bytes, the map header and section table take " + num(header_bytes));
-  std::vector<unsigned char> head(header_bytes);
-  read(head.data(), header_bytes, "the header");
-  const uint32_t version = get<uint32_t>(head.data(), 8), kind = get<uint32_t>(head.data(), 12);
-  if (version != kFormatVersion)
-    fail("format version " + num(version) + " is not supported (this build reads version " + num(kFormatVersion) + ")");
-  if (kind != kMapKind)
-    fail(kind == 1 || kind == 2 ? "this is a slice file (" + std::string(kind == 1 ? "contours" : "encoding") +
-                                      "), expected a map file"
-                                : "unknown file kind " + num(kind) + " (3 = map)");
-  if (get<uint32_t>(head.data(), 72) != 3) fail("the header lists " + num(get<uint32_t>(head.data(), 72)) + " sections, a map file has 3");
-  const size_t table_end = header_bytes - 8;
-  if (XXH3_64bits(head.data(), table_end) != get<uint64_t>(head.data(), table_end))
-    fail("header checksum mismatch: the header or section table is corrupted");
-  if (get<uint32_t>(head.data(), 76) != 0 || get<uint64_t>(head.data(), 64) != 0) fail("reserved header field is not 0");
+SurfaceMap read_binary(const std::string& path, FILE* f, uint64_t size, const Progress& progress) {
+  detail::ContainerReader c(path, f, size, detail::kMapFileKind, kSectionIds);
+  if (c.field<uint64_t>(kMapReservedAt) != 0) c.fail("reserved header field is not 0");
   SurfaceMap m;
-  m.source_vertices = get<uint64_t>(head.data(), 16);
-  m.target_vertices = get<uint64_t>(head.data(), 24);
-  m.source = {get<uint64_t>(head.data(), 32), get<uint64_t>(head.data(), 40)};
-  m.target = {get<uint64_t>(head.data(), 48), get<uint64_t>(head.data(), 56)};
+  m.source_vertices = c.field<uint64_t>(kSourceVerticesAt);
+  m.target_vertices = c.field<uint64_t>(kTargetVerticesAt);
+  m.source = {c.field<uint64_t>(kSourceFacesAt), c.field<uint64_t>(kSourceHashAt)};
+  m.target = {c.field<uint64_t>(kTargetFacesAt), c.field<uint64_t>(kTargetHashAt)};
   // Every source face and vertex takes bytes of the file: no allocation beyond its size.
   if (m.source.faces >= size || m.source_vertices >= size)
-    fail("the header claims " + num(m.source.faces) + " source faces and " + num(m.source_vertices) +
-         " source vertices, more than the file's " + num(size) + " bytes can hold");
-  uint64_t end = header_bytes, offsets[3];
-  for (int i = 0; i < 3; ++i) {
-    const unsigned char* e = head.data() + kFixedHeaderBytes + kSectionEntryBytes * i;
-    const std::string name = "section " + num(i) + " (" + section_name(kSectionIds[i]) + ")";
-    if (get<uint32_t>(e, 0) != kSectionIds[i] || get<uint32_t>(e, 4) != 0)
-      fail(name + " has id " + num(get<uint32_t>(e, 0)) + ", expected " + num(kSectionIds[i]));
-    offsets[i] = get<uint64_t>(e, 8);
-    const uint64_t bytes = get<uint64_t>(e, 16), expected = section_bytes(kSectionIds[i], m.source.faces, m.source_vertices);
-    if (offsets[i] != align8(end)) fail(name + " starts at byte " + num(offsets[i]) + ", expected " + num(align8(end)));
-    if (bytes != expected) fail(name + " has " + num(bytes) + " bytes, the header's counts need " + num(expected));
-    if (offsets[i] > size || bytes > size - offsets[i])
-      fail(name + " ends beyond the end of the file (" + num(size) + " bytes): truncated file");
-    end = offsets[i] + bytes;
-  }
-  if (end != size) fail(num(size - end) + " unexpected bytes after the last section");
+    c.fail("the header claims " + num(m.source.faces) + " source faces and " + num(m.source_vertices) +
+           " source vertices, more than the file's " + num(size) + " bytes can hold");
+  std::vector<uint64_t> bytes;
+  for (uint32_t id : kSectionIds) bytes.push_back(section_bytes(id, m.source.faces, m.source_vertices));
+  c.check_sections(bytes);
   m.source_faces.resize(3 * m.source.faces);
   m.face.resize(m.source_vertices);
   m.bary.resize(3 * m.source_vertices);
-  unsigned char* dst[3] = {reinterpret_cast<unsigned char*>(m.source_faces.data()),
-                           reinterpret_cast<unsigned char*>(m.face.data()), reinterpret_cast<unsigned char*>(m.bary.data())};
-  uint64_t at = header_bytes;
-  for (int i = 0; i < 3; ++i) {
-    const std::string name = std::string("section ") + section_name(kSectionIds[i]);
-    unsigned char padding[8] = {};
-    read(padding, offsets[i] - at, "the padding");
-    if (std::any_of(padding, padding + 8, [](unsigned char b) { return b != 0; }))
-      fail("nonzero padding before " + name + ": the file is corrupted");
-    const uint64_t bytes = section_bytes(kSectionIds[i], m.source.faces, m.source_vertices);
-    read(dst[i], bytes, name);
-    const unsigned char* e = head.data() + kFixedHeaderBytes + kSectionEntryBytes * i;
-    if (XXH3_64bits(dst[i], bytes) != get<uint64_t>(e, 24)) fail(name + ": checksum mismatch, the file is corrupted");
-    at = offsets[i] + bytes;
-  }
+  std::vector<unsigned char*> dst;
+  for (uint32_t id : kSectionIds) dst.push_back(section_data(m, id));
+  c.read_sections(dst, progress);
   return m;
 }
 
@@ -192,63 +137,45 @@ void write_text(const std::string& path, const SurfaceMap& m, const Progress& pr
   file.commit();
 }
 
+// The map's text lines, blank ones skipped, read with the text formats' tokenizer.
 struct TextReader {
   const std::string& path;
-  const char* p;
-  const char* end;
-  uint64_t line = 0;
-  std::string_view current;
+  detail::LineReader lines;
+  detail::Line l{};
 
-  [[noreturn]] void fail(const std::string& what) const {
-    throw Error("'" + path + "', line " + num(line) + ": " + what);
-  }
+  [[noreturn]] void fail(const std::string& what) const { detail::fail_at_line(path, l.number, what); }
   bool next() {
-    while (p < end) {
-      const char* nl = static_cast<const char*>(std::memchr(p, '\n', size_t(end - p)));
-      const char* e = nl ? nl : end;
-      current = std::string_view(p, size_t(e - p));
-      if (!current.empty() && current.back() == '\r') current.remove_suffix(1);
-      p = nl ? nl + 1 : end;
-      ++line;
-      if (current.find_first_not_of(" \t") != std::string_view::npos) return true;
-    }
+    while (lines.next(l))
+      if (!detail::at_end(l.b, l.e)) return true;
     return false;
   }
-  template <class T>
-  T number(size_t& at, const char* what, int base = 10) {
-    while (at < current.size() && (current[at] == ' ' || current[at] == '\t')) ++at;
+  std::string_view current() const { return std::string_view(l.b, size_t(l.e - l.b)); }
+  template <class T, int Base = 10>
+  T number(const char*& p, const char* what) const {
     T v{};
-    std::from_chars_result r;
-    if constexpr (std::is_floating_point_v<T>)
-      r = std::from_chars(current.data() + at, current.data() + current.size(), v);
-    else
-      r = std::from_chars(current.data() + at, current.data() + current.size(), v, base);
-    if (r.ec != std::errc() || (r.ptr < current.data() + current.size() && *r.ptr != ' ' && *r.ptr != '\t'))
-      fail(std::string("expected ") + what);
-    at = size_t(r.ptr - current.data());
+    if (!detail::parse_number<Base>(p, l.e, v)) fail(std::string("expected ") + what);
     return v;
   }
-  void expect_end(size_t at) {
-    while (at < current.size() && (current[at] == ' ' || current[at] == '\t')) ++at;
-    if (at != current.size()) fail("unexpected text at the end of the line");
+  void expect_end(const char* p) const {
+    if (!detail::at_end(p, l.e)) fail("unexpected text at the end of the line");
   }
 };
 
 SurfaceMap read_text(const std::string& path, const std::vector<char>& data) {
-  TextReader r{path, data.data(), data.data() + data.size(), 0, {}};
+  TextReader r{path, detail::LineReader(data.data(), data.data() + data.size())};
   const std::string first = "# slicereuse map " + num(kFormatVersion);
-  if (!r.next() || r.line != 1 || r.current.substr(0, 16) != "# slicereuse map")
+  if (!r.next() || r.l.number != 1 || r.current().substr(0, 16) != "# slicereuse map")
     throw Error("'" + path + "': not a slicereuse map file: it must start with '" + first + "' (text) or the binary magic");
-  if (r.current != first) r.fail("the first line must be '" + first + "' (other versions are not supported)");
+  if (r.current() != first) r.fail("the first line must be '" + first + "' (other versions are not supported)");
   SurfaceMap m;
   for (const char* key : {"# source ", "# target "}) {
-    if (!r.next() || r.current.substr(0, 9) != key) r.fail(std::string("expected '") + key + "<vertices> <faces> <hash>'");
-    size_t at = 9;
+    if (!r.next() || r.current().substr(0, 9) != key) r.fail(std::string("expected '") + key + "<vertices> <faces> <hash>'");
+    const char* at = r.l.b + 9;
     const bool source = key[2] == 's';
     (source ? m.source_vertices : m.target_vertices) = r.number<uint64_t>(at, "a vertex count");
     Fingerprint& fp = source ? m.source : m.target;
     fp.faces = r.number<uint64_t>(at, "a face count");
-    fp.hash = r.number<uint64_t>(at, "a 16-digit hexadecimal hash", 16);
+    fp.hash = r.number<uint64_t, 16>(at, "a 16-digit hexadecimal hash");
     r.expect_end(at);
   }
   // Each face and vertex line takes at least 8 bytes: counts beyond that are corrupt.
@@ -260,15 +187,15 @@ SurfaceMap read_text(const std::string& path, const std::vector<char>& data) {
   m.bary.resize(3 * m.source_vertices);
   for (uint64_t f = 0; f < m.source.faces; ++f) {
     if (!r.next()) r.fail("the file ends after " + num(f) + " of " + num(m.source.faces) + " face lines (truncated file?)");
-    if (r.current.substr(0, 2) != "f ") r.fail("expected a face line 'f <a> <b> <c>'");
-    size_t at = 2;
+    if (r.current().substr(0, 2) != "f ") r.fail("expected a face line 'f <a> <b> <c>'");
+    const char* at = r.l.b + 2;
     for (int j = 0; j < 3; ++j) m.source_faces[3 * f + j] = r.number<uint32_t>(at, "a vertex index");
     r.expect_end(at);
   }
   for (uint64_t i = 0; i < m.source_vertices; ++i) {
     if (!r.next()) r.fail("the file ends after " + num(i) + " of " + num(m.source_vertices) + " vertex lines (truncated file?)");
-    if (r.current.substr(0, 2) != "v ") r.fail("expected a vertex line 'v <face> <b0> <b1> <b2>'");
-    size_t at = 2;
+    if (r.current().substr(0, 2) != "v ") r.fail("expected a vertex line 'v <face> <b0> <b1> <b2>'");
+    const char* at = r.l.b + 2;
     m.face[i] = r.number<uint32_t>(at, "a target face id");
     for (int j = 0; j < 3; ++j) m.bary[3 * i + j] = r.number<double>(at, "a number");
     r.expect_end(at);
@@ -285,7 +212,7 @@ void write_map_file(const std::string& path, const SurfaceMap& map, const Progre
   } catch (const Error& e) {
     throw Error("cannot write the map file '" + path + "': " + e.what());
   }
-  if (ends_with_srb(path))
+  if (is_binary_file_name(path))
     write_binary(path, map, progress);
   else
     write_text(path, map, progress);
@@ -299,7 +226,7 @@ SurfaceMap read_map_file(const std::string& path, const Progress& progress) {
   std::rewind(f.get());
   SurfaceMap m;
   if (got == sizeof head && std::memcmp(head, kBinaryMagic, sizeof head) == 0) {
-    m = read_binary(path, f.get(), size);
+    m = read_binary(path, f.get(), size, progress);
   } else {
     std::vector<char> data(size);
     if (size && std::fread(data.data(), 1, size, f.get()) != size)

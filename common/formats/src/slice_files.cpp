@@ -77,9 +77,7 @@ FileIdentity slice_file_identity(const std::string& path) {
   unsigned char head[detail::kFixedHeaderBytes];
   const size_t got = std::fread(head, 1, sizeof head, f.get());
   if (got == sizeof head && std::memcmp(head, detail::kBinaryMagic, sizeof detail::kBinaryMagic) == 0) {
-    uint32_t sections;
-    std::memcpy(&sections, head + detail::kSectionCountAt, sizeof sections);
-    const uint64_t at = detail::kFixedHeaderBytes + uint64_t(detail::kSectionEntryBytes) * sections;
+    const uint64_t at = detail::table_end(detail::get<uint32_t>(head + detail::kSectionCountAt));
     if (at + 8 <= id.size && fseeko(f.get(), off_t(at), SEEK_SET) == 0 &&
         std::fread(&id.checksum, 1, 8, f.get()) == 8)
       return id;

@@ -12,8 +12,16 @@ const char* section_name(uint32_t id) {
     case kFace: return "face";
     case kEdge: return "edge";
     case kT: return "t";
+    case kSourceFaces: return "source_faces";
+    case kMapFace: return "face";
+    case kMapBary: return "bary";
     default: return "unknown";
   }
+}
+
+const char* container_kind_noun(uint32_t kind) {
+  if (kind == uint32_t(FileKind::Contours) || kind == uint32_t(FileKind::Encoding)) return kind_noun(FileKind(kind));
+  return kind == kMapFileKind ? "a map file" : nullptr;
 }
 
 std::vector<uint32_t> section_ids(FileKind kind) {

@@ -1,14 +1,17 @@
 #pragma once
 // The binary (.srb) file layout (docs/formats.md, "Binary format"), shared by the reader
-// (slice_files_binary_read.cpp), the writer (slice_files_binary_write.cpp) and the format
-// detection (slice_files.cpp); internal, not part of the API.
+// (slice_files_binary_read.cpp), the writer (slice_files_binary_write.cpp), the format
+// detection (slice_files.cpp) and the map files (map_files.cpp); internal, not part of the API.
 //   A fixed header of kFixedHeaderBytes, a table of one kSectionEntryBytes entry per section,
 //   an XXH3-64 checksum over both, then the sections at 8-byte aligned offsets.
+//   write_container / ContainerReader: the container for every kind (contour, encoding and map
+//   files), so its checks exist once.
 //   section_ids(kind): the sections of a file kind, in file order;
 //   section_bytes(id, L, C, P): a section's size for L layers, C contours, P points;
 //   section_data(s, id): the Slices array a section holds (the one id -> array mapping).
 // Multi-byte fields are little-endian, which is the host order on every platform MeshLab runs on.
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -23,6 +26,20 @@ static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, ".srb I/O assumes a lit
 
 // The 8 bytes that open every binary file.
 constexpr char kBinaryMagic[8] = {'\x89', 'S', 'R', 'B', '\r', '\n', '\x1a', '\n'};
+
+// Large sections are read and written in pieces so progress (and cancellation) stays responsive.
+constexpr uint64_t kPieceBytes = uint64_t(64) << 20;
+
+template <class T>
+void put(unsigned char* at, T v) {
+  std::memcpy(at, &v, sizeof v);
+}
+template <class T>
+T get(const unsigned char* at) {
+  T v;
+  std::memcpy(&v, at, sizeof v);
+  return v;
+}
 
 // Fixed header: byte offsets of its fields.
 constexpr size_t kFixedHeaderBytes = 80;
@@ -50,9 +67,19 @@ enum EntryField : size_t {
   kChecksumAt = 24  // uint64, XXH3-64 of the section's bytes
 };
 
+// Bytes [0, table_end(n)) are the fixed header and a table of n sections; the header checksum
+// follows them.
+inline uint64_t table_end(uint64_t sections) { return kFixedHeaderBytes + kSectionEntryBytes * sections; }
+
+// The kinds a container holds (field kKindAt): the slice files' FileKind (1, 2) and map files.
+constexpr uint32_t kMapFileKind = 3;
+// "a contour file", "an encoding file", "a map file"; nullptr for an unknown kind.
+const char* container_kind_noun(uint32_t kind);
+
 enum SectionId : uint32_t {
   kLayerZ = 1, kLayerBegin = 2, kContourBegin = 3, kContourOpen = 4,
-  kXyz = 5, kFace = 6, kEdge = 7, kT = 8
+  kXyz = 5, kFace = 6, kEdge = 7, kT = 8,
+  kSourceFaces = 9, kMapFace = 10, kMapBary = 11  // map files
 };
 const char* section_name(uint32_t id);
 std::vector<uint32_t> section_ids(FileKind kind);
@@ -77,18 +104,35 @@ struct SectionOut {
 void write_container(const std::string& path, uint32_t kind, const unsigned char fields[kKindFieldBytes],
                      const std::vector<SectionOut>& sections, const Progress& progress);
 
-// Large sections are read and written in pieces so progress (and cancellation) stays responsive.
-constexpr uint64_t kPieceBytes = uint64_t(64) << 20;
+// Reads a binary container, the reverse of write_container, with every check the container
+// itself defines, in this order:
+//   ContainerReader c(path, f, size, kind, ids);  // the file holds a header: magic, version,
+//       kind (names the kind found), section count (ids.size()), header checksum, reserved field
+//   ... the kind's own fields (c.field<T>(at)), its counts checked against the file size ...
+//   c.check_sections(bytes);  // the table: ids in order, canonical offsets, sizes bytes[i],
+//       within the file, nothing after the last section; before anything is allocated
+//   c.read_sections(dst, progress);  // zero padding, each section into dst[i], its checksum
+// f is open at offset 0; errors are Error("'path': what").
+class ContainerReader {
+ public:
+  ContainerReader(const std::string& path, FILE* f, uint64_t size, uint32_t kind, std::vector<uint32_t> ids);
+  template <class T>
+  T field(size_t at) const {
+    return get<T>(head_.data() + at);
+  }
+  void check_sections(const std::vector<uint64_t>& bytes) const;
+  void read_sections(const std::vector<unsigned char*>& dst, const Progress& progress);
+  [[noreturn]] void fail(const std::string& what) const;
 
-template <class T>
-void put(unsigned char* at, T v) {
-  std::memcpy(at, &v, sizeof v);
-}
-template <class T>
-T get(const unsigned char* at) {
-  T v;
-  std::memcpy(&v, at, sizeof v);
-  return v;
-}
+ private:
+  void read(void* dst, uint64_t n, const std::string& what);
+  const unsigned char* entry(size_t i) const { return head_.data() + kFixedHeaderBytes + kSectionEntryBytes * i; }
+
+  const std::string& path_;
+  FILE* f_;
+  uint64_t size_;
+  std::vector<uint32_t> ids_;
+  std::vector<unsigned char> head_;  // header, table and header checksum
+};
 
 }  // namespace slicereuse::detail

@@ -12,8 +12,8 @@ namespace slicereuse::detail {
 
 void write_container(const std::string& path, uint32_t kind, const unsigned char fields[kKindFieldBytes],
                      const std::vector<SectionOut>& sections, const Progress& progress) {
-  const size_t table_end = kFixedHeaderBytes + kSectionEntryBytes * sections.size();
-  std::vector<unsigned char> head(table_end + 8, 0);
+  const uint64_t end = table_end(sections.size());
+  std::vector<unsigned char> head(end + 8, 0);
   unsigned char* h = head.data();
   std::memcpy(h, kBinaryMagic, sizeof kBinaryMagic);
   put<uint32_t>(h + kVersionAt, kFormatVersion);
@@ -32,7 +32,7 @@ void write_container(const std::string& path, uint32_t kind, const unsigned char
     offset = align8(offset + sec.bytes);
     total += sec.bytes;
   }
-  put<uint64_t>(h + table_end, XXH3_64bits(h, table_end));
+  put<uint64_t>(h + end, XXH3_64bits(h, end));
 
   AtomicFile file(path);
   file.write(head.data(), head.size());

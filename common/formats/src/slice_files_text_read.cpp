@@ -2,18 +2,17 @@
 // lines and checks the header and layer structure; two parallel passes over the contour lines
 // then count their points and parse them with std::from_chars straight into the arrays.
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "area_coordinates.h"
 #include "slice_files_detail.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/parallel_blocks.h"
+#include "text_tokens.h"
 
 namespace slicereuse::detail {
 namespace {
@@ -21,73 +20,12 @@ namespace {
 // Contour lines are parsed in blocks of about this many bytes of text.
 constexpr size_t kBlockBytes = size_t(1) << 20;
 
-struct Line {
-  const char* b;
-  const char* e;
-  uint64_t number;
-};
-
 [[noreturn]] void fail(const std::string& path, uint64_t line, const std::string& what) {
-  throw Error("'" + path + "', line " + std::to_string(line) + ": " + what);
+  fail_at_line(path, line, what);
 }
 [[noreturn]] void fail(const std::string& path, const std::string& what) {
   throw Error("'" + path + "': " + what);
 }
-
-inline bool space(char c) { return c == ' ' || c == '\t'; }
-inline const char* skip_space(const char* p, const char* e) {
-  while (p < e && space(*p)) ++p;
-  return p;
-}
-
-// The token at p (for messages), shortened so a garbage line cannot flood the message.
-std::string token_at(const char* p, const char* e) {
-  p = skip_space(p, e);
-  const char* q = p;
-  while (q < e && !space(*q) && q - p < 40) ++q;
-  return "'" + std::string(p, q) + "'";
-}
-
-// Parses one whitespace-separated number; false when the token is not entirely a T.
-template <class T>
-bool parse(const char*& p, const char* e, T& v) {
-  p = skip_space(p, e);
-  const auto r = std::from_chars(p, e, v);
-  if (r.ec != std::errc() || (r.ptr < e && !space(*r.ptr))) return false;
-  p = r.ptr;
-  return true;
-}
-
-bool next_word(const char*& p, const char* e, std::string_view& word) {
-  p = skip_space(p, e);
-  const char* q = p;
-  while (q < e && !space(*q)) ++q;
-  word = std::string_view(p, size_t(q - p));
-  p = q;
-  return !word.empty();
-}
-
-bool at_end(const char* p, const char* e) { return skip_space(p, e) == e; }
-
-class LineReader {
- public:
-  LineReader(const char* b, const char* e) : p_(b), end_(e) {}
-  bool next(Line& line) {
-    if (p_ == end_) return false;
-    const char* nl = static_cast<const char*>(std::memchr(p_, '\n', size_t(end_ - p_)));
-    line.b = p_;
-    line.e = nl ? nl : end_;
-    if (line.e > line.b && line.e[-1] == '\r') --line.e;
-    line.number = ++number_;
-    p_ = nl ? nl + 1 : end_;
-    return true;
-  }
-
- private:
-  const char* p_;
-  const char* end_;
-  uint64_t number_ = 0;
-};
 
 bool comment_or_blank(const Line& l) { return l.b == l.e || *l.b == '#' || at_end(l.b, l.e); }
 
@@ -112,7 +50,7 @@ void parse_first_line(const std::string& path, const Line& l, FileKind kind) {
     fail(path, 1, "unknown file kind '" + std::string(w) + "'");
   }
   unsigned version = 0;
-  if (!parse(p, l.e, version) || !at_end(p, l.e))
+  if (!parse_number(p, l.e, version) || !at_end(p, l.e))
     fail(path, 1, "the first line must be '" + expected + "'");
   if (version != kFormatVersion)
     fail(path, 1, "format version " + std::to_string(version) +
@@ -133,24 +71,21 @@ void parse_header_line(const std::string& path, const Line& l, Header& h, Slices
   };
   if (key == "thickness") {
     once(h.has_thickness);
-    if (!parse(p, e, s.thickness) || !at_end(p, e)) bad("thickness <h>");
+    if (!parse_number(p, e, s.thickness) || !at_end(p, e)) bad("thickness <h>");
   } else if (key == "z_start") {
     once(h.has_z_start);
-    if (!parse(p, e, s.z_start) || !at_end(p, e)) bad("z_start <z>");
+    if (!parse_number(p, e, s.z_start) || !at_end(p, e)) bad("z_start <z>");
   } else if (key == "layers") {
     once(h.has_counts);
     std::string_view w1, w2;
-    if (!parse(p, e, h.layers) || !next_word(p, e, w1) || w1 != "contours" ||
-        !parse(p, e, h.contours) || !next_word(p, e, w2) || w2 != "points" ||
-        !parse(p, e, h.points) || !at_end(p, e))
+    if (!parse_number(p, e, h.layers) || !next_word(p, e, w1) || w1 != "contours" ||
+        !parse_number(p, e, h.contours) || !next_word(p, e, w2) || w2 != "points" ||
+        !parse_number(p, e, h.points) || !at_end(p, e))
       bad("layers <L> contours <C> points <P>");
   } else if (key == "fingerprint") {
     once(h.has_fingerprint);
-    p = skip_space(p, e);
-    if (!parse(p, e, s.fingerprint.faces)) bad("fingerprint <faces> <16 hex digits>");
-    p = skip_space(p, e);
-    const auto r = std::from_chars(p, e, s.fingerprint.hash, 16);
-    if (r.ec != std::errc() || !at_end(r.ptr, e)) bad("fingerprint <faces> <16 hex digits>");
+    if (!parse_number(p, e, s.fingerprint.faces) || !parse_number<16>(p, e, s.fingerprint.hash) || !at_end(p, e))
+      bad("fingerprint <faces> <16 hex digits>");
   }
 }
 
@@ -161,8 +96,8 @@ uint64_t parse_layer_line(const std::string& path, const Line& l, Slices& s) {
   uint64_t k = 0, n = 0;
   double z = 0;
   if (!next_word(p, l.e, w) || w != "layer")
-    fail(path, l.number, "expected 'layer <k> <z> <n>', found " + token_at(l.b, l.e));
-  if (!parse(p, l.e, k) || !parse(p, l.e, z) || !parse(p, l.e, n) || !at_end(p, l.e))
+    fail(path, l.number, "expected 'layer <k> <z> <n>', found " + quoted_token(l.b, l.e));
+  if (!parse_number(p, l.e, k) || !parse_number(p, l.e, z) || !parse_number(p, l.e, n) || !at_end(p, l.e))
     fail(path, l.number, "expected 'layer <k> <z> <n>'");
   if (k != s.layers())
     fail(path, l.number, "layer " + std::to_string(k) + " where layer " +
@@ -181,26 +116,23 @@ void for_contour_lines(const std::vector<Line>& lines, const Progress& progress,
   for (size_t c = 1; c < lines.size(); ++c)
     if (size_t(lines[c].b - lines[first.back()].b) >= kBlockBytes) first.push_back(c);
   first.push_back(lines.size());
-  const Progress scaled = [&](double fraction, const char* phase) {
-    return !progress || progress(from + (to - from) * fraction, phase);
-  };
   parallel_blocks(
       first.size() - 1,
       [&](size_t b) {
         for (size_t c = first[b]; c < first[b + 1]; ++c) f(c);
       },
-      scaled, "reading");
+      sub_progress(progress, from, to), "reading");
 }
 
 // Counts the points of a contour line and notes whether it starts with "open".
 uint64_t count_points(const std::string& path, const Line& l, size_t per_point, uint8_t& open) {
-  const char* p = skip_space(l.b, l.e);
-  open = l.e - p >= 4 && std::memcmp(p, "open", 4) == 0 && (l.e - p == 4 || space(p[4]));
+  const char* p = skip_blanks(l.b, l.e);
+  open = l.e - p >= 4 && std::memcmp(p, "open", 4) == 0 && (l.e - p == 4 || is_blank(p[4]));
   if (open) p += 4;
   uint64_t tokens = 0;
   bool in_token = false;
   for (; p < l.e; ++p) {
-    const bool s = !space(*p);
+    const bool s = !is_blank(*p);
     tokens += s && !in_token;
     in_token = s;
   }
@@ -214,11 +146,11 @@ uint64_t count_points(const std::string& path, const Line& l, size_t per_point, 
 // open: the line starts with "open" (count_points has checked the line's form).
 void parse_contour_points(const std::string& path, const Line& l, bool open, double* xyz,
                           uint64_t n) {
-  const char* p = skip_space(l.b, l.e) + (open ? 4 : 0);
+  const char* p = skip_blanks(l.b, l.e) + (open ? 4 : 0);
   for (uint64_t i = 0; i < 3 * n; ++i) {
     const char* at = p;
-    if (!parse(p, l.e, xyz[i]) || !std::isfinite(xyz[i]))
-      fail(path, l.number, "point " + std::to_string(i / 3 + 1) + ": " + token_at(at, l.e) +
+    if (!parse_number(p, l.e, xyz[i]) || !std::isfinite(xyz[i]))
+      fail(path, l.number, "point " + std::to_string(i / 3 + 1) + ": " + quoted_token(at, l.e) +
                                " is not a finite number");
   }
 }
@@ -226,23 +158,23 @@ void parse_contour_points(const std::string& path, const Line& l, bool open, dou
 void parse_encoding_points(const std::string& path, const Line& l, bool open,
                            const Fingerprint& fp, uint32_t* face, uint8_t* edge, double* t,
                            uint64_t n) {
-  const char* p = skip_space(l.b, l.e) + (open ? 4 : 0);
+  const char* p = skip_blanks(l.b, l.e) + (open ? 4 : 0);
   for (uint64_t i = 0; i < n; ++i) {
     auto bad = [&](const std::string& what) {
       fail(path, l.number, "point " + std::to_string(i + 1) + ": " + what);
     };
     const char* at = p;
     uint64_t f = 0;
-    if (!parse(p, l.e, f)) bad(token_at(at, l.e) + " is not a face id");
+    if (!parse_number(p, l.e, f)) bad(quoted_token(at, l.e) + " is not a face id");
     if (f >= fp.faces || f > UINT32_MAX)
       bad("face " + std::to_string(f) + " does not exist: the mesh has " +
           std::to_string(fp.faces) + " faces");
     double lambda[3];
     for (double& v : lambda) {
       at = p;
-      if (!parse(p, l.e, v) || !std::isfinite(v))
-        bad(token_at(at, l.e) + " is not a finite number");
-      if (v < 0) bad("negative area coordinate " + token_at(at, l.e));
+      if (!parse_number(p, l.e, v) || !std::isfinite(v))
+        bad(quoted_token(at, l.e) + " is not a finite number");
+      if (v < 0) bad("negative area coordinate " + quoted_token(at, l.e));
     }
     uint8_t j = 0;
     double ti = 0;

@@ -136,11 +136,14 @@ class Stack {
   size_t begin(size_t i) const { return first_[i]; }
   size_t end(size_t i) const { return first_[i + 1]; }
   double thickness() const { return thickness_; }
-  // Where range i's share of the export begins, and where its encoding begins within it: a range
-  // made on demand spends the first half of its share being made.
+  // Where range i's share of the export begins and ends, and where its encoding begins within it:
+  // a range made on demand spends the first half of its share being made.
   double share_begin(size_t i) const { return double(begin(i)) / double(layers()); }
-  double encoding_begin(size_t i) const {
-    return whole_ ? share_begin(i) : 0.5 * (share_begin(i) + double(end(i)) / double(layers()));
+  double share_end(size_t i) const { return double(end(i)) / double(layers()); }
+  double encoding_begin(size_t i) const { return whole_ ? share_begin(i) : 0.5 * (share_begin(i) + share_end(i)); }
+  // Range i's encoding, 0 to 1, as progress of the whole export.
+  Progress encoding_progress(size_t i, const Progress& progress) const {
+    return sub_progress(progress, encoding_begin(i), share_end(i));
   }
 
   // Range i's slices, checked; the previous range's are freed first.
@@ -220,7 +223,7 @@ void export_folder(Stack& stack, const PrinterProfile& p, const std::string& fol
           // Plain writes: the staged folder as a whole is what appears atomically.
           write_file(staged + "/" + mask_layer_file_name(FOLDER_PREFIX, first + local), png);
         },
-        sub_progress(progress, stack.encoding_begin(i), double(stack.end(i)) / double(stack.layers())), PHASE);
+        stack.encoding_progress(i, progress), PHASE);
   }
   // Last chance to cancel: once committed, the export is done and no longer reports.
   report_progress(progress, 1, PHASE);
@@ -244,11 +247,8 @@ class Sl1Layers {
   const std::vector<uint8_t>& operator()(size_t k) {
     if (!items_ || k >= stack_.end(range_)) next_range();
     const size_t local = k - stack_.begin(range_);
-    if (local % 64 == 0) {
-      const double from = stack_.encoding_begin(range_), to = double(stack_.end(range_)) / double(stack_.layers());
-      report_progress(progress_, from + (to - from) * double(local) / double(stack_.end(range_) - stack_.begin(range_)),
-                      PHASE);
-    }
+    if (local % 64 == 0)
+      report_progress(range_progress_, double(local) / double(stack_.end(range_) - stack_.begin(range_)), PHASE);
     return items_->get(local);
   }
 
@@ -257,6 +257,7 @@ class Sl1Layers {
     if (items_) ++range_;
     items_.reset();  // all of the range's layers were taken: its workers are idle
     const Slices& s = stack_.range(range_, progress_);
+    range_progress_ = stack_.encoding_progress(range_, progress_);
     open_contours_ += s.open_contours();
     const size_t first = stack_.begin(range_);
     items_ = std::make_unique<OrderedParallel>(
@@ -271,6 +272,7 @@ class Sl1Layers {
   StackSummary& summary_;
   size_t& open_contours_;
   const Progress& progress_;
+  Progress range_progress_;
   size_t range_ = 0;
   std::unique_ptr<OrderedParallel> items_;
 };

@@ -8,7 +8,7 @@
 
 #include "slicereuse/mesh/edge_links.h"
 #include "slicereuse/mesh/fingerprint.h"
-#include "slicereuse/slicing/edge_point.h"
+#include "slicereuse/slicing/contour_step.h"
 #include "slicereuse/slicing/layer_planes.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
@@ -19,18 +19,19 @@ namespace slicereuse {
 namespace {
 
 // The planes a face straddles, [k0, k1), split at km: on [k0, km) its lowest corner `lo` is
-// alone below the plane, on [km, k1) its highest corner `hi` is alone at or above it. Which of
-// its edges the contour enters and leaves by is fixed on each part.
+// the lone corner below the plane, on [km, k1) its highest corner `hi` the lone corner at or
+// above it, so the edges the contour enters and leaves by (contour_step.h) are fixed on each part.
 struct FaceRange {
   uint32_t k0, km, k1;
   uint8_t lo, hi;
 };
 
-// Contour direction: a face's segment runs from the edge its vertex order crosses downwards
-// (start edge) to the edge it crosses upwards (end edge); with outward normals this makes outer
-// loops counter-clockwise seen from +z. Local edge j joins corners j and (j+1)%3.
-inline uint32_t end_edge(const FaceRange& r, size_t k) { return k < r.km ? r.lo : (r.hi + 2) % 3; }
-inline uint32_t start_edge(const FaceRange& r, size_t k) { return k < r.km ? (r.lo + 2) % 3 : r.hi; }
+inline uint32_t exit_edge(const FaceRange& r, size_t k) {
+  return k < r.km ? exit_edge_of_lone(r.lo, true) : exit_edge_of_lone(r.hi, false);
+}
+inline uint32_t entry_edge(const FaceRange& r, size_t k) {
+  return k < r.km ? entry_edge_of_lone(r.lo, true) : entry_edge_of_lone(r.hi, false);
+}
 
 constexpr size_t kLayersPerBlock = 32;
 // Output per point: xyz, face, edge, t.
@@ -69,7 +70,7 @@ class LayerSlicer {
     // Open polylines first, from their heads, so a closed walk never starts inside one.
     if (has_unlinked)
       for (const ActiveFace& a : active)
-        if (links_[3 * a.face + start_edge(ranges_[a.face], k)] == kUnlinked) chain(a.face, true);
+        if (links_[3 * a.face + entry_edge(ranges_[a.face], k)] == kUnlinked) chain(a.face, true);
     for (const ActiveFace& a : active)
       if (stamp[a.face] != s) chain(a.face, false);
     if (cursor != end) throw Error("internal error: layer " + std::to_string(k) + " point count mismatch");
@@ -80,11 +81,11 @@ class LayerSlicer {
   template <bool Open>
   uint64_t walk(uint32_t f, size_t k, uint32_t s, uint32_t* stamp, uint64_t cursor, uint64_t end) const {
     const double zk = layer_z_[k];
-    uint32_t je = end_edge(ranges_[f], k);
+    uint32_t je = exit_edge(ranges_[f], k);
     if (Open) {
-      const uint32_t js = start_edge(ranges_[f], k);
-      // The start edge runs from corner js (at or above) down to corner js+1 (below).
-      const EdgePoint p = edge_point(vertex(f, (js + 1) % 3), vertex(f, js), zk);
+      // The entry edge runs from corner js (at or above) down to corner js+1 (below).
+      const uint32_t js = entry_edge(ranges_[f], k);
+      const EdgePoint p = entry_point(V_, F_, f, js, zk);
       double t = 1 - p.t;
       uint32_t j = js;
       if (t == 0) {  // the point is corner js itself: name it as the end of the edge before
@@ -96,21 +97,17 @@ class LayerSlicer {
     const uint32_t first = f;
     for (;;) {
       stamp[f] = s;
-      const EdgePoint p = edge_point(vertex(f, je), vertex(f, (je + 1) % 3), zk);
+      const EdgePoint p = exit_point(V_, F_, f, je, zk);
       emit(cursor++, end, p.x, p.y, zk, f, je, p.t);
       const uint32_t link = links_[3 * f + je];
       if (link == kUnlinked) break;
       const uint32_t g = link >> 2, sg = link & 3;
       if (!Open && g == first) break;
-      // g is entered by edge sg (corner sg above, sg+1 below); its third corner decides the exit.
-      const uint32_t c = (sg + 2) % 3;
-      je = vertex(g, c)[2] >= zk ? (sg + 1) % 3 : c;
+      je = next_exit_edge(V_, F_, g, sg, zk);
       f = g;
     }
     return cursor;
   }
-
-  const double* vertex(uint32_t f, uint32_t corner) const { return V_ + 3 * size_t(F_[3 * size_t(f) + corner]); }
 
   void emit(uint64_t i, uint64_t end, double x, double y, double z, uint32_t f, uint32_t j, double t) const {
     if (i >= end) throw Error("internal error: contour walk overran its layer");
@@ -158,7 +155,7 @@ std::vector<FaceRange> face_ranges(const Mesh& mesh, const std::vector<double>& 
 
 // Phase 2, in one pass over the faces: the exact point count of every layer before any
 // chaining, so each layer writes straight into its slot of the flat output (one point per
-// straddling face, plus the first point of every open polyline: a face whose start edge has no
+// straddling face, plus the first point of every open polyline: a face whose entry edge has no
 // neighbour), and how many faces start straddling at each layer.
 struct LayerCounts {
   std::vector<uint64_t> point_begin;   // L+1: layer k's points are [point_begin[k], point_begin[k+1])
@@ -171,12 +168,12 @@ LayerCounts count_layers(const std::vector<FaceRange>& ranges, const EdgeLinks& 
   for (size_t f = 0; f < ranges.size(); ++f) {
     const FaceRange& r = ranges[f];
     if (r.k0 < r.km) {
-      const int64_t n = 1 + (links.links[3 * f + (r.lo + 2) % 3] == kUnlinked);
+      const int64_t n = 1 + (links.links[3 * f + entry_edge(r, r.k0)] == kUnlinked);
       diff[r.k0] += n;
       diff[r.km] -= n;
     }
     if (r.km < r.k1) {
-      const int64_t n = 1 + (links.links[3 * f + r.hi] == kUnlinked);
+      const int64_t n = 1 + (links.links[3 * f + entry_edge(r, r.km)] == kUnlinked);
       diff[r.km] += n;
       diff[r.k1] -= n;
     }

@@ -7,7 +7,7 @@
 
 #include "slicereuse/mesh/edge_links.h"
 #include "slicereuse/mesh/fingerprint.h"
-#include "slicereuse/slicing/edge_point.h"
+#include "slicereuse/slicing/contour_step.h"
 #include "slicereuse/slicing/straddling_faces.h"
 #include "slicereuse/slicing/trace_contour.h"
 #include "slicereuse/util/error.h"
@@ -123,13 +123,12 @@ constexpr int kStepsPastNearest = 3;
 
 // The point of the target's section at zk nearest (in xy) to a carried point q, over the
 // section's segments offered: each straddling face's segment from its entry to its exit
-// crossing, both computed as the slicer computes them.
+// crossing, both computed as the slicer computes them (contour_step.h).
 struct NearestOnSection {
   double d2 = HUGE_VAL, x = 0, y = 0;
-  void offer(const Mesh& target, uint32_t f, uint32_t in, uint32_t out, double zk, const double* q) {
-    const uint32_t* c = &target.F[3 * size_t(f)];
-    const EdgePoint a = edge_point(&target.V[3 * size_t(c[(in + 1) % 3])], &target.V[3 * size_t(c[in])], zk);
-    const EdgePoint b = edge_point(&target.V[3 * size_t(c[out])], &target.V[3 * size_t(c[(out + 1) % 3])], zk);
+  void offer(const Mesh& target, uint32_t f, const SectionEdges& e, double zk, const double* q) {
+    const EdgePoint a = entry_point(target.V.data(), target.F.data(), f, e.entry, zk);
+    const EdgePoint b = exit_point(target.V.data(), target.F.data(), f, e.exit, zk);
     const double ux = b.x - a.x, uy = b.y - a.y, len2 = ux * ux + uy * uy;
     const double s = len2 > 0 ? std::clamp(((q[0] - a.x) * ux + (q[1] - a.y) * uy) / len2, 0.0, 1.0) : 0.0;
     const double px = a.x + s * ux, py = a.y + s * uy;
@@ -138,33 +137,21 @@ struct NearestOnSection {
   }
 };
 
-// The entry and exit edges of face f at zk (exit_edge's rule, and its reverse: corner j at or
-// above zk and corner (j+1)%3 below); false when f does not straddle zk.
-bool section_edges(const Mesh& mesh, uint32_t f, double zk, uint32_t& in, uint32_t& out) {
-  const uint32_t* c = &mesh.F[3 * size_t(f)];
-  const bool below[3] = {mesh.V[3 * size_t(c[0]) + 2] < zk, mesh.V[3 * size_t(c[1]) + 2] < zk,
-                         mesh.V[3 * size_t(c[2]) + 2] < zk};
-  in = out = kNoEdge;
-  for (uint32_t j = 0; j < 3; ++j) {
-    if (below[j] && !below[(j + 1) % 3]) out = j;
-    if (!below[j] && below[(j + 1) % 3]) in = j;
-  }
-  return in != kNoEdge && out != kNoEdge;
-}
-
 // Walks the section's loop through `seed` forward (through exit edges) and backward (through
 // entry edges), each way until kStepsPastNearest faces past the nearest segment so far, offering
 // each face's segment to `nearest` and appending the faces walked to `walked`.
 void nearest_along_loop(const Mesh& target, const std::vector<uint32_t>& links, double zk, uint32_t seed,
                         const double* q, NearestOnSection& nearest, std::vector<uint32_t>& walked) {
   for (const bool forward : {true, false}) {
-    uint32_t f = seed, in, out;
-    for (int past = 0; past < kStepsPastNearest && section_edges(target, f, zk, in, out); ++past) {
+    uint32_t f = seed;
+    for (int past = 0; past < kStepsPastNearest; ++past) {
+      const SectionEdges e = section_edges(target.V.data(), target.F.data(), f, zk);
+      if (e.exit == kNoEdge) break;
       const double before = nearest.d2;
-      nearest.offer(target, f, in, out, zk, q);
+      nearest.offer(target, f, e, zk, q);
       if (nearest.d2 < before) past = 0;
       walked.push_back(f);
-      const uint32_t link = links[3 * size_t(f) + (forward ? out : in)];
+      const uint32_t link = links[3 * size_t(f) + (forward ? e.exit : e.entry)];
       if (link == kUnlinked || (link >> 2) == seed) break;
       f = link >> 2;
     }

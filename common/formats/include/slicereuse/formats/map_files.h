@@ -3,7 +3,7 @@
 // container of the slice files with kind 3), specified byte by byte in docs/formats.md.
 //
 // write_map_file validates the map, then writes atomically (AtomicFile): binary when the path
-// ends in ".srb" (any case), text otherwise. read_map_file detects the format from the file's
+// ends in ".srb" (any case, is_binary_file_name in file_names.h), text otherwise. read_map_file detects the format from the file's
 // first bytes, checks every count against the file size before allocating and every binary
 // section against its XXH3 checksum, validates the result (validate_surface_map), and throws
 // Error naming the file, the line or section and the problem.

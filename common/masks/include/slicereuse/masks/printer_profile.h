@@ -6,6 +6,9 @@
 //
 // Placement: the model's XY origin sits at the display centre, shifted by offset_x/y_mm; row 0
 // is the top of the image (largest y). mirror_x / mirror_y flip the image.
+//
+// Its defaults are the display defaults (1024 x 768 pixels of 75 um), written only here: hosts
+// take their parameters' defaults from it (PrinterProfile{}.width_px, ...).
 
 namespace slicereuse {
 

@@ -28,6 +28,16 @@ struct SliceOptions {
   bool encoding = true;  // false: xyz only (37 -> 24 bytes written per point), e.g. for masks
 };
 
+// A z_start for hosts whose parameters cannot be NaN (a filter's default cannot depend on the
+// mesh): kLowestVertexZStart, the filters' default, and any value at or below
+// kLowestVertexZStartAtOrBelow mean the mesh's lowest vertex. z_start_option maps such a value to
+// SliceOptions::z_start: NaN for those, else the value itself.
+constexpr double kLowestVertexZStart = -1e30;
+constexpr double kLowestVertexZStartAtOrBelow = -1e29;
+inline double z_start_option(double z_start) {
+  return z_start <= kLowestVertexZStartAtOrBelow ? std::numeric_limits<double>::quiet_NaN() : z_start;
+}
+
 Slices slice_layers(const Mesh& mesh, const SliceOptions& options, const Progress& progress = {});
 
 // The planes slice_layers(mesh, options) slices at, and (when z_start is not null) the z_start it
