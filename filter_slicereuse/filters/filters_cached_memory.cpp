@@ -33,20 +33,15 @@ Result run_free_cached_memory(const NoParams&, Host& host) {
 }  // namespace
 
 FilterSpec free_cached_memory_filter() {
-  FilterSpec f;
-  f.id = FilterId::FreeCachedMemory;
-  f.name = "Free Cached Memory";
-  f.python_name = "free_cached_memory";
-  f.description =
+  const std::string description =
       "<p>Gives back the memory that <i>Make Print Job</i> keeps between members: the last "
       "encoding file read (about 1.5 GB for a 545k-face part at 1 &micro;m) and the large "
       "buffers kept for the next member's job. Run it after the last member of a family, in a "
       "pymeshlab session or a meshlabserver script that goes on with other work. A job short of "
       "memory frees them on its own. The next print job reads the encoding again.</p>";
-  f.arity = Arity::None;
-  f.filter_class = kLayerClass;
-  f.needs_faces = false;
-  return typed_filter(f, ParamList<NoParams>(), run_free_cached_memory);
+  return typed_filter({FilterId::FreeCachedMemory, "Free Cached Memory", "free_cached_memory", description,
+                       Arity::None, kLayerClass, false},
+                      ParamList<NoParams>(), run_free_cached_memory);
 }
 
 }  // namespace slicereuse::plugin

@@ -47,22 +47,18 @@ Result run_compare_masks(const CompareParams& p, Host& host) {
 }  // namespace
 
 FilterSpec compare_masks_filter() {
-  FilterSpec f;
-  f.id = FilterId::CompareMasks;
-  f.name = "Compare Mask Stacks";
-  f.python_name = "compare_mask_stacks";
-  f.description = std::string(
+  const std::string description = std::string(
       "<p>Compares two stacks of mask images (folders of PNG images or .sl1 "
       "archives, e.g. from a transferred and a directly sliced member) layer by "
       "layer. The similarity of a layer is S = (pixels equal in both images) / "
       "(all pixels), so S = 1 means identical masks. Logs the lowest S, the layer "
       "where it occurs and the total number of differing pixels; optionally writes "
       "one CSV row per layer. The stacks must have the same number of layers and "
-      "image size. The current mesh is not used.</p>") + kReference;
-  f.arity = Arity::None;
-  f.filter_class = kLayerClass | kMeasureClass;
-  f.needs_faces = false;
-  return typed_filter(f, compare_params(), run_compare_masks);
+      "image size. The current mesh is not used.</p>") +
+      kReference;
+  return typed_filter({FilterId::CompareMasks, "Compare Mask Stacks", "compare_mask_stacks", description,
+                       Arity::None, kLayerClass | kMeasureClass, false},
+                      compare_params(), run_compare_masks);
 }
 
 }  // namespace slicereuse::plugin

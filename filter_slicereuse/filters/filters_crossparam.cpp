@@ -128,11 +128,7 @@ Result run_cross_parameterize(const CrossParamParams& p, Host& host) {
 // Remeshing class: MeshLab lists its own maps between meshes there (Iso Parametrization and its
 // transfer between meshes), while Texture holds filters that make UV coordinates and images.
 FilterSpec cross_parameterize_filter() {
-  FilterSpec f;
-  f.id = FilterId::CrossParameterize;
-  f.name = "Cross-Parameterize Meshes";
-  f.python_name = "cross_parameterize_meshes";
-  f.description = std::string(
+  const std::string description = std::string(
       "<p>Computes a map between two members of a product family whose meshes differ "
       "in connectivity (other vertex count, triangles or order: a remeshed model, "
       "another scan), so that <i>Transfer Slicing to Mesh</i> can reuse the source's "
@@ -148,12 +144,11 @@ FilterSpec cross_parameterize_filter() {
       "<p>Reports flipped triangles (0 for a bijective map), the maximum and RMS "
       "height error of mapped vertices (mm), area and angle distortion, and the "
       "time. Colours both meshes per vertex by corresponding patch: the same colour "
-      "marks corresponding regions, to check the map at a glance.</p>") + kReference;
-  f.arity = Arity::MeshParameters;
-  f.filter_class = kRemeshingClass;
-  f.needs_faces = true;
-  f.colors_vertices = true;
-  return typed_filter(f, crossparam_params(), run_cross_parameterize);
+      "marks corresponding regions, to check the map at a glance.</p>") +
+      kReference;
+  return typed_filter({FilterId::CrossParameterize, "Cross-Parameterize Meshes", "cross_parameterize_meshes",
+                       description, Arity::MeshParameters, kRemeshingClass, true, {}, true},
+                      crossparam_params(), run_cross_parameterize);
 }
 
 }  // namespace slicereuse::plugin

@@ -59,11 +59,7 @@ Result run_export_masks(const ExportParams& p, Host& host) {
 }  // namespace
 
 FilterSpec export_masks_filter() {
-  FilterSpec f;
-  f.id = FilterId::ExportMasks;
-  f.name = "Export Mask Images";
-  f.python_name = "export_mask_images";
-  f.description = std::string(
+  const std::string description = std::string(
       "<p>Rasterizes the layers of a contour file into one mask image per layer "
       "for mask-projection (DLP/LCD) printers: a folder of PNG images "
       "(NNNNN.png), or a Prusa SL1 archive when the output path ends in .sl1.</p>"
@@ -72,11 +68,11 @@ FilterSpec export_masks_filter() {
       "The model's XY origin sits at the image centre, shifted by the offsets; row "
       "0 is the top of the image (largest y). Pixel sizes are in micrometres, "
       "offsets in mm. With an empty contour file the contours come from the current "
-      "layer, a contour file opened in MeshLab (.ctr, .srb or .cli).</p>") + kReference;
-  f.arity = Arity::None;
-  f.filter_class = kLayerClass;
-  f.needs_faces = false;
-  return typed_filter(f, export_params(), run_export_masks);
+      "layer, a contour file opened in MeshLab (.ctr, .srb or .cli).</p>") +
+      kReference;
+  return typed_filter({FilterId::ExportMasks, "Export Mask Images", "export_mask_images", description,
+                       Arity::None, kLayerClass, false},
+                      export_params(), run_export_masks);
 }
 
 }  // namespace slicereuse::plugin

@@ -143,11 +143,7 @@ Result run_print_job(const PrintJobParams& p, Host& host) {
 }  // namespace
 
 FilterSpec print_job_filter() {
-  FilterSpec f;
-  f.id = FilterId::MakePrintJob;
-  f.name = "Make Print Job";
-  f.python_name = "make_print_job";
-  f.description = std::string(
+  const std::string description = std::string(
       "<p>Makes the current mesh's print job in one step, in memory: its layers, "
       "either transferred from a family member's encoding (as <i>Transfer Slicing "
       "to Mesh</i> in exact mode, so the result equals direct slicing) or sliced "
@@ -161,11 +157,11 @@ FilterSpec print_job_filter() {
       "<p>When directly sliced contours would take more than a quarter of the memory "
       "still available (a large part at a very fine layer), the mesh is sliced and "
       "its masks made a range of layers at a time, so memory stays bounded; the log "
-      "says how many ranges.</p>") + kReference;
-  f.arity = Arity::CurrentMesh;
-  f.filter_class = kLayerClass;
-  f.needs_faces = true;
-  return typed_filter(f, print_job_params(), run_print_job);
+      "says how many ranges.</p>") +
+      kReference;
+  return typed_filter({FilterId::MakePrintJob, "Make Print Job", "make_print_job", description,
+                       Arity::CurrentMesh, kLayerClass, true},
+                      print_job_params(), run_print_job);
 }
 
 }  // namespace slicereuse::plugin

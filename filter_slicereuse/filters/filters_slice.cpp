@@ -128,11 +128,7 @@ Result run_slice(const SliceParams& p, Host& host) {
 }  // namespace
 
 FilterSpec slice_filter() {
-  FilterSpec f;
-  f.id = FilterId::SliceWithEncoding;
-  f.name = "Slice Mesh with Encoding";
-  f.python_name = "slice_mesh_with_encoding";
-  f.description = std::string(
+  const std::string description = std::string(
       "<p>Slices the current mesh into horizontal layers of closed contours for "
       "layer-based 3D printing, and records for every contour point its "
       "<i>encoding</i>: the mesh face it lies on and its area (barycentric) "
@@ -147,11 +143,11 @@ FilterSpec slice_filter() {
       "and counted.</p>"
       "<p>Writes a contour file and an encoding file (text .ctr / .enc, or binary "
       ".srb; see docs/formats.md). Both appear together or not at all. Optionally "
-      "adds a few layers' contours as a new edge-mesh layer to look at.</p>") + kReference;
-  f.arity = Arity::CurrentMesh;
-  f.filter_class = kLayerClass;
-  f.needs_faces = true;
-  return typed_filter(f, slice_params(), run_slice);
+      "adds a few layers' contours as a new edge-mesh layer to look at.</p>") +
+      kReference;
+  return typed_filter({FilterId::SliceWithEncoding, "Slice Mesh with Encoding", "slice_mesh_with_encoding",
+                       description, Arity::CurrentMesh, kLayerClass, true},
+                      slice_params(), run_slice);
 }
 
 }  // namespace slicereuse::plugin

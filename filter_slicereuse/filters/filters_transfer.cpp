@@ -107,11 +107,7 @@ Result run_transfer(const TransferParams& p, Host& host) {
 }  // namespace
 
 FilterSpec transfer_filter() {
-  FilterSpec f;
-  f.id = FilterId::TransferSlicing;
-  f.name = "Transfer Slicing to Mesh";
-  f.python_name = "transfer_slicing_to_mesh";
-  f.description = std::string(
+  const std::string description = std::string(
       "<p>Computes the layer contours of a customized family member from the "
       "encoding of a member that was sliced before (<i>Slice Mesh with "
       "Encoding</i>), instead of slicing it again. Without a map, the target mesh "
@@ -130,11 +126,11 @@ FilterSpec transfer_filter() {
       "that (mm) is reported, and so are contours dropped because the target has no "
       "surface at their height near them.</p>"
       "<p>Writes the target's contour file and, in exact mode, its own encoding, so "
-      "it can be a source later. Both appear together or not at all.</p>") + kReference;
-  f.arity = Arity::MeshParameters;
-  f.filter_class = kLayerClass;
-  f.needs_faces = true;
-  return typed_filter(f, transfer_params(), run_transfer);
+      "it can be a source later. Both appear together or not at all.</p>") +
+      kReference;
+  return typed_filter({FilterId::TransferSlicing, "Transfer Slicing to Mesh", "transfer_slicing_to_mesh",
+                       description, Arity::MeshParameters, kLayerClass, true},
+                      transfer_params(), run_transfer);
 }
 
 }  // namespace slicereuse::plugin
