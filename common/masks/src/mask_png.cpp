@@ -108,8 +108,9 @@ void encode_mask_png(const uint8_t* pixels, int width, int height, int bits,
 
 void encode_mask_png(const MaskRuns& runs, std::vector<uint8_t>& out) {
   check_size(runs.width, runs.height, 8);
-  if (runs.row_begin.size() != size_t(runs.height) + 1 || runs.columns.size() != 2 * size_t(runs.row_begin.back()))
-    throw Error("cannot encode mask runs: their row index does not match the image height");
+  if (runs.row_begin.size() != size_t(runs.height) + 1 || runs.columns.size() != 2 * size_t(runs.row_begin.back()) ||
+      runs.levels.size() != size_t(runs.row_begin.back()))
+    throw Error("cannot encode mask runs: their row index does not match the image height or the runs");
   thread_local RunDeflater deflater;
   deflater.reset();  // a former call may have thrown half-way
   const size_t data_begin = png_begin(runs.width, runs.height, 8, out);
@@ -118,6 +119,7 @@ void encode_mask_png(const MaskRuns& runs, std::vector<uint8_t>& out) {
   uint8_t byte = 0;
   size_t count = 0;
   auto run = [&](uint8_t b, size_t n) {
+    if (n == 0) return;
     if (b != byte) {
       deflater.add_run(byte, count);
       byte = b;
@@ -133,7 +135,7 @@ void encode_mask_png(const MaskRuns& runs, std::vector<uint8_t>& out) {
       if (a < at || b < a || b > size_t(runs.width))
         throw Error("cannot encode mask runs: row " + std::to_string(r) + " has runs out of order or outside the image");
       run(0, a - at);
-      run(255, b - a);
+      run(runs.levels[i], b - a);
       at = b;
     }
     run(0, size_t(runs.width) - at);

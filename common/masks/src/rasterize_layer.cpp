@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "coverage_runs.h"
+#include "pixel_map.h"
 #include "slicereuse/masks/printer_profile.h"
 #include "slicereuse/masks/rasterize_layer.h"
 #include "slicereuse/util/error.h"
@@ -11,11 +13,8 @@
 namespace slicereuse {
 namespace {
 
-// Anti-aliased masks sample every pixel on a kSupersample x kSupersample grid of sample centres
-// with the same nonzero rule as binary masks (64 samples -> 65 grey levels).
-constexpr int kSupersample = 8;
-
-// An edge in sample units, stored from its lower endpoint (smaller row coordinate) so both
+// Binary masks sample each pixel at its centre: sample i of a row or column is at i + 1/2.
+// An edge in pixel units, stored from its lower endpoint (smaller row coordinate) so both
 // directions of the same segment give bit-identical crossings.
 struct Edge {
   double ya, xa, dy, dx;   // lower endpoint, and upper endpoint minus lower
@@ -29,11 +28,7 @@ struct Scratch {
   std::vector<Edge> edges;
   std::vector<uint32_t> row_begin;  // per sample row, where its crossings start
   std::vector<uint32_t> crossings;  // per row: 2 * first sample at or after the crossing + (dir > 0)
-  std::vector<uint16_t> coverage;
 };
-
-// NaN maps to lo, so a broken coordinate can never produce an out-of-range index.
-double clamp(double x, double lo, double hi) { return !(x >= lo) ? lo : (x > hi ? hi : x); }
 
 // Index of the first sample whose centre (i + 1/2) is at or after x, within [0, n].
 // (Clamped to [0, n] after rounding: ceil of the clamped value alone could give -1 or n + 1,
@@ -41,25 +36,21 @@ double clamp(double x, double lo, double hi) { return !(x >= lo) ? lo : (x > hi 
 // The ceiling by truncation and one comparison: std::ceil is a library call on baseline x86-64
 // (no SSE4.1 round), and this runs for every contour point and every crossing.
 int first_sample_at_or_after(double x, int n) {
-  const double t = clamp(x - 0.5, -1.0, double(n) + 1.0);
+  const double t = clamp_coordinate(x - 0.5, -1.0, double(n) + 1.0);
   const int truncated = int(t);
   return std::clamp(truncated + int(double(truncated) < t), 0, n);
 }
 
-// Builds the oriented edges of the closed contours of layer k in sample coordinates
-// (columns u to the right, rows v downwards, scale samples per pixel). Rows first: most edges
-// of a fine contour cross no sample row centre, and those are skipped by comparing their ends'
-// first rows, computed once per point. Which edges do cross follows no pattern a branch
+// Builds the oriented edges of the closed contours of layer k in pixel coordinates
+// (pixel_map.h, mirrors applied). Rows first: most edges of a fine contour cross no sample row
+// centre, and those are skipped by comparing their ends' first rows, computed once per point. Which edges do cross follows no pattern a branch
 // predictor could learn (a test per point mispredicts about every other point), so the
 // comparisons are gathered 64 at a time into a bit mask whose set bits are then visited.
 // Edges come in contour order, the closing edge last.
-size_t build_edges(const Slices& s, size_t k, const PrinterProfile& p, int scale, Scratch& w,
-                   int rows) {
-  const double sx = scale * 1000.0 / p.pixel_size_x_um, sy = scale * 1000.0 / p.pixel_size_y_um;
-  const double cu = 0.5 * scale * p.width_px, cv = 0.5 * scale * p.height_px;
-  const double su = p.mirror_x ? -sx : sx, sv = p.mirror_y ? sy : -sy;
-  // Through locals: the compiler cannot tell that the writes to w leave s and p alone.
-  const double ox = p.offset_x_mm, oy = p.offset_y_mm;
+size_t build_edges(const Slices& s, size_t k, const PrinterProfile& p, Scratch& w) {
+  // A local copy: the compiler cannot tell that the writes to w leave s and p alone.
+  const PixelMap map = pixel_map(p, true);
+  const int rows = p.height_px;
   w.edges.clear();
   size_t open = 0;
   for (uint64_t c = s.layer_begin[k]; c < s.layer_begin[k + 1]; ++c) {
@@ -76,12 +67,12 @@ size_t build_edges(const Slices& s, size_t k, const PrinterProfile& p, int scale
     double* const v = w.v.data();
     int* const row = w.row.data();
     for (uint64_t i = 0; i < n; ++i) {
-      v[i] = cv + sv * (xyz[3 * i + 1] + oy);
+      v[i] = map.v(xyz[3 * i + 1]);
       row[i] = first_sample_at_or_after(v[i], rows);
     }
     v[n] = v[0];
     row[n] = row[0];
-    auto u = [&](uint64_t i) { return cu + su * (xyz[3 * (i == n ? 0 : i)] + ox); };
+    auto u = [&](uint64_t i) { return map.u(xyz[3 * (i == n ? 0 : i)]); };
     for (uint64_t base = 0; base < n; base += 64) {
       const uint64_t m = std::min<uint64_t>(64, n - base);
       uint64_t crossing = 0;
@@ -209,55 +200,61 @@ void check_layer(const Slices& s, size_t k, const PrinterProfile& profile) {
   if (!s.has_points()) throw Error("the slices carry no contour points to rasterize");
 }
 
-}  // namespace
+// Anti-aliasing with gamma 0 is PrusaSlicer's threshold: the binary mask.
+bool is_binary(const PrinterProfile& p) { return !p.antialiasing || p.gamma == 0; }
 
-size_t rasterize_layer_runs(const Slices& s, size_t k, const PrinterProfile& profile, MaskRuns& out) {
-  check_layer(s, k, profile);
-  if (profile.antialiasing) throw Error("anti-aliased masks have grey levels and cannot be given as runs");
+// The binary mask as runs (the layer checked).
+size_t binary_runs(const Slices& s, size_t k, const PrinterProfile& profile, MaskRuns& out) {
   thread_local Scratch w;
   const int H = profile.height_px;
   out.width = profile.width_px;
   out.height = H;
   out.row_begin.assign(size_t(H) + 1, 0);
   out.columns.clear();
-  const size_t open = build_edges(s, k, profile, 1, w, H);
+  out.levels.clear();
+  const size_t open = build_edges(s, k, profile, w);
   // Rows come in order and runs left to right (see sweep): count per row, then sum up.
   sweep(w, H, profile.width_px, [&](int r, int a, int b) {
     ++out.row_begin[size_t(r) + 1];
     out.columns.push_back(uint16_t(a));
     out.columns.push_back(uint16_t(b));
+    out.levels.push_back(255);
   });
   for (int r = 0; r < H; ++r) out.row_begin[size_t(r) + 1] += out.row_begin[size_t(r)];
   return open;
 }
 
+}  // namespace
+
+size_t rasterize_layer_runs(const Slices& s, size_t k, const PrinterProfile& profile, MaskRuns& out) {
+  check_layer(s, k, profile);
+  if (profile.antialiasing) throw Error("anti-aliased masks have grey levels and cannot be given as runs");
+  return binary_runs(s, k, profile, out);
+}
+
+size_t rasterize_layer_antialiased_runs(const Slices& s, size_t k, const PrinterProfile& profile, MaskRuns& out) {
+  check_layer(s, k, profile);
+  if (!profile.antialiasing) throw Error("anti-aliased runs asked for a binary mask: antialiasing is off");
+  return is_binary(profile) ? binary_runs(s, k, profile, out) : coverage_runs(s, k, profile, out);
+}
+
 size_t rasterize_layer(const Slices& s, size_t k, const PrinterProfile& profile, uint8_t* out) {
   check_layer(s, k, profile);
-  thread_local Scratch w;
   const int W = profile.width_px, H = profile.height_px;
   std::memset(out, 0, size_t(W) * size_t(H));
-  if (!profile.antialiasing) {
-    const size_t open = build_edges(s, k, profile, 1, w, H);
+  if (is_binary(profile)) {
+    thread_local Scratch w;
+    const size_t open = build_edges(s, k, profile, w);
     sweep(w, H, W, [&](int r, int a, int b) { std::memset(out + size_t(r) * W + a, 255, b - a); });
     return open;
   }
-  constexpr int S = kSupersample;
-  const size_t open = build_edges(s, k, profile, S, w, H * S);
-  w.coverage.assign(size_t(W) * H, 0);
-  uint16_t* cov = w.coverage.data();
-  sweep(w, H * S, W * S, [&](int r, int a, int b) {
-    uint16_t* row = cov + size_t(r / S) * W;
-    const int ca = a / S, cb = (b - 1) / S;
-    if (ca == cb) {
-      row[ca] += uint16_t(b - a);
-      return;
+  thread_local MaskRuns runs;
+  const size_t open = coverage_runs(s, k, profile, runs);
+  for (int r = 0; r < H; ++r)
+    for (uint32_t i = runs.row_begin[size_t(r)]; i < runs.row_begin[size_t(r) + 1]; ++i) {
+      const uint16_t a = runs.columns[2 * size_t(i)], b = runs.columns[2 * size_t(i) + 1];
+      std::memset(out + size_t(r) * W + a, runs.levels[i], b - a);
     }
-    row[ca] += uint16_t(S * (ca + 1) - a);
-    for (int c = ca + 1; c < cb; ++c) row[c] += S;
-    row[cb] += uint16_t(b - S * cb);
-  });
-  for (size_t i = 0, n = size_t(W) * H; i < n; ++i)
-    out[i] = uint8_t((cov[i] * 255u + S * S / 2) / (S * S));
   return open;
 }
 
