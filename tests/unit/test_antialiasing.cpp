@@ -280,31 +280,51 @@ TEST(Antialiasing, MirrorsFlipExactly) {
   }
 }
 
-TEST(Antialiasing, RunsAreOrderedAndEncodeThePixels) {
+namespace {
+
+// The runs checked for order and levels, and encoded; the direct PNG (what .sl1 export writes)
+// must be the same bytes, mirrored or not, at gamma 0 (binary runs) too.
+void expect_runs_encode_the_pixels_as_the_direct_png_does(const Slices& s, size_t k, const PrinterProfile& p) {
+  MaskRuns runs;
+  rasterize_layer_antialiased_runs(s, k, p, runs);
+  ASSERT_EQ(runs.row_begin.size(), size_t(p.height_px) + 1);
+  ASSERT_EQ(runs.levels.size(), runs.row_begin.back());
+  for (int r = 0; r < p.height_px; ++r)
+    for (uint32_t i = runs.row_begin[size_t(r)]; i < runs.row_begin[size_t(r) + 1]; ++i) {
+      EXPECT_LT(runs.columns[2 * i], runs.columns[2 * i + 1]);
+      EXPECT_NE(runs.levels[i], 0);
+      if (i > runs.row_begin[size_t(r)]) EXPECT_LE(runs.columns[2 * i - 1], runs.columns[2 * i]);
+    }
+  if (!runs.columns.empty()) EXPECT_LE(runs.columns.back(), p.width_px);
+  std::vector<uint8_t> png, direct;
+  encode_mask_png(runs, png);
+  MaskImage back;
+  decode_mask_png(png.data(), png.size(), "runs", back);
+  EXPECT_EQ(back.pixels, raster(s, k, p));
+  rasterize_layer_antialiased_png(s, k, p, direct);
+  EXPECT_EQ(direct, png);
+}
+
+}  // namespace
+
+TEST(Antialiasing, RunsAreOrderedAndEncodeThePixelsAsTheDirectPngDoes) {
   const std::vector<Layer> layers = shapes();
   const Slices s = test::make_slices(layers);
-  PrinterProfile p = antialiased(profiles()[1], 1);
-  p.mirror_x = true;
-  for (size_t k = 0; k < layers.size(); ++k) {
-    MaskRuns runs;
-    rasterize_layer_antialiased_runs(s, k, p, runs);
-    ASSERT_EQ(runs.row_begin.size(), size_t(p.height_px) + 1);
-    ASSERT_EQ(runs.levels.size(), runs.row_begin.back());
-    for (int r = 0; r < p.height_px; ++r)
-      for (uint32_t i = runs.row_begin[size_t(r)]; i < runs.row_begin[size_t(r) + 1]; ++i) {
-        EXPECT_LT(runs.columns[2 * i], runs.columns[2 * i + 1]);
-        EXPECT_NE(runs.levels[i], 0);
-        if (i > runs.row_begin[size_t(r)]) EXPECT_LE(runs.columns[2 * i - 1], runs.columns[2 * i]);
+  for (int mirror = 0; mirror < 4; ++mirror)
+    for (double gamma : {1.0, 0.45, 0.0}) {
+      PrinterProfile p = antialiased(profiles()[1], gamma);
+      p.mirror_x = mirror & 1;
+      p.mirror_y = mirror & 2;
+      for (size_t k = 0; k < layers.size(); ++k) {
+        SCOPED_TRACE("layer " + std::to_string(k) + ", gamma " + std::to_string(gamma) + ", mirror " +
+                     std::to_string(mirror));
+        expect_runs_encode_the_pixels_as_the_direct_png_does(s, k, p);
       }
-    EXPECT_LE(runs.columns.back(), p.width_px);
-    std::vector<uint8_t> png;
-    encode_mask_png(runs, png);
-    MaskImage back;
-    decode_mask_png(png.data(), png.size(), "runs", back);
-    EXPECT_EQ(back.pixels, raster(s, k, p)) << "layer " << k;
-  }
+    }
   MaskRuns runs;
   EXPECT_THROW(rasterize_layer_antialiased_runs(s, 0, small_display(), runs), Error);  // antialiasing off
+  std::vector<uint8_t> png;
+  EXPECT_THROW(rasterize_layer_antialiased_png(s, 0, small_display(), png), Error);
 }
 
 TEST(Antialiasing, GammaMustBeAFiniteNumberNotBelowZero) {

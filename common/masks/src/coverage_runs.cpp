@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "pixel_map.h"
+#include "png_rows.h"
 
 namespace slicereuse {
 namespace {
@@ -20,7 +21,8 @@ constexpr int64_t kFull = int64_t(2) * kOne * kOne;
 
 // A point of a contour in pixel coordinates, and the pixel it lies in: row in [-1, H] and
 // column in [-1, W], clamped (-1 and H or W stand for everything beyond the display), with its
-// fixed-point position inside that pixel. Both edges at a point use these same numbers, which
+// fixed-point position inside that pixel (rounded to it, so a point may land on the next
+// pixel's border). Both edges at a point use these same numbers, which
 // makes the heights of the pieces along a contour add up exactly.
 struct Point {
   double u, v;
@@ -28,52 +30,57 @@ struct Point {
   int32_t fy, fx;  // 0..kOne
 };
 
-// What the pieces of edges in one pixel add to it: area, the sum of dv * (2 kOne - x_in -
-// x_out) over the pieces (height times the part of the pixel right of the piece, doubled), and
-// cover, the sum of their heights dv, which every pixel further right in the row gets in full.
-// key = row << 16 | (column + 1), column -1 collecting what lies left of the display.
-struct Cell {
-  int64_t area;
-  int32_t cover;
-  uint32_t key;
-};
+// t in [0, 1] as 0..kOne, rounded (t just outside, from rounding, is clamped; NaN gives 0).
+int32_t fraction(double t) { return int32_t(std::min(1.0, std::max(0.0, t)) * kOne + 0.5); }
 
-// floor(x) of x in [-1, n], clamped there first. By truncation and one comparison: std::floor
-// is a library call on baseline x86-64, and this runs twice per contour point.
-int32_t floor_within(double x, int n) {
-  const double t = clamp_coordinate(x, -1.0, double(n));
-  const int32_t truncated = int32_t(t);
-  return truncated - int32_t(double(truncated) > t);
+// x clamped to [-1, n] (NaN to -1) in fixed point, kOne per pixel, rounded: its pixel is the
+// value >> kFractionBits, its position inside the pixel the low bits. (One conversion, where
+// std::floor would be a library call on baseline x86-64.)
+int64_t fixed_within(double x, int n) {
+  return int64_t((std::min(double(n), std::max(-1.0, x)) + 1) * kOne + 0.5) - kOne;
 }
 
-// t in [0, 1] as 0..kOne, rounded (t just outside, from rounding, is clamped).
-int32_t fraction(double t) { return int32_t(clamp_coordinate(t, 0.0, 1.0) * kOne + 0.5); }
-
+// A point that is not finite gets row -1, so its edges are either skipped or (an edge to a
+// finite point) dropped by add_edge.
 Point pixel_point(const PixelMap& m, double x, double y, int W, int H) {
   Point p;
   p.u = m.u(x);
   p.v = m.v(y);
-  p.row = floor_within(p.v, H);
-  p.col = floor_within(p.u, W);
-  p.fy = fraction(p.v - p.row);
-  p.fx = fraction(p.u - p.col);
+  const int64_t u = fixed_within(p.u, W), v = fixed_within(p.v, H);
+  p.row = std::isfinite(p.u) ? int32_t(v >> kFractionBits) : -1;
+  p.col = int32_t(u >> kFractionBits);
+  p.fy = int32_t(v & (kOne - 1));
+  p.fx = int32_t(u & (kOne - 1));
   return p;
 }
 
-// A piece of height dv (signed: positive when the contour runs downwards) in pixel (row, col),
-// entering and leaving at x_in and x_out, x_sum = x_in + x_out. Consecutive pieces in the same
-// pixel (a fine contour has several edges per pixel) are summed into one cell.
-void add_piece(std::vector<Cell>& cells, int32_t row, int32_t col, int32_t dv, int32_t x_sum) {
-  if (dv == 0) return;
-  const uint32_t key = uint32_t(row) << 16 | uint32_t(col + 1);
-  const int64_t area = int64_t(dv) * (2 * kOne - x_sum);
-  if (!cells.empty() && cells.back().key == key) {
-    cells.back().area += area;
-    cells.back().cover += dv;
-  } else {
-    cells.push_back({area, dv, key});
+// The sums of a strip of rows [r0, r1), per pixel and, in column -1, for everything left of the
+// display: area, the sum of dv * (2 kOne - x_in - x_out) over the pieces of edges in the pixel
+// (a piece's height times the part of the pixel right of it, doubled), and cover, the sum of
+// their heights dv, which every pixel further right in the row gets in full; and which pixels
+// have any. A strip is small enough to stay in cache: the pieces are added straight into it,
+// in any order (the sums are of integers).
+struct Strip {
+  struct Sums {
+    int64_t area, cover;
+  };
+  int32_t r0, r1;
+  int W;
+  size_t words;  // of the bit mask of touched pixels, per row
+  Sums* sums;    // (r - r0) * (W + 1) + column + 1
+  uint64_t* touched;
+
+  // A piece of height dv (signed: positive when the contour runs downwards) in pixel (row, col),
+  // entering and leaving at x_in and x_out, x_sum = x_in + x_out. A piece without height adds
+  // nothing, and its pixel comes out as if untouched.
+  void add(int32_t row, int32_t col, int32_t dv, int32_t x_sum) const {
+    const size_t j = size_t(col + 1);
+    Sums& s = sums[size_t(row - r0) * size_t(W + 1) + j];
+    s.area += int64_t(dv) * (2 * kOne - x_sum);
+    s.cover += dv;
+    touched[size_t(row - r0) * words + (j >> 6)] |= uint64_t(1) << (j & 63);
   }
-}
+};
 
 // Where edge (a, b) crosses row boundary y: the row below it (v = y is its top), column and
 // position in it.
@@ -81,20 +88,22 @@ Point at_row_boundary(const Point& a, double du_dv, int32_t y, int W) {
   Point p;
   p.u = a.u + (y - a.v) * du_dv;
   p.v = y;
+  const int64_t u = fixed_within(p.u, W);
   p.row = y;
-  p.col = floor_within(p.u, W);
+  p.col = int32_t(u >> kFractionBits);
   p.fy = 0;
-  p.fx = fraction(p.u - p.col);
+  p.fx = int32_t(u & (kOne - 1));
   return p;
 }
 
 // The pieces inside row r of edge (a, b), a its lower endpoint, from in to out (in that row or on
 // its top and bottom, in.fy <= out.fy). Column crossings are computed from a.
 void add_row_pieces(const Point& in, const Point& out, const Point& a, const Point& b, int32_t r, int32_t sign,
-                    int W, std::vector<Cell>& cells) {
+                    const Strip& st) {
+  const int W = st.W;
   if (in.fy == out.fy) return;  // no height in this row
   if (in.col == out.col) {
-    if (in.col < W) add_piece(cells, r, in.col, sign * (out.fy - in.fy), in.fx + out.fx);
+    if (in.col < W) st.add(r, in.col, sign * (out.fy - in.fy), in.fx + out.fx);
     return;
   }
   // Heights where the edge crosses column boundary x: monotone in x (rounding is), and kept
@@ -105,95 +114,80 @@ void add_row_pieces(const Point& in, const Point& out, const Point& a, const Poi
   if (in.col < out.col) {  // rightwards: each pixel left through its right side
     for (; c < out.col && c < W; ++c) {
       const int32_t next = height_at(c + 1);
-      add_piece(cells, r, c, sign * (next - fy), fx + kOne);
+      st.add(r, c, sign * (next - fy), fx + kOne);
       fy = next;
       fx = 0;
     }
-    if (c < W) add_piece(cells, r, c, sign * (out.fy - fy), fx + out.fx);
+    if (c < W) st.add(r, c, sign * (out.fy - fy), fx + out.fx);
   } else {  // leftwards, from column W at most: what lies beyond the display is skipped
     for (; c > out.col; --c) {
       const int32_t next = height_at(c);
-      if (c < W) add_piece(cells, r, c, sign * (next - fy), fx);
+      if (c < W) st.add(r, c, sign * (next - fy), fx);
       fy = next;
       fx = kOne;
     }
-    add_piece(cells, r, c, sign * (out.fy - fy), fx + out.fx);
+    st.add(r, c, sign * (out.fy - fy), fx + out.fx);
   }
 }
 
-// An edge that crosses at most one row boundary and one column boundary, inside the display
-// (nearly every edge of a fine contour that leaves its pixel): its two or three pieces, without
-// add_edge's loops. a is the lower endpoint, b is in a's row or the next, and in a's column or
-// a neighbouring one.
-void add_short_edge(const Point& a, const Point& b, int32_t sign, std::vector<Cell>& cells) {
-  const int32_t x = std::max(a.col, b.col);       // the column boundary, if crossed
-  const int32_t side = b.col > a.col ? kOne : 0;  // where the edge leaves a's column
-  if (a.row == b.row) {
-    const double dv_du = (b.v - a.v) / (b.u - a.u);
-    const int32_t t = std::clamp(fraction((a.v - a.row) + (x - a.u) * dv_du), a.fy, b.fy);
-    add_piece(cells, a.row, a.col, sign * (t - a.fy), a.fx + side);
-    add_piece(cells, a.row, b.col, sign * (b.fy - t), kOne - side + b.fx);
-    return;
+// The pieces of edge (a, b), a its lower endpoint, b below it, when both lie in the strip and
+// on the display (nearly every edge): the edge is followed from pixel to pixel, choosing at
+// each step without a branch whether it next crosses a row or a column boundary (which a
+// branch predictor could not guess). Each crossing is computed from a.
+void add_inner_edge(const Point& a, const Point& b, int32_t sign, const Strip& st) {
+  const int32_t step_c = b.col < a.col ? -1 : 1, side = b.col < a.col ? 0 : kOne;  // a's side b lies on
+  int32_t n = b.row - a.row + (b.col - a.col) * step_c;  // boundaries crossed
+  int32_t r = a.row, c = a.col, fy = a.fy, fx = a.fx;   // the piece so far
+  if (n > 0) {
+    const double du_dv = (b.u - a.u) / (b.v - a.v), dv_du = (b.v - a.v) / (b.u - a.u);
+    double y = r + 1, x = c + (step_c > 0);  // the next row and column boundaries
+    for (; n > 0; --n) {
+      const double u_y = a.u + (y - a.v) * du_dv, v_x = a.v + (x - a.u) * dv_du;
+      const bool row_next = r < b.row && (c == b.col || y <= v_x);
+      const int32_t t_end = row_next ? kOne : std::clamp(fraction(v_x - r), fy, r == b.row ? b.fy : kOne);
+      const int32_t x_end = row_next ? fraction(u_y - c) : side;
+      st.add(r, c, sign * (t_end - fy), fx + x_end);
+      fy = row_next ? 0 : t_end;
+      fx = row_next ? x_end : kOne - side;
+      r += row_next;
+      c += row_next ? 0 : step_c;
+      y += row_next;
+      x += row_next ? 0 : step_c;
+    }
   }
-  const double u_y = a.u + (b.row - a.v) * ((b.u - a.u) / (b.v - a.v));  // where it enters b's row
-  if (a.col == b.col) {
-    const int32_t fx = fraction(u_y - a.col);
-    add_piece(cells, a.row, a.col, sign * (kOne - a.fy), a.fx + fx);
-    add_piece(cells, b.row, b.col, sign * b.fy, fx + b.fx);
-    return;
-  }
-  const double dv_du = (b.v - a.v) / (b.u - a.u);
-  if (side ? u_y < x : u_y > x) {  // the row boundary first, through pixel (b.row, a.col)
-    const int32_t fx = fraction(u_y - a.col);
-    const int32_t t = std::clamp(fraction((a.v - b.row) + (x - a.u) * dv_du), 0, b.fy);
-    add_piece(cells, a.row, a.col, sign * (kOne - a.fy), a.fx + fx);
-    add_piece(cells, b.row, a.col, sign * t, fx + side);
-    add_piece(cells, b.row, b.col, sign * (b.fy - t), kOne - side + b.fx);
-  } else {  // the column boundary first, through pixel (a.row, b.col)
-    const int32_t t = std::clamp(fraction((a.v - a.row) + (x - a.u) * dv_du), a.fy, kOne);
-    const int32_t fx = fraction(u_y - b.col);
-    add_piece(cells, a.row, a.col, sign * (t - a.fy), a.fx + side);
-    add_piece(cells, a.row, b.col, sign * (kOne - t), kOne - side + fx);
-    add_piece(cells, b.row, b.col, sign * b.fy, fx + b.fx);
-  }
+  st.add(r, c, sign * (b.fy - fy), fx + b.fx);
 }
 
-// The pieces of an edge that leaves its first point's pixel, contour order a -> b. Every
-// crossing with a row or column boundary is computed from the lower endpoint (smaller v), so an
-// edge and its reverse give the same pieces.
-void add_edge(Point a, Point b, int W, int H, std::vector<Cell>& cells) {
-  int32_t sign = 1;
-  if (b.v < a.v) {
-    std::swap(a, b);
-    sign = -1;
+// The pieces of edge (p, q), contour order p -> q, in the strip's rows. Every crossing with a
+// row or column boundary is computed from the lower endpoint (smaller v), so an edge and its
+// reverse give the same pieces, and so does an edge that two strips share.
+void add_edge(const Point& p, const Point& q, const Strip& st) {
+  const bool down = p.v < q.v;
+  const Point& a = down ? p : q;
+  const Point& b = down ? q : p;
+  const int32_t sign = down ? 1 : -1;
+  if (a.row >= st.r0 && b.row < st.r1 && std::min(a.col, b.col) >= 0 && std::max(a.col, b.col) < st.W) {
+    add_inner_edge(a, b, sign, st);
+    return;
   }
   // Horizontal edges have no height and cover nothing; non-finite ones (only possible when the
   // caller skipped validate_slices) are dropped.
   if (!(a.v < b.v) || !std::isfinite(b.v - a.v) || !std::isfinite(b.u - a.u)) return;
-  if (b.row - a.row <= 1 && a.row >= 0 && b.row < H && std::abs(b.col - a.col) <= 1 && std::min(a.col, b.col) >= 0 &&
-      std::max(a.col, b.col) < W) {
-    add_short_edge(a, b, sign, cells);
-    return;
-  }
   if (a.row == b.row) {
-    if (a.row >= 0 && a.row < H) add_row_pieces(a, b, a, b, a.row, sign, W, cells);
+    add_row_pieces(a, b, a, b, a.row, sign, st);
     return;
   }
   // Row by row: where the edge leaves a row is where it enters the next.
   const double du_dv = (b.u - a.u) / (b.v - a.v);
-  int32_t r = a.row;
-  Point in = a;
-  if (r < 0) {
-    r = 0;
-    in = at_row_boundary(a, du_dv, 0, W);
-  }
-  for (const int32_t last = std::min(b.row, H - 1); r <= last; ++r) {
+  int32_t r = std::max(a.row, st.r0);
+  Point in = r == a.row ? a : at_row_boundary(a, du_dv, r, st.W);
+  for (const int32_t last = std::min(b.row, st.r1 - 1); r <= last; ++r) {
     Point out = b;
     if (r != b.row) {
-      out = at_row_boundary(a, du_dv, r + 1, W);
+      out = at_row_boundary(a, du_dv, r + 1, st.W);
       out.fy = kOne;
     }
-    add_row_pieces(in, out, a, b, r, sign, W, cells);
+    add_row_pieces(in, out, a, b, r, sign, st);
     in = out;
     in.fy = 0;
   }
@@ -241,19 +235,37 @@ class CoverageLevels {
   uint8_t first_[(kFull >> kCoarseShift) + 1];
 };
 
+// Edges [first, end) (edge i joins points i and i + 1), all in one strip's rows.
+struct EdgeRange {
+  uint32_t strip, first, end;
+};
+
 struct Scratch {
-  std::vector<Point> points;
-  std::vector<Cell> cells, by_row;
-  std::vector<uint32_t> row_begin;
-  // One row's sums per column + 1 (0: left of the display), and which columns have any.
-  std::vector<int64_t> area, cover;
+  std::vector<Point> points;  // the layer's closed contours, each with its first point repeated
+  std::vector<EdgeRange> ranges, by_strip;
+  std::vector<uint32_t> strip_begin;
+  std::vector<Strip::Sums> sums;
   std::vector<uint64_t> touched;
+  std::vector<std::pair<uint8_t, size_t>> spans;  // a row's, to be mirrored
   CoverageLevels levels;
 };
 
-// Layer k's cells, in contour order. Returns the number of open contours.
-size_t add_cells(const Slices& s, size_t k, const PixelMap& map, int W, int H, Scratch& w) {
-  w.cells.clear();
+// Rows per strip: a power of two, for about kStripPixels pixels' sums (16 bytes each), which
+// stay in cache.
+constexpr size_t kStripPixels = 32768;
+
+int strip_shift(int W) {
+  int shift = 0;
+  while (shift < 16 && (size_t(2) << shift) * size_t(W + 1) <= kStripPixels) ++shift;
+  return shift;
+}
+
+// Layer k's points, and its edges in ranges by strip of 2^shift rows: consecutive edges of a
+// contour in the same strip make one range, an edge across strips a range in each. Edges
+// wholly above or below the display are left out. Returns the number of open contours.
+size_t add_edges(const Slices& s, size_t k, const PixelMap& map, int W, int H, int shift, Scratch& w) {
+  w.points.clear();
+  w.ranges.clear();
   size_t open = 0;
   for (uint64_t c = s.layer_begin[k]; c < s.layer_begin[k + 1]; ++c) {
     if (s.contour_open[c]) {
@@ -263,121 +275,157 @@ size_t add_cells(const Slices& s, size_t k, const PixelMap& map, int W, int H, S
     const uint64_t b = s.contour_begin[c], n = s.contour_begin[c + 1] - b;
     if (n == 0) continue;
     const double* const xyz = s.xyz.data() + 3 * b;
-    // Point n repeats point 0, so the closing edge needs no wrap-around.
-    w.points.resize(n + 1);
-    Point* const pts = w.points.data();
+    const size_t base = w.points.size();
+    w.points.resize(base + n + 1);
+    Point* const pts = w.points.data() + base;
     for (uint64_t i = 0; i < n; ++i) pts[i] = pixel_point(map, xyz[3 * i], xyz[3 * i + 1], W, H);
     pts[n] = pts[0];
+    EdgeRange range{UINT32_MAX, 0, 0};
     for (uint64_t i = 0; i < n; ++i) {
-      const Point &a = pts[i], &b = pts[i + 1];
-      if (a.row != b.row || a.col != b.col) {
-        add_edge(a, b, W, H, w.cells);
-      } else if (a.row >= 0 && a.row < H && a.col < W) {  // most edges of a fine contour: one piece
-        add_piece(w.cells, a.row, a.col, b.fy - a.fy, a.fx + b.fx);
+      const int32_t lo = std::max(std::min(pts[i].row, pts[i + 1].row), 0);
+      const int32_t hi = std::min(std::max(pts[i].row, pts[i + 1].row), H - 1);
+      if (lo > hi) continue;
+      const uint32_t first = uint32_t(lo) >> shift, last = uint32_t(hi) >> shift, e = uint32_t(base + i);
+      if (first == last && first == range.strip && range.end == e) {
+        ++range.end;
+        continue;
       }
+      if (range.first < range.end) w.ranges.push_back(range);
+      range = {first, e, e + 1};
+      for (uint32_t strip = first + 1; strip <= last; ++strip) w.ranges.push_back({strip, e, e + 1});
+    }
+    if (range.first < range.end) w.ranges.push_back(range);
+  }
+  return open;
+}
+
+// Strip row r as spans of one level, left to right, covering the row: emit(level, n). A running
+// sum of the covers left of each column gives the pixels between touched ones (full or empty,
+// exactly, unless an edge passes them without height), and each touched pixel adds its area.
+// Leaves the row's sums and bits zero.
+template <class Emit>
+void sweep_row(const Strip& st, int32_t r, const CoverageLevels& levels, Emit&& emit) {
+  Strip::Sums* const sums = st.sums + size_t(r - st.r0) * size_t(st.W + 1);
+  uint64_t* const touched = st.touched + size_t(r - st.r0) * st.words;
+  // Between touched pixels: nothing, full (a whole number of windings), or rarely anything else.
+  auto level_of = [&](int64_t carry) {
+    return carry == 0 ? 0 : carry >= kOne || carry <= -kOne ? 255 : levels(carry * (2 * kOne));
+  };
+  int64_t carry = 0;  // covers left of the next column, in units of kOne
+  int at = 0;         // columns before it are emitted
+  for (size_t word = 0; word < st.words; ++word) {
+    for (uint64_t bits = std::exchange(touched[word], 0); bits; bits &= bits - 1) {
+      const size_t j = word * 64 + size_t(__builtin_ctzll(bits));
+      const Strip::Sums here = std::exchange(sums[j], Strip::Sums{0, 0});
+      if (j > 0) {
+        const int col = int(j) - 1;
+        if (at < col) emit(level_of(carry), size_t(col - at));
+        emit(levels(carry * (2 * kOne) + here.area), size_t(1));
+        at = col + 1;
+      }
+      carry += here.cover;
+    }
+  }
+  if (at < st.W) emit(level_of(carry), size_t(st.W - at));
+}
+
+// The pixels a sink gets, row by row, top to bottom: row(), then pixels(level, n) covering it.
+// The sink's rows are the image's, mirrors applied: the rows of the unmirrored image in reverse
+// for mirror_y, each row's spans in reverse for mirror_x.
+template <class Sink>
+size_t rasterize_coverage(const Slices& s, size_t k, const PrinterProfile& p, Sink& sink) {
+  thread_local Scratch scratch;
+  Scratch& w = scratch;
+  const int W = p.width_px, H = p.height_px;
+  const int shift = strip_shift(W), rows = 1 << shift;
+  const size_t strips = size_t((H + rows - 1) >> shift);
+  w.levels.set_gamma(p.gamma);
+  const size_t open = add_edges(s, k, pixel_map(p, false), W, H, shift, w);
+
+  // Ranges by strip: counted, then placed (a counting sort); afterwards strip_begin[i] is where
+  // strip i + 1 begins.
+  std::vector<uint32_t>& begin = w.strip_begin;
+  begin.assign(strips + 1, 0);
+  for (const EdgeRange& r : w.ranges) ++begin[r.strip + 1];
+  for (size_t i = 1; i <= strips; ++i) begin[i] += begin[i - 1];
+  w.by_strip.resize(w.ranges.size());
+  for (const EdgeRange& r : w.ranges) w.by_strip[begin[r.strip]++] = r;
+
+  const size_t words = size_t(W) / 64 + 1;
+  w.sums.assign(size_t(rows) * size_t(W + 1), Strip::Sums{0, 0});
+  w.touched.assign(size_t(rows) * words, 0);
+  const Point* const pts = w.points.data();
+  for (size_t n = 0; n < strips; ++n) {
+    const size_t i = p.mirror_y ? strips - 1 - n : n;
+    const int32_t r0 = int32_t(i) * rows;
+    const Strip st{r0, std::min(r0 + rows, H), W, words, w.sums.data(), w.touched.data()};
+    for (uint32_t e = i == 0 ? 0 : begin[i - 1]; e < begin[i]; ++e)
+      for (uint32_t j = w.by_strip[e].first; j < w.by_strip[e].end; ++j) add_edge(pts[j], pts[j + 1], st);
+    for (int32_t m = 0; m < st.r1 - st.r0; ++m) {
+      const int32_t r = p.mirror_y ? st.r1 - 1 - m : st.r0 + m;
+      sink.row();
+      if (!p.mirror_x) {
+        sweep_row(st, r, w.levels, [&](int level, size_t count) { sink.pixels(uint8_t(level), count); });
+        continue;
+      }
+      w.spans.clear();
+      sweep_row(st, r, w.levels, [&](int level, size_t count) { w.spans.push_back({uint8_t(level), count}); });
+      for (size_t q = w.spans.size(); q-- > 0;) sink.pixels(w.spans[q].first, w.spans[q].second);
     }
   }
   return open;
 }
 
-// Appends the runs of one row's cells [first, end) to out: a running sum of the covers left of
-// each column gives the pixels between cells (full or empty, exactly, unless an edge passes
-// them without height), and each cell's own pixel adds its area. Adjacent runs of one level
-// are joined.
-void sweep_row(const Cell* first, const Cell* end, int W, Scratch& w, MaskRuns& out) {
-  int64_t* const area = w.area.data();
-  int64_t* const cover = w.cover.data();
-  uint64_t* const touched = w.touched.data();
-  const CoverageLevels& levels = w.levels;
-  uint32_t lo = UINT32_MAX, hi = 0;
-  for (const Cell* c = first; c < end; ++c) {
-    const uint32_t j = c->key & 0xffff;
-    area[j] += c->area;
-    cover[j] += c->cover;
-    touched[j >> 6] |= uint64_t(1) << (j & 63);
-    lo = std::min(lo, j);
-    hi = std::max(hi, j);
+// Runs of non-zero pixels, adjacent ones of one level joined.
+class RunsSink {
+ public:
+  RunsSink(int W, int H, MaskRuns& out) : out_(out) {
+    out.width = W;
+    out.height = H;
+    out.row_begin.assign(1, 0);
+    out.row_begin.reserve(size_t(H) + 1);
+    out.columns.clear();
+    out.levels.clear();
   }
-  int last_end = -1, last_level = 0;  // the row's last run
-  auto run = [&](int a, int b, int level) {
-    if (a == last_end && level == last_level) {
-      out.columns.back() = uint16_t(b);
-    } else {
-      out.columns.push_back(uint16_t(a));
-      out.columns.push_back(uint16_t(b));
-      out.levels.push_back(uint8_t(level));
-      last_level = level;
-    }
-    last_end = b;
-  };
-  // Between cells: nothing, full (a whole number of windings), or rarely anything else.
-  auto between = [&](int a, int b, int64_t carry) {
-    if (a < b && carry != 0) run(a, b, carry >= kOne || carry <= -kOne ? 255 : levels(carry * (2 * kOne)));
-  };
-  int64_t carry = 0;  // covers left of the next column, in units of kOne
-  int at = 0;         // columns before it have their runs
-  for (uint32_t word = lo >> 6; word <= hi >> 6; ++word) {
-    for (uint64_t bits = std::exchange(touched[word], 0); bits; bits &= bits - 1) {
-      const uint32_t j = word * 64 + uint32_t(__builtin_ctzll(bits));
-      if (j > 0) {
-        const int col = int(j) - 1;
-        between(at, col, carry);
-        const int level = levels(carry * (2 * kOne) + area[j]);
-        if (level != 0) run(col, col + 1, level);
-        at = col + 1;
+  void row() {
+    if (at_ >= 0) out_.row_begin.push_back(uint32_t(out_.levels.size()));
+    at_ = 0;
+    row_first_ = out_.levels.size();
+  }
+  void pixels(uint8_t level, size_t n) {
+    const int end = at_ + int(n);
+    if (level != 0) {
+      if (out_.levels.size() > row_first_ && out_.columns.back() == at_ && out_.levels.back() == level) {
+        out_.columns.back() = uint16_t(end);
+      } else {
+        out_.columns.push_back(uint16_t(at_));
+        out_.columns.push_back(uint16_t(end));
+        out_.levels.push_back(level);
       }
-      carry += cover[j];
-      area[j] = 0;
-      cover[j] = 0;
     }
+    at_ = end;
   }
-  between(at, W, carry);
-}
+  void finish() { out_.row_begin.push_back(uint32_t(out_.levels.size())); }
 
-// Mirrors the runs out holds from run `first` on (one row) left to right.
-void mirror_runs(size_t first, int W, MaskRuns& out) {
-  std::reverse(out.columns.begin() + std::ptrdiff_t(2 * first), out.columns.end());
-  for (size_t i = 2 * first; i < out.columns.size(); ++i) out.columns[i] = uint16_t(W - out.columns[i]);
-  std::reverse(out.levels.begin() + std::ptrdiff_t(first), out.levels.end());
-}
+ private:
+  MaskRuns& out_;
+  int at_ = -1;  // the row's next column; -1 before the first row
+  size_t row_first_ = 0;
+};
 
 }  // namespace
 
 size_t coverage_runs(const Slices& s, size_t k, const PrinterProfile& p, MaskRuns& out) {
-  thread_local Scratch scratch;
-  Scratch& w = scratch;
-  const int W = p.width_px, H = p.height_px;
-  w.levels.set_gamma(p.gamma);
-  const size_t open = add_cells(s, k, pixel_map(p, false), W, H, w);
+  RunsSink sink(p.width_px, p.height_px, out);
+  const size_t open = rasterize_coverage(s, k, p, sink);
+  sink.finish();
+  return open;
+}
 
-  // Cells by row: counted, then placed (a counting sort); afterwards row_begin[r] is where
-  // row r + 1 begins.
-  std::vector<uint32_t>& begin = w.row_begin;
-  begin.assign(size_t(H) + 1, 0);
-  for (const Cell& c : w.cells) ++begin[(c.key >> 16) + 1];
-  for (size_t r = 1; r <= size_t(H); ++r) begin[r] += begin[r - 1];
-  w.by_row.resize(w.cells.size());
-  for (const Cell& c : w.cells) w.by_row[begin[c.key >> 16]++] = c;
-
-  w.area.assign(size_t(W) + 1, 0);
-  w.cover.assign(size_t(W) + 1, 0);
-  w.touched.assign(size_t(W) / 64 + 1, 0);
-  out.width = W;
-  out.height = H;
-  out.row_begin.assign(size_t(H) + 1, 0);
-  out.columns.clear();
-  out.levels.clear();
-  for (int o = 0; o < H; ++o) {
-    const int r = p.mirror_y ? H - 1 - o : o;
-    const Cell* const cells = w.by_row.data();
-    const uint32_t first = r == 0 ? 0 : begin[size_t(r) - 1], end = begin[size_t(r)];
-    if (first < end) {
-      const size_t row_first = out.levels.size();
-      sweep_row(cells + first, cells + end, W, w, out);
-      if (p.mirror_x) mirror_runs(row_first, W, out);
-    }
-    out.row_begin[size_t(o) + 1] = uint32_t(out.levels.size());
-  }
+size_t coverage_png(const Slices& s, size_t k, const PrinterProfile& p, std::vector<uint8_t>& png) {
+  PngRows sink(p.width_px, p.height_px, png);
+  const size_t open = rasterize_coverage(s, k, p, sink);
+  sink.finish();
   return open;
 }
 

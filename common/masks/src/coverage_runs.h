@@ -1,7 +1,9 @@
 #pragma once
 // coverage_runs: layer k's anti-aliased mask (rasterize_layer.h) as runs of equal non-zero
-// grey levels, replacing out's content. The caller has checked the layer and the profile
-// (antialiasing on, gamma > 0). Returns the number of open contours ignored.
+// grey levels, replacing out's content; coverage_png: the same mask straight into an 8-bit PNG
+// (png replaced), the bytes encode_mask_png gives for those runs, without keeping them. The
+// caller has checked the layer and the profile (antialiasing on, gamma > 0). Both return the
+// number of open contours ignored.
 //
 // Each pixel's grey level is round(255 * f^gamma) of f, the exact area of the pixel covered
 // by the region, as font rasterizers compute it (FreeType's "gray" rasterizer, stb_truetype's
@@ -22,7 +24,13 @@
 // and column boundaries from its lower endpoint, alone. A pixel no edge enters has exactly full
 // or no coverage. Mirrors flip the finished rows (rather than the coordinates, whose rounding
 // would not be symmetric), so mirror_x and mirror_y flip the image exactly.
+//
+// Speed: the pieces are added straight into the sums of a strip of rows small enough to stay
+// in cache (the edges are sorted by strip first, not the pieces), and the rows are swept from a
+// bit mask of the pixels touched.
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 #include "slicereuse/masks/mask_png.h"
 #include "slicereuse/masks/printer_profile.h"
@@ -31,5 +39,6 @@
 namespace slicereuse {
 
 size_t coverage_runs(const Slices& s, size_t k, const PrinterProfile& profile, MaskRuns& out);
+size_t coverage_png(const Slices& s, size_t k, const PrinterProfile& profile, std::vector<uint8_t>& png);
 
 }  // namespace slicereuse

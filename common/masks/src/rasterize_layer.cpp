@@ -200,6 +200,11 @@ void check_layer(const Slices& s, size_t k, const PrinterProfile& profile) {
   if (!s.has_points()) throw Error("the slices carry no contour points to rasterize");
 }
 
+void check_antialiased_layer(const Slices& s, size_t k, const PrinterProfile& profile) {
+  check_layer(s, k, profile);
+  if (!profile.antialiasing) throw Error("an anti-aliased mask was asked for, but antialiasing is off");
+}
+
 // Anti-aliasing with gamma 0 is PrusaSlicer's threshold: the binary mask.
 bool is_binary(const PrinterProfile& p) { return !p.antialiasing || p.gamma == 0; }
 
@@ -233,9 +238,18 @@ size_t rasterize_layer_runs(const Slices& s, size_t k, const PrinterProfile& pro
 }
 
 size_t rasterize_layer_antialiased_runs(const Slices& s, size_t k, const PrinterProfile& profile, MaskRuns& out) {
-  check_layer(s, k, profile);
-  if (!profile.antialiasing) throw Error("anti-aliased runs asked for a binary mask: antialiasing is off");
+  check_antialiased_layer(s, k, profile);
   return is_binary(profile) ? binary_runs(s, k, profile, out) : coverage_runs(s, k, profile, out);
+}
+
+size_t rasterize_layer_antialiased_png(const Slices& s, size_t k, const PrinterProfile& profile,
+                                       std::vector<uint8_t>& out) {
+  check_antialiased_layer(s, k, profile);
+  if (!is_binary(profile)) return coverage_png(s, k, profile, out);
+  thread_local MaskRuns runs;
+  const size_t open = binary_runs(s, k, profile, runs);
+  encode_mask_png(runs, out);
+  return open;
 }
 
 size_t rasterize_layer(const Slices& s, size_t k, const PrinterProfile& profile, uint8_t* out) {

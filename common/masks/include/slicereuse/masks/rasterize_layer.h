@@ -17,6 +17,7 @@
 // deterministically on one thread, and mirror_x / mirror_y flip them exactly.
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "slicereuse/masks/mask_png.h"
 #include "slicereuse/masks/printer_profile.h"
@@ -36,5 +37,10 @@ size_t rasterize_layer_runs(const Slices& s, size_t k, const PrinterProfile& pro
 // levels: runs of full pixels, and the grey pixels along the edges.
 size_t rasterize_layer_antialiased_runs(const Slices& s, size_t k, const PrinterProfile& profile,
                                         MaskRuns& out);
+
+// That mask straight into an 8-bit PNG (out replaced): the bytes encode_mask_png gives for
+// rasterize_layer_antialiased_runs, without keeping the runs (what .sl1 export encodes).
+size_t rasterize_layer_antialiased_png(const Slices& s, size_t k, const PrinterProfile& profile,
+                                       std::vector<uint8_t>& out);
 
 }  // namespace slicereuse
