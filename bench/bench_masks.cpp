@@ -133,36 +133,49 @@ double touch_points(const Slices& s, size_t k) {
   return sum;
 }
 
-// One thread, every layer: rasterize_layer_runs, then encode_mask_png of its runs, timed apart
-// in thread CPU time. Each layer's points are read first, untimed, as in mask export.
+// One thread, every layer: rasterize_layer_runs (rasterize_layer_antialiased_runs when
+// anti-aliased), then encode_mask_png of its runs, timed apart in thread CPU time; anti-aliased
+// also rasterize_layer_antialiased_png, which .sl1 export calls instead of the two. Each
+// layer's points are read first, untimed, as in mask export.
 void time_layers(const Slices& s, const PrinterProfile& profile, int runs) {
+  const bool aa = profile.antialiasing;
   MaskRuns mask;
   std::vector<uint8_t> png;
-  std::vector<double> t_runs, t_png;
+  std::vector<double> t_runs, t_png, t_direct;
   size_t n_runs = 0, n_bytes = 0;
   double touched = 0;
   for (int r = 0; r < runs; ++r) {
-    double a = 0, b = 0;
+    double a = 0, b = 0, c = 0;
     n_runs = n_bytes = 0;
     for (size_t k = 0; k < s.layers(); ++k) {
       touched += touch_points(s, k);
       const double t0 = thread_seconds();
-      rasterize_layer_runs(s, k, profile, mask);
+      if (aa)
+        rasterize_layer_antialiased_runs(s, k, profile, mask);
+      else
+        rasterize_layer_runs(s, k, profile, mask);
       const double t1 = thread_seconds();
       encode_mask_png(mask, png);
       b += thread_seconds() - t1;
       a += t1 - t0;
       n_runs += mask.row_begin.back();
       n_bytes += png.size();
+      if (!aa) continue;
+      touched += touch_points(s, k);
+      const double t2 = thread_seconds();
+      rasterize_layer_antialiased_png(s, k, profile, png);
+      c += thread_seconds() - t2;
     }
     t_runs.push_back(a);
     t_png.push_back(b);
+    t_direct.push_back(c);
   }
   const double L = double(s.layers());
-  std::printf("layer, one thread, cpu: rasterize_layer_runs %.1f us, encode_mask_png(runs) %.1f us, together %.1f us;"
-              " %.0f runs, %.0f PNG bytes per layer\n",
-              1e6 * fastest(t_runs) / L, 1e6 * fastest(t_png) / L, 1e6 * (fastest(t_runs) + fastest(t_png)) / L,
-              double(n_runs) / L, double(n_bytes) / L);
+  std::printf("layer, one thread, cpu: %s %.1f us, encode_mask_png(runs) %.1f us, together %.1f us;",
+              aa ? "rasterize_layer_antialiased_runs" : "rasterize_layer_runs", 1e6 * fastest(t_runs) / L,
+              1e6 * fastest(t_png) / L, 1e6 * (fastest(t_runs) + fastest(t_png)) / L);
+  if (aa) std::printf(" rasterize_layer_antialiased_png %.1f us;", 1e6 * fastest(t_direct) / L);
+  std::printf(" %.0f runs, %.0f PNG bytes per layer\n", double(n_runs) / L, double(n_bytes) / L);
   if (touched == 0.5) std::printf("\n");  // keeps touch_points' reads
 }
 
@@ -200,7 +213,7 @@ int main(int argc, char** argv) {
               profile.width_px, profile.height_px, profile.pixel_size_x_um, hi[0] - lo[0],
               hi[1] - lo[1]);
   std::printf("%8zu layers, %zu contours, %zu points\n", s.layers(), s.contours(), s.points());
-  if (wants(steps, "layer") && !aa) time_layers(s, profile, args.runs);
+  if (wants(steps, "layer")) time_layers(s, profile, args.runs);
   if (wants(steps, "deflate")) compare_deflaters(s, profile);
 
   std::filesystem::create_directories(args.out);
