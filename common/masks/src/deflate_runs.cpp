@@ -227,33 +227,32 @@ void RunDeflater::finish(std::vector<uint8_t>& out) {
   // A run of byte b and length n is the literal b, then its n - 1 repeats as matches of 258 and
   // a last match of the rest, or the rest as literals when it is shorter than 3. Counted into
   // locals and per rest, not per deflate symbol: increments of the same few counters, one run
-  // after the other, would wait for each other. For the same reason even and odd runs count
-  // into counters of their own (most runs of an anti-aliased mask are single grey pixels, all
-  // with rest 0).
-  uint64_t freq_of[2][kMaxSymbols] = {};
-  uint64_t per_rest_of[2][kMaxMatch] = {}, full_matches = 0;
-  auto count = [&](uint64_t run, int half) {
+  // after the other, would wait for each other. Strings of literals count byte by byte.
+  uint64_t freq[kMaxSymbols] = {};
+  uint64_t per_rest[kMaxMatch] = {}, full_matches = 0;
+  size_t symbols = 0;
+  const uint8_t* literal = literals_.data();
+  for (const uint64_t run : runs_) {
+    if (run & kLiterals) {
+      const uint64_t n = run & ~kLiterals;
+      for (uint64_t j = 0; j < n; ++j) ++freq[literal[j]];
+      literal += n;
+      symbols += n;
+      continue;
+    }
     const uint64_t repeats = (run >> 8) - 1, full = repeats / kMaxMatch;
     const unsigned rest = unsigned(repeats - full * kMaxMatch);
-    freq_of[half][run & 0xff] += 1 + (rest < 3 ? rest : 0);
+    freq[run & 0xff] += 1 + (rest < 3 ? rest : 0);
     full_matches += full;
-    ++per_rest_of[half][rest];
-  };
-  size_t i = 0;
-  for (; i + 1 < runs_.size(); i += 2) {
-    count(runs_[i], 0);
-    count(runs_[i + 1], 1);
+    ++per_rest[rest];
   }
-  if (i < runs_.size()) count(runs_[i], 0);
-  uint64_t* const freq = freq_of[0];
-  uint64_t* const per_rest = per_rest_of[0];
-  for (size_t s = 0; s < kMaxSymbols; ++s) freq[s] += freq_of[1][s];
-  for (size_t rest = 0; rest < kMaxMatch; ++rest) per_rest[rest] += per_rest_of[1][rest];
   freq[lengths_of[kMaxMatch].symbol] += full_matches;
-  size_t symbols = runs_.size() + full_matches + per_rest[1] + 2 * per_rest[2];
-  for (unsigned rest = 3; rest < kMaxMatch; ++rest) {
+  symbols += full_matches + per_rest[1] + 2 * per_rest[2];
+  for (unsigned rest = 0; rest < kMaxMatch; ++rest) {
+    symbols += per_rest[rest];  // each run's literal
+    if (rest < 3) continue;
     freq[lengths_of[rest].symbol] += per_rest[rest];
-    symbols += per_rest[rest];
+    symbols += per_rest[rest];  // and its last match
   }
   freq[kEndOfBlock] = 1;
   freq[0] |= 1;  // at least two codes, so the code is complete for every inflater
@@ -312,8 +311,15 @@ void RunDeflater::finish(std::vector<uint8_t>& out) {
   }
   // Between drains: a literal and a match (15 + 21 bits), or a literal and two more (3 * 15).
   // The rest after the full matches is chosen without a branch (a mask's runs alternate between
-  // the two kinds unpredictably, an anti-aliased mask's single grey pixels most of all).
+  // the two kinds unpredictably).
+  literal = literals_.data();
   for (const uint64_t run : runs_) {
+    if (run & kLiterals) {
+      const uint64_t n = run & ~kLiterals;
+      for (uint64_t j = 0; j < n; ++j) w.put(lit_code[literal[j]], lit_length[literal[j]]);
+      literal += n;
+      continue;
+    }
     const unsigned byte = unsigned(run & 0xff);
     const uint64_t repeats = (run >> 8) - 1, full = repeats / kMaxMatch;
     const unsigned rest = unsigned(repeats - full * kMaxMatch);
@@ -336,6 +342,7 @@ void RunDeflater::finish(std::vector<uint8_t>& out) {
 
 void RunDeflater::reset() {
   runs_.clear();
+  literals_.clear();
   last_ = -1;
   adler_a_ = 1;
   adler_b_ = 0;

@@ -120,7 +120,7 @@ PngRows::PngRows(int width, int height, std::vector<uint8_t>& out) : deflater_(t
 }
 
 void PngRows::finish() {
-  deflater_.add_run(byte_, count_);
+  flush();
   deflater_.finish(out_);
   png_end(data_begin_, out_);
 }
