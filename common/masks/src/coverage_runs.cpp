@@ -22,8 +22,8 @@ constexpr int64_t kFull = int64_t(2) * kOne * kOne;
 // A point of a contour in pixel coordinates, and the pixel it lies in: row in [-1, H] and
 // column in [-1, W], clamped (-1 and H or W stand for everything beyond the display), with its
 // fixed-point position inside that pixel (rounded to it, so a point may land on the next
-// pixel's border). Both edges at a point use these same numbers, which
-// makes the heights of the pieces along a contour add up exactly.
+// pixel's border). Both edges at a point use these same numbers, which makes the heights of the
+// pieces along a contour add up exactly.
 struct Point {
   double u, v;
   int32_t row, col;
@@ -96,101 +96,51 @@ Point at_row_boundary(const Point& a, double du_dv, int32_t y, int W) {
   return p;
 }
 
-// The pieces inside row r of edge (a, b), a its lower endpoint, from in to out (in that row or on
-// its top and bottom, in.fy <= out.fy). Column crossings are computed from a.
-void add_row_pieces(const Point& in, const Point& out, const Point& a, const Point& b, int32_t r, int32_t sign,
-                    const Strip& st) {
-  const int W = st.W;
-  if (in.fy == out.fy) return;  // no height in this row
-  if (in.col == out.col) {
-    if (in.col < W) st.add(r, in.col, sign * (out.fy - in.fy), in.fx + out.fx);
+// The pieces of edge (p, q), contour order p -> q, in the strip's rows. The edge is followed
+// from pixel to pixel, at each step across whichever of the next row boundary and the next
+// column boundary it meets first. Every crossing is computed from its lower endpoint (smaller
+// v), so an edge and its reverse give the same pieces, and so does an edge that two strips
+// share. Pixels beyond the display's right side are skipped; those left of it add their height
+// to column -1.
+void add_edge(const Point& p, const Point& q, const Strip& st) {
+  if (p.row == q.row && p.col == q.col) {  // a third of a fine contour's edges: one piece
+    if (p.col < st.W) st.add(p.row, p.col, q.fy - p.fy, p.fx + q.fx);
     return;
   }
-  // Heights where the edge crosses column boundary x: monotone in x (rounding is), and kept
-  // within the row's piece.
-  const double dv_du = (b.v - a.v) / (b.u - a.u);
-  auto height_at = [&](int32_t x) { return std::clamp(fraction((a.v - r) + (x - a.u) * dv_du), in.fy, out.fy); };
-  int32_t c = in.col, fy = in.fy, fx = in.fx;
-  if (in.col < out.col) {  // rightwards: each pixel left through its right side
-    for (; c < out.col && c < W; ++c) {
-      const int32_t next = height_at(c + 1);
-      st.add(r, c, sign * (next - fy), fx + kOne);
-      fy = next;
-      fx = 0;
-    }
-    if (c < W) st.add(r, c, sign * (out.fy - fy), fx + out.fx);
-  } else {  // leftwards, from column W at most: what lies beyond the display is skipped
-    for (; c > out.col; --c) {
-      const int32_t next = height_at(c);
-      if (c < W) st.add(r, c, sign * (next - fy), fx);
-      fy = next;
-      fx = kOne;
-    }
-    st.add(r, c, sign * (out.fy - fy), fx + out.fx);
-  }
-}
-
-// The pieces of edge (a, b), a its lower endpoint, b below it, when both lie in the strip and
-// on the display (nearly every edge): the edge is followed from pixel to pixel, choosing at
-// each step without a branch whether it next crosses a row or a column boundary (which a
-// branch predictor could not guess). Each crossing is computed from a.
-void add_inner_edge(const Point& a, const Point& b, int32_t sign, const Strip& st) {
-  const int32_t step_c = b.col < a.col ? -1 : 1, side = b.col < a.col ? 0 : kOne;  // a's side b lies on
-  int32_t n = b.row - a.row + (b.col - a.col) * step_c;  // boundaries crossed
-  int32_t r = a.row, c = a.col, fy = a.fy, fx = a.fx;   // the piece so far
-  if (n > 0) {
-    const double du_dv = (b.u - a.u) / (b.v - a.v), dv_du = (b.v - a.v) / (b.u - a.u);
-    double y = r + 1, x = c + (step_c > 0);  // the next row and column boundaries
-    for (; n > 0; --n) {
-      const double u_y = a.u + (y - a.v) * du_dv, v_x = a.v + (x - a.u) * dv_du;
-      const bool row_next = r < b.row && (c == b.col || y <= v_x);
-      const int32_t t_end = row_next ? kOne : std::clamp(fraction(v_x - r), fy, r == b.row ? b.fy : kOne);
-      const int32_t x_end = row_next ? fraction(u_y - c) : side;
-      st.add(r, c, sign * (t_end - fy), fx + x_end);
-      fy = row_next ? 0 : t_end;
-      fx = row_next ? x_end : kOne - side;
-      r += row_next;
-      c += row_next ? 0 : step_c;
-      y += row_next;
-      x += row_next ? 0 : step_c;
-    }
-  }
-  st.add(r, c, sign * (b.fy - fy), fx + b.fx);
-}
-
-// The pieces of edge (p, q), contour order p -> q, in the strip's rows. Every crossing with a
-// row or column boundary is computed from the lower endpoint (smaller v), so an edge and its
-// reverse give the same pieces, and so does an edge that two strips share.
-void add_edge(const Point& p, const Point& q, const Strip& st) {
   const bool down = p.v < q.v;
   const Point& a = down ? p : q;
   const Point& b = down ? q : p;
   const int32_t sign = down ? 1 : -1;
-  if (a.row >= st.r0 && b.row < st.r1 && std::min(a.col, b.col) >= 0 && std::max(a.col, b.col) < st.W) {
-    add_inner_edge(a, b, sign, st);
-    return;
-  }
   // Horizontal edges have no height and cover nothing; non-finite ones (only possible when the
   // caller skipped validate_slices) are dropped.
   if (!(a.v < b.v) || !std::isfinite(b.v - a.v) || !std::isfinite(b.u - a.u)) return;
-  if (a.row == b.row) {
-    add_row_pieces(a, b, a, b, a.row, sign, st);
-    return;
+  const double du_dv = (b.u - a.u) / (b.v - a.v), dv_du = (b.v - a.v) / (b.u - a.u);
+  // From a, or where the edge enters the strip's first row, to b, or where it leaves the last.
+  const Point from = a.row < st.r0 ? at_row_boundary(a, du_dv, st.r0, st.W) : a;
+  Point to = b;
+  if (b.row >= st.r1) {
+    to = at_row_boundary(a, du_dv, st.r1, st.W);
+    to.row = st.r1 - 1;
+    to.fy = kOne;
   }
-  // Row by row: where the edge leaves a row is where it enters the next.
-  const double du_dv = (b.u - a.u) / (b.v - a.v);
-  int32_t r = std::max(a.row, st.r0);
-  Point in = r == a.row ? a : at_row_boundary(a, du_dv, r, st.W);
-  for (const int32_t last = std::min(b.row, st.r1 - 1); r <= last; ++r) {
-    Point out = b;
-    if (r != b.row) {
-      out = at_row_boundary(a, du_dv, r + 1, st.W);
-      out.fy = kOne;
-    }
-    add_row_pieces(in, out, a, b, r, sign, st);
-    in = out;
-    in.fy = 0;
+  const int32_t step = to.col < from.col ? -1 : 1, side = to.col < from.col ? 0 : kOne;  // where to lies
+  int32_t n = to.row - from.row + (to.col - from.col) * step;  // boundaries crossed
+  int32_t r = from.row, c = from.col, fy = from.fy, fx = from.fx;  // the piece so far
+  double y = r + 1, x = c + (step > 0);                         // the next row and column boundaries
+  for (; n > 0; --n) {
+    const double u_y = a.u + (y - a.v) * du_dv, v_x = a.v + (x - a.u) * dv_du;
+    const bool row_next = r < to.row && (c == to.col || y <= v_x);
+    const int32_t t_end = row_next ? kOne : std::clamp(fraction(v_x - r), fy, r == to.row ? to.fy : kOne);
+    const int32_t x_end = row_next ? fraction(u_y - c) : side;
+    if (c < st.W) st.add(r, c, sign * (t_end - fy), fx + x_end);
+    fy = row_next ? 0 : t_end;
+    fx = row_next ? x_end : kOne - side;
+    r += row_next;
+    c += row_next ? 0 : step;
+    y += row_next;
+    x += row_next ? 0 : step;
   }
+  if (c < st.W) st.add(r, c, sign * (to.fy - fy), fx + to.fx);
 }
 
 // Grey level round(255 * f^gamma) of coverage f = min(|x| / kFull, 1), by thresholds: level L

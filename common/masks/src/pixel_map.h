@@ -2,8 +2,7 @@
 // PixelMap: model x, y (mm) -> continuous pixel coordinates u (columns, to the right) and v
 // (rows, downwards) as printer_profile.h places the part; pixel (c, r) is [c, c+1] x [r, r+1].
 // pixel_map(p, true) applies the profile's mirrors; pixel_map(p, false) ignores them, for a
-// rasterizer that flips its output instead (coverage_runs.h). clamp_coordinate clamps a pixel
-// coordinate before it becomes an index.
+// rasterizer that flips its output instead (coverage_runs.h).
 #include "slicereuse/masks/printer_profile.h"
 
 namespace slicereuse {
@@ -23,9 +22,5 @@ inline PixelMap pixel_map(const PrinterProfile& p, bool mirrored) {
           p.offset_x_mm,
           p.offset_y_mm};
 }
-
-// x clamped to [lo, hi], NaN to lo, so a broken coordinate can never produce an out-of-range
-// index.
-inline double clamp_coordinate(double x, double lo, double hi) { return !(x >= lo) ? lo : (x > hi ? hi : x); }
 
 }  // namespace slicereuse

@@ -30,23 +30,26 @@ struct Scratch {
   std::vector<uint32_t> crossings;  // per row: 2 * first sample at or after the crossing + (dir > 0)
 };
 
+// NaN maps to lo, so a broken coordinate can never produce an out-of-range index.
+double clamp(double x, double lo, double hi) { return !(x >= lo) ? lo : (x > hi ? hi : x); }
+
 // Index of the first sample whose centre (i + 1/2) is at or after x, within [0, n].
 // (Clamped to [0, n] after rounding: ceil of the clamped value alone could give -1 or n + 1,
 // one pixel outside the row, for a part that leaves the display.)
 // The ceiling by truncation and one comparison: std::ceil is a library call on baseline x86-64
 // (no SSE4.1 round), and this runs for every contour point and every crossing.
 int first_sample_at_or_after(double x, int n) {
-  const double t = clamp_coordinate(x - 0.5, -1.0, double(n) + 1.0);
+  const double t = clamp(x - 0.5, -1.0, double(n) + 1.0);
   const int truncated = int(t);
   return std::clamp(truncated + int(double(truncated) < t), 0, n);
 }
 
 // Builds the oriented edges of the closed contours of layer k in pixel coordinates
 // (pixel_map.h, mirrors applied). Rows first: most edges of a fine contour cross no sample row
-// centre, and those are skipped by comparing their ends' first rows, computed once per point. Which edges do cross follows no pattern a branch
-// predictor could learn (a test per point mispredicts about every other point), so the
-// comparisons are gathered 64 at a time into a bit mask whose set bits are then visited.
-// Edges come in contour order, the closing edge last.
+// centre, and those are skipped by comparing their ends' first rows, computed once per point.
+// Which edges do cross follows no pattern a branch predictor could learn (a test per point
+// mispredicts about every other point), so the comparisons are gathered 64 at a time into a
+// bit mask whose set bits are then visited. Edges come in contour order, the closing edge last.
 size_t build_edges(const Slices& s, size_t k, const PrinterProfile& p, Scratch& w) {
   // A local copy: the compiler cannot tell that the writes to w leave s and p alone.
   const PixelMap map = pixel_map(p, true);
