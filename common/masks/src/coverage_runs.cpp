@@ -216,15 +216,7 @@ int strip_shift(int W) {
 size_t add_edges(const Slices& s, size_t k, const PixelMap& map, int W, int H, int shift, Scratch& w) {
   w.points.clear();
   w.ranges.clear();
-  size_t open = 0;
-  for (uint64_t c = s.layer_begin[k]; c < s.layer_begin[k + 1]; ++c) {
-    if (s.contour_open[c]) {
-      ++open;
-      continue;
-    }
-    const uint64_t b = s.contour_begin[c], n = s.contour_begin[c + 1] - b;
-    if (n == 0) continue;
-    const double* const xyz = s.xyz.data() + 3 * b;
+  return for_each_closed_contour(s, k, [&](const double* xyz, uint64_t n) {
     const size_t base = w.points.size();
     w.points.resize(base + n + 1);
     Point* const pts = w.points.data() + base;
@@ -245,8 +237,7 @@ size_t add_edges(const Slices& s, size_t k, const PixelMap& map, int W, int H, i
       for (uint32_t strip = first + 1; strip <= last; ++strip) w.ranges.push_back({strip, e, e + 1});
     }
     if (range.first < range.end) w.ranges.push_back(range);
-  }
-  return open;
+  });
 }
 
 // Strip row r as spans of one level, left to right, covering the row: emit(level, n). A running

@@ -55,15 +55,7 @@ size_t build_edges(const Slices& s, size_t k, const PrinterProfile& p, Scratch& 
   const PixelMap map = pixel_map(p, true);
   const int rows = p.height_px;
   w.edges.clear();
-  size_t open = 0;
-  for (uint64_t c = s.layer_begin[k]; c < s.layer_begin[k + 1]; ++c) {
-    if (s.contour_open[c]) {
-      ++open;
-      continue;
-    }
-    const uint64_t b = s.contour_begin[c], n = s.contour_begin[c + 1] - b;
-    if (n == 0) continue;
-    const double* const xyz = s.xyz.data() + 3 * b;
+  return for_each_closed_contour(s, k, [&](const double* xyz, uint64_t n) {
     // Point n repeats point 0, so the closing edge needs no wrap-around.
     w.v.resize(n + 1);
     w.row.resize(n + 1);
@@ -97,8 +89,7 @@ size_t build_edges(const Slices& s, size_t k, const PrinterProfile& p, Scratch& 
         w.edges.push_back({y0, x0, y1 - y0, x1 - x0, r0, r1, dir});
       }
     }
-  }
-  return open;
+  });
 }
 
 // Puts a and b in order without a branch (min and max compile to conditional moves).
