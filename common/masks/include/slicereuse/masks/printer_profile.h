@@ -7,12 +7,6 @@
 //
 // Placement: the model's XY origin sits at the display centre, shifted by offset_x/y_mm; row 0
 // is the top of the image (largest y). mirror_x / mirror_y flip the image.
-//
-// Anti-aliasing: 256 grey levels round(255 * f^gamma) of each pixel's exactly covered area f
-// (rasterize_layer.h), PrusaSlicer's gamma_correction: gamma 1 is linear coverage, gamma 0 its
-// threshold, which is the binary mask itself (a pixel is on when its centre is inside); other
-// values bend the curve as PrusaSlicer's AGG rasterizer does (agg::gamma_power). gamma is not
-// used when antialiasing is off.
 
 namespace slicereuse {
 
@@ -26,7 +20,12 @@ struct PrinterProfile {
   bool mirror_x = false;
   bool mirror_y = false;
   bool antialiasing = false;  // 8-bit coverage instead of 1-bit
-  double gamma = 1;            // of the coverage, when antialiasing
+  // Anti-aliased masks have 256 grey levels round(255 * f^gamma) of each pixel's exactly covered
+  // area f (rasterize_layer.h): PrusaSlicer's gamma_correction. 1 is linear coverage; 0 its
+  // threshold, which is the binary mask itself (a pixel is on when its centre is inside); other
+  // values bend the curve as PrusaSlicer's AGG rasterizer does (agg::gamma_power). Not used when
+  // antialiasing is off.
+  double gamma = 1;
 };
 
 // Largest display side, in pixels, accepted by the core and by the mask filters' parameters.
