@@ -170,7 +170,7 @@ class CoverageLevels {
     // The thresholds' own values at gamma 1, without looking them up.
     if (linear_) return uint8_t((255 * a + kFull / 2) / kFull);
     int level = first_[a >> kCoarseShift];
-    // One step without a branch covers every coarse step for gamma 1 (and most for any gamma);
+    // One step without a branch covers every coarse step up to gamma 16 and most for any gamma;
     // only very small coverages at gamma < 1 count further.
     level += int(threshold_[level + 1] <= a);
     while (threshold_[level + 1] <= a) ++level;
