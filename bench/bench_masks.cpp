@@ -5,18 +5,22 @@
 //   sl1        - export_masks to <out>/masks.sl1
 //   compare    - compare_mask_stacks(folder, sl1), which must report S = 1
 //   layer      - (only when asked for) every layer on one thread, as an .sl1 encodes it:
-//                rasterize_layer_runs, then encode_mask_png of the runs; microseconds per
-//                layer of each in thread CPU time (the fastest run: the least disturbed by
-//                other processes on a shared machine), runs and PNG bytes per layer
+//                rasterize_layer_runs, then encode_mask_png of the runs (anti-aliased: also
+//                rasterize_layer_antialiased_png); microseconds per layer of each in thread CPU
+//                time (the fastest run: the least disturbed by other processes on a shared
+//                machine), runs and PNG bytes per layer
 //   deflate    - (only when asked for) the PNG image data of every 8th layer (filter byte and
 //                8-bit row, as in an .sl1) deflated on one thread by RunDeflater and by
 //                libdeflate at levels 1, 3 and 6: seconds and total compressed size each
-// Prints the median seconds over runs and layers per second; --aa 1 for anti-aliased masks.
+// Prints the median seconds over runs and layers per second. --aa 1 for anti-aliased masks
+// (--gamma G, default 1), --aa 0,1 for both in the same run, taking turns within each run, and
+// their sl1 time ratio; their archives are <out>/masks.sl1 and <out>/masks_aa.sl1.
 // --reference R (an .sl1 or folder made by another build, e.g. before a change) compares the
-// sl1 step's archive against R with compare_mask_stacks, which must report S = 1 and 0
-// differing pixels.
+// binary sl1 step's archive against R with compare_mask_stacks, which must report S = 1 and 0
+// differing pixels; --aa-reference R the anti-aliased one.
 // Usage: bench_masks [--shape arch] [--faces 545000] [--height 14.484] [--thickness 0.001]
-//                    [--runs 3] [--out /tmp/slicereuse-bench] [--aa 0] [--reference R]
+//                    [--runs 3] [--out /tmp/slicereuse-bench] [--aa 0|1|0,1] [--gamma 1]
+//                    [--reference R] [--aa-reference R]
 //                    [--steps rasterize,folder,sl1,compare[,layer][,deflate]]
 #include <libdeflate.h>
 #include <omp.h>
@@ -133,49 +137,74 @@ double touch_points(const Slices& s, size_t k) {
   return sum;
 }
 
-// One thread, every layer: rasterize_layer_runs, then encode_mask_png of its runs, timed apart
-// in thread CPU time. Each layer's points are read first, untimed, as in mask export.
+// One thread, every layer: rasterize_layer_runs (rasterize_layer_antialiased_runs when
+// anti-aliased), then encode_mask_png of its runs, timed apart in thread CPU time; anti-aliased
+// also rasterize_layer_antialiased_png, which .sl1 export calls instead of the two. Each
+// layer's points are read first, untimed, as in mask export.
 void time_layers(const Slices& s, const PrinterProfile& profile, int runs) {
+  const bool aa = profile.antialiasing;
   MaskRuns mask;
   std::vector<uint8_t> png;
-  std::vector<double> t_runs, t_png;
+  std::vector<double> t_runs, t_png, t_direct;
   size_t n_runs = 0, n_bytes = 0;
   double touched = 0;
   for (int r = 0; r < runs; ++r) {
-    double a = 0, b = 0;
+    double a = 0, b = 0, c = 0;
     n_runs = n_bytes = 0;
     for (size_t k = 0; k < s.layers(); ++k) {
       touched += touch_points(s, k);
       const double t0 = thread_seconds();
-      rasterize_layer_runs(s, k, profile, mask);
+      if (aa)
+        rasterize_layer_antialiased_runs(s, k, profile, mask);
+      else
+        rasterize_layer_runs(s, k, profile, mask);
       const double t1 = thread_seconds();
       encode_mask_png(mask, png);
       b += thread_seconds() - t1;
       a += t1 - t0;
       n_runs += mask.row_begin.back();
       n_bytes += png.size();
+      if (!aa) continue;
+      touched += touch_points(s, k);
+      const double t2 = thread_seconds();
+      rasterize_layer_antialiased_png(s, k, profile, png);
+      c += thread_seconds() - t2;
     }
     t_runs.push_back(a);
     t_png.push_back(b);
+    t_direct.push_back(c);
   }
   const double L = double(s.layers());
-  std::printf("layer, one thread, cpu: rasterize_layer_runs %.1f us, encode_mask_png(runs) %.1f us, together %.1f us;"
-              " %.0f runs, %.0f PNG bytes per layer\n",
-              1e6 * fastest(t_runs) / L, 1e6 * fastest(t_png) / L, 1e6 * (fastest(t_runs) + fastest(t_png)) / L,
-              double(n_runs) / L, double(n_bytes) / L);
+  std::printf("layer, one thread, cpu: %s %.1f us, encode_mask_png(runs) %.1f us, together %.1f us;",
+              aa ? "rasterize_layer_antialiased_runs" : "rasterize_layer_runs", 1e6 * fastest(t_runs) / L,
+              1e6 * fastest(t_png) / L, 1e6 * (fastest(t_runs) + fastest(t_png)) / L);
+  if (aa) std::printf(" rasterize_layer_antialiased_png %.1f us;", 1e6 * fastest(t_direct) / L);
+  std::printf(" %.0f runs, %.0f PNG bytes per layer\n", double(n_runs) / L, double(n_bytes) / L);
   if (touched == 0.5) std::printf("\n");  // keeps touch_points' reads
 }
 
 }  // namespace
 
+// One kind of mask the steps are run for, and what they measured.
+struct Mode {
+  PrinterProfile profile;
+  std::string folder, sl1, reference;
+  std::vector<double> t_raster, t_folder, t_sl1, t_compare;
+  std::vector<double> c_raster, c_folder, c_sl1, c_compare;
+  StackComparison cmp;
+  const char* name() const { return profile.antialiasing ? "anti-aliased" : "binary"; }
+};
+
 int main(int argc, char** argv) {
-  bool aa = false;
-  std::string steps = "rasterize,folder,sl1,compare", reference;
+  std::string aa = "0", steps = "rasterize,folder,sl1,compare", reference, aa_reference;
+  double gamma = 1;
   std::vector<char*> rest{argv[0]};
   for (int i = 1; i < argc; ++i) {
-    if (std::string(argv[i]) == "--aa" && i + 1 < argc) aa = std::atoi(argv[++i]) != 0;
+    if (std::string(argv[i]) == "--aa" && i + 1 < argc) aa = argv[++i];
+    else if (std::string(argv[i]) == "--gamma" && i + 1 < argc) gamma = std::atof(argv[++i]);
     else if (std::string(argv[i]) == "--steps" && i + 1 < argc) steps = argv[++i];
     else if (std::string(argv[i]) == "--reference" && i + 1 < argc) reference = argv[++i];
+    else if (std::string(argv[i]) == "--aa-reference" && i + 1 < argc) aa_reference = argv[++i];
     else rest.push_back(argv[i]);
   }
   BenchArgs args = parse_bench_args(int(rest.size()), rest.data());
@@ -191,74 +220,93 @@ int main(int argc, char** argv) {
       lo[d] = std::min(lo[d], s.xyz[3 * p + d]);
       hi[d] = std::max(hi[d], s.xyz[3 * p + d]);
     }
-  PrinterProfile profile;  // 1024 x 768 at 75 um: 76.8 x 57.6 mm
-  profile.offset_x_mm = -(lo[0] + hi[0]) / 2;
-  profile.offset_y_mm = -(lo[1] + hi[1]) / 2;
-  profile.antialiasing = aa;
-  std::printf("shape %s, threads %d, %s masks %dx%d at %g um, extent %.2f x %.2f mm\n",
-              args.family.shape.c_str(), omp_get_max_threads(), aa ? "anti-aliased" : "binary",
-              profile.width_px, profile.height_px, profile.pixel_size_x_um, hi[0] - lo[0],
-              hi[1] - lo[1]);
-  std::printf("%8zu layers, %zu contours, %zu points\n", s.layers(), s.contours(), s.points());
-  if (wants(steps, "layer") && !aa) time_layers(s, profile, args.runs);
-  if (wants(steps, "deflate")) compare_deflaters(s, profile);
-
   std::filesystem::create_directories(args.out);
-  const std::string folder = args.out + "/masks", sl1 = args.out + "/masks.sl1";
-  std::vector<double> t_raster, t_folder, t_sl1, t_compare;
-  std::vector<double> c_raster, c_folder, c_sl1, c_compare;
+  std::vector<Mode> modes;
+  for (const char* kind : {"0", "1"}) {
+    if (!wants(aa, kind)) continue;
+    Mode m;
+    m.profile.offset_x_mm = -(lo[0] + hi[0]) / 2;  // 1024 x 768 at 75 um: 76.8 x 57.6 mm
+    m.profile.offset_y_mm = -(lo[1] + hi[1]) / 2;
+    m.profile.antialiasing = kind[0] == '1';
+    m.profile.gamma = gamma;
+    const std::string suffix = m.profile.antialiasing ? "_aa" : "";
+    m.folder = args.out + "/masks" + suffix;
+    m.sl1 = args.out + "/masks" + suffix + ".sl1";
+    m.reference = m.profile.antialiasing ? aa_reference : reference;
+    modes.push_back(m);
+  }
+  std::printf("shape %s, threads %d, %dx%d at %g um, extent %.2f x %.2f mm, gamma %g (anti-aliased)\n",
+              args.family.shape.c_str(), omp_get_max_threads(), modes[0].profile.width_px,
+              modes[0].profile.height_px, modes[0].profile.pixel_size_x_um, hi[0] - lo[0], hi[1] - lo[1], gamma);
+  std::printf("%8zu layers, %zu contours, %zu points\n", s.layers(), s.contours(), s.points());
+  for (const Mode& m : modes) {
+    std::printf("%s masks:\n", m.name());
+    if (wants(steps, "layer")) time_layers(s, m.profile, args.runs);
+    if (wants(steps, "deflate")) compare_deflaters(s, m.profile);
+  }
+
   const bool compare = wants(steps, "compare") && wants(steps, "folder") && wants(steps, "sl1");
-  StackComparison cmp;
-  for (int r = 0; r < args.runs; ++r) {
-    if (wants(steps, "rasterize"))
-      t_raster.push_back(seconds_of([&] {
+  // The kinds take turns within each run, so both meet the same load on a shared machine.
+  for (int r = 0; r < args.runs; ++r)
+    for (Mode& m : modes) {
+      const PrinterProfile& profile = m.profile;
+      if (wants(steps, "rasterize"))
+        m.t_raster.push_back(seconds_of([&] {
 #pragma omp parallel
-        {
-          Buffer<uint8_t> image(size_t(profile.width_px) * size_t(profile.height_px));
+          {
+            Buffer<uint8_t> image(size_t(profile.width_px) * size_t(profile.height_px));
 #pragma omp for schedule(dynamic, 16)
-          for (long long k = 0; k < static_cast<long long>(s.layers()); ++k)
-            rasterize_layer(s, size_t(k), profile, image.data());
-        }
-      }, c_raster));
-    if (wants(steps, "folder")) t_folder.push_back(seconds_of([&] { export_masks(s, profile, folder); }, c_folder));
-    if (wants(steps, "sl1")) t_sl1.push_back(seconds_of([&] { export_masks(s, profile, sl1); }, c_sl1));
-    if (compare)
-      t_compare.push_back(seconds_of([&] { cmp = compare_mask_stacks(folder, sl1, ""); }, c_compare));
-  }
+            for (long long k = 0; k < static_cast<long long>(s.layers()); ++k)
+              rasterize_layer(s, size_t(k), profile, image.data());
+          }
+        }, m.c_raster));
+      if (wants(steps, "folder"))
+        m.t_folder.push_back(seconds_of([&] { export_masks(s, profile, m.folder); }, m.c_folder));
+      if (wants(steps, "sl1")) m.t_sl1.push_back(seconds_of([&] { export_masks(s, profile, m.sl1); }, m.c_sl1));
+      if (compare)
+        m.t_compare.push_back(seconds_of([&] { m.cmp = compare_mask_stacks(m.folder, m.sl1, ""); }, m.c_compare));
+    }
   const double L = double(s.layers());
-  if (compare)
-    std::printf("compare: min S %.9g, %llu differing pixels\n", cmp.min_similarity,
-                static_cast<unsigned long long>(cmp.differing_pixels));
-  std::printf("%-10s %9s %12s %12s   wall seconds per run\n", "step", "seconds", "layers/s",
-              "cpu-seconds");
-  struct Row {
-    const char* name;
-    const std::vector<double>& wall;
-    const std::vector<double>& cpu;
-  };
-  const Row rows[] = {{"rasterize", t_raster, c_raster},
-                      {"folder", t_folder, c_folder},
-                      {"sl1", t_sl1, c_sl1},
-                      {"compare", t_compare, c_compare}};
-  for (const Row& row : rows) {
-    if (row.wall.empty()) continue;
-    const double m = median_of(row.wall);
-    std::printf("%-10s %9.3f %12.0f %12.3f  ", row.name, m, L / m, median_of(row.cpu));
-    for (double x : row.wall) std::printf(" %.3f", x);
-    std::printf("\n");
+  bool ok = true;
+  for (const Mode& m : modes) {
+    std::printf("%s masks:\n", m.name());
+    if (compare) {
+      std::printf("compare: min S %.9g, %llu differing pixels\n", m.cmp.min_similarity,
+                  static_cast<unsigned long long>(m.cmp.differing_pixels));
+      ok = ok && m.cmp.min_similarity == 1;
+    }
+    std::printf("%-10s %9s %12s %12s   wall seconds per run\n", "step", "seconds", "layers/s", "cpu-seconds");
+    struct Row {
+      const char* name;
+      const std::vector<double>& wall;
+      const std::vector<double>& cpu;
+    };
+    const Row rows[] = {{"rasterize", m.t_raster, m.c_raster},
+                        {"folder", m.t_folder, m.c_folder},
+                        {"sl1", m.t_sl1, m.c_sl1},
+                        {"compare", m.t_compare, m.c_compare}};
+    for (const Row& row : rows) {
+      if (row.wall.empty()) continue;
+      const double med = median_of(row.wall);
+      std::printf("%-10s %9.3f %12.0f %12.3f  ", row.name, med, L / med, median_of(row.cpu));
+      for (double x : row.wall) std::printf(" %.3f", x);
+      std::printf("\n");
+    }
+    if (!m.t_folder.empty()) {
+      std::uintmax_t bytes = 0;
+      for (const auto& e : std::filesystem::directory_iterator(m.folder)) bytes += e.file_size();
+      std::printf("folder %.1f MB\n", double(bytes) / 1e6);
+    }
+    if (!m.t_sl1.empty()) std::printf("sl1 %.1f MB\n", double(std::filesystem::file_size(m.sl1)) / 1e6);
+    if (!m.reference.empty() && !m.t_sl1.empty()) {
+      const StackComparison ref = compare_mask_stacks(m.reference, m.sl1, "");
+      ok = ok && ref.min_similarity == 1 && ref.differing_pixels == 0;
+      std::printf("against %s: min S %.9g, %llu differing pixels\n", m.reference.c_str(), ref.min_similarity,
+                  static_cast<unsigned long long>(ref.differing_pixels));
+    }
   }
-  if (!t_folder.empty()) {
-    std::uintmax_t bytes = 0;
-    for (const auto& e : std::filesystem::directory_iterator(folder)) bytes += e.file_size();
-    std::printf("folder %.1f MB\n", double(bytes) / 1e6);
-  }
-  if (!t_sl1.empty()) std::printf("sl1 %.1f MB\n", double(std::filesystem::file_size(sl1)) / 1e6);
-  bool same_as_reference = true;
-  if (!reference.empty() && !t_sl1.empty()) {
-    const StackComparison ref = compare_mask_stacks(reference, sl1, "");
-    same_as_reference = ref.min_similarity == 1 && ref.differing_pixels == 0;
-    std::printf("against %s: min S %.9g, %llu differing pixels\n", reference.c_str(), ref.min_similarity,
-                static_cast<unsigned long long>(ref.differing_pixels));
-  }
-  return (!compare || cmp.min_similarity == 1) && same_as_reference ? 0 : 1;
+  if (modes.size() == 2 && !modes[0].t_sl1.empty())
+    std::printf("sl1 anti-aliased / binary: %.2fx wall, %.2fx cpu (medians)\n",
+                median_of(modes[1].t_sl1) / median_of(modes[0].t_sl1), median_of(modes[1].c_sl1) / median_of(modes[0].c_sl1));
+  return ok ? 0 : 1;
 }

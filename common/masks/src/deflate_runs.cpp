@@ -50,14 +50,15 @@ void code_lengths(const uint64_t* freq_in, size_t n, unsigned limit, uint8_t* le
   uint64_t freq[kMaxSymbols];
   std::copy(freq_in, freq_in + n, freq);
   for (;;) {
-    uint16_t leaf[kMaxSymbols];  // symbols by (frequency, symbol)
+    // Symbols by (frequency, symbol), sorted as one key each: an anti-aliased mask uses most of
+    // the 286 symbols, too many for an insertion sort.
+    uint64_t by_frequency[kMaxSymbols];
     size_t m = 0;
-    for (size_t s = 0; s < n; ++s) {
-      if (!freq[s]) continue;
-      size_t j = m++;
-      for (; j > 0 && freq[leaf[j - 1]] > freq[s]; --j) leaf[j] = leaf[j - 1];
-      leaf[j] = uint16_t(s);
-    }
+    for (size_t s = 0; s < n; ++s)
+      if (freq[s]) by_frequency[m++] = freq[s] << 9 | s;
+    std::sort(by_frequency, by_frequency + m);
+    uint16_t leaf[kMaxSymbols];
+    for (size_t i = 0; i < m; ++i) leaf[i] = uint16_t(by_frequency[i] & 511);
     // Nodes 0..m-1 are the sorted leaves, m.. the joined ones; parent of each.
     uint64_t weight[2 * kMaxSymbols];
     uint16_t parent[2 * kMaxSymbols];
@@ -226,10 +227,19 @@ void RunDeflater::finish(std::vector<uint8_t>& out) {
   // A run of byte b and length n is the literal b, then its n - 1 repeats as matches of 258 and
   // a last match of the rest, or the rest as literals when it is shorter than 3. Counted into
   // locals and per rest, not per deflate symbol: increments of the same few counters, one run
-  // after the other, would wait for each other.
+  // after the other, would wait for each other. Strings of literals count byte by byte.
   uint64_t freq[kMaxSymbols] = {};
   uint64_t per_rest[kMaxMatch] = {}, full_matches = 0;
+  size_t symbols = 0;
+  const uint8_t* literal = literals_.data();
   for (const uint64_t run : runs_) {
+    if (run & kLiterals) {
+      const uint64_t n = run & ~kLiterals;
+      for (uint64_t j = 0; j < n; ++j) ++freq[literal[j]];
+      literal += n;
+      symbols += n;
+      continue;
+    }
     const uint64_t repeats = (run >> 8) - 1, full = repeats / kMaxMatch;
     const unsigned rest = unsigned(repeats - full * kMaxMatch);
     freq[run & 0xff] += 1 + (rest < 3 ? rest : 0);
@@ -237,10 +247,12 @@ void RunDeflater::finish(std::vector<uint8_t>& out) {
     ++per_rest[rest];
   }
   freq[lengths_of[kMaxMatch].symbol] += full_matches;
-  size_t symbols = runs_.size() + full_matches + per_rest[1] + 2 * per_rest[2];
-  for (unsigned rest = 3; rest < kMaxMatch; ++rest) {
+  symbols += full_matches + per_rest[1] + 2 * per_rest[2];
+  for (unsigned rest = 0; rest < kMaxMatch; ++rest) {
+    symbols += per_rest[rest];  // each run's literal
+    if (rest < 3) continue;
     freq[lengths_of[rest].symbol] += per_rest[rest];
-    symbols += per_rest[rest];
+    symbols += per_rest[rest];  // and its last match
   }
   freq[kEndOfBlock] = 1;
   freq[0] |= 1;  // at least two codes, so the code is complete for every inflater
@@ -289,26 +301,36 @@ void RunDeflater::finish(std::vector<uint8_t>& out) {
   }
   // Each match length's bits in one piece, looked up once per length rather than through three
   // tables per run: its length code, extra bits and distance code 0 (distance 1), at most
-  // 15 + 5 + 1 bits.
-  uint32_t match_bits[kMaxMatch + 1];
-  uint8_t match_nbits[kMaxMatch + 1];
+  // 15 + 5 + 1 bits. Lengths 0..2 are no match (zero bits).
+  uint32_t match_bits[kMaxMatch + 1] = {};
+  uint8_t match_nbits[kMaxMatch + 1] = {};
   for (unsigned len = 3; len <= kMaxMatch; ++len) {
     const LengthCode& lc = lengths_of[len];
     match_bits[len] = uint32_t(lit_code[lc.symbol]) | uint32_t(lc.extra) << lit_length[lc.symbol];
     match_nbits[len] = uint8_t(lit_length[lc.symbol] + lc.extra_bits + 1);
   }
   // Between drains: a literal and a match (15 + 21 bits), or a literal and two more (3 * 15).
+  // The rest after the full matches is chosen without a branch (a mask's runs alternate between
+  // the two kinds unpredictably).
+  literal = literals_.data();
   for (const uint64_t run : runs_) {
+    if (run & kLiterals) {
+      const uint64_t n = run & ~kLiterals;
+      for (uint64_t j = 0; j < n; ++j) w.put(lit_code[literal[j]], lit_length[literal[j]]);
+      literal += n;
+      continue;
+    }
     const unsigned byte = unsigned(run & 0xff);
     const uint64_t repeats = (run >> 8) - 1, full = repeats / kMaxMatch;
     const unsigned rest = unsigned(repeats - full * kMaxMatch);
-    w.add(lit_code[byte], lit_length[byte]);
+    const uint64_t lit = lit_code[byte];
+    const unsigned lit_bits = lit_length[byte];
+    w.add(lit, lit_bits);
     for (uint64_t i = 0; i < full; ++i) w.put(match_bits[kMaxMatch], match_nbits[kMaxMatch]);
-    if (rest >= 3) {
-      w.add(match_bits[rest], match_nbits[rest]);
-    } else {
-      for (unsigned i = 0; i < rest; ++i) w.add(lit_code[byte], lit_length[byte]);
-    }
+    const bool match = rest >= 3;
+    const unsigned literal_bits = (match ? 0 : rest) * lit_bits;  // rest < 3 literals
+    w.add(match ? match_bits[rest] : (lit | lit << lit_bits) & ((uint64_t(1) << literal_bits) - 1),
+          match ? match_nbits[rest] : literal_bits);
     w.drain();
   }
   w.put(lit_code[kEndOfBlock], lit_length[kEndOfBlock]);
@@ -320,6 +342,7 @@ void RunDeflater::finish(std::vector<uint8_t>& out) {
 
 void RunDeflater::reset() {
   runs_.clear();
+  literals_.clear();
   last_ = -1;
   adler_a_ = 1;
   adler_b_ = 0;

@@ -175,7 +175,11 @@ class Stack {
 void encode_layer(const Slices& s, size_t local, size_t k, const PrinterProfile& p, int bits,
                   std::vector<uint8_t>& png, StackSummary& summary) {
   summary.add(k, summarize_layer(s, local));
-  if (bits == 8 && !p.antialiasing) {  // binary 8-bit (.sl1): straight from the runs
+  if (bits == 8 && p.antialiasing) {  // anti-aliased: straight into the PNG
+    rasterize_layer_antialiased_png(s, local, p, png);
+    return;
+  }
+  if (bits == 8) {  // binary 8-bit (.sl1): straight from the runs
     thread_local MaskRuns runs;
     rasterize_layer_runs(s, local, p, runs);
     encode_mask_png(runs, png);

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstring>
 
+#include "png_rows.h"
 #include "slicereuse/masks/deflate_runs.h"
 #include "slicereuse/util/error.h"
 
@@ -80,6 +81,14 @@ void png_end(size_t data_begin, std::vector<uint8_t>& out) {
   chunk(out, "IEND", nullptr, 0);
 }
 
+// The calling thread's deflater, emptied: a deflater kept per thread allocates nothing per image
+// once its buffer has grown, and a former call may have thrown half-way.
+RunDeflater& thread_deflater() {
+  thread_local RunDeflater deflater;
+  deflater.reset();
+  return deflater;
+}
+
 }  // namespace
 
 void encode_mask_png(const uint8_t* pixels, int width, int height, int bits,
@@ -87,8 +96,7 @@ void encode_mask_png(const uint8_t* pixels, int width, int height, int bits,
   check_size(width, height, bits);
   // Rows without a filter (type 0): on masks, filters cost time and gain nothing.
   thread_local std::vector<uint8_t> row;
-  thread_local RunDeflater deflater;
-  deflater.reset();  // a former call may have thrown half-way
+  RunDeflater& deflater = thread_deflater();
   row.resize(1 + (size_t(width) + 7) / 8);
   row[0] = 0;
   const size_t data_begin = png_begin(width, height, bits, out);
@@ -106,41 +114,37 @@ void encode_mask_png(const uint8_t* pixels, int width, int height, int bits,
   png_end(data_begin, out);
 }
 
+PngRows::PngRows(int width, int height, std::vector<uint8_t>& out) : deflater_(thread_deflater()), out_(out) {
+  check_size(width, height, 8);
+  data_begin_ = png_begin(width, height, 8, out);
+}
+
+void PngRows::finish() {
+  flush();
+  deflater_.finish(out_);
+  png_end(data_begin_, out_);
+}
+
 void encode_mask_png(const MaskRuns& runs, std::vector<uint8_t>& out) {
   check_size(runs.width, runs.height, 8);
-  if (runs.row_begin.size() != size_t(runs.height) + 1 || runs.columns.size() != 2 * size_t(runs.row_begin.back()))
-    throw Error("cannot encode mask runs: their row index does not match the image height");
-  thread_local RunDeflater deflater;
-  deflater.reset();  // a former call may have thrown half-way
-  const size_t data_begin = png_begin(runs.width, runs.height, 8, out);
-  // Equal neighbours are merged first (a row's trailing black, the next filter byte 0 and that
-  // row's leading black are one run), which halves the runs the deflater sees.
-  uint8_t byte = 0;
-  size_t count = 0;
-  auto run = [&](uint8_t b, size_t n) {
-    if (b != byte) {
-      deflater.add_run(byte, count);
-      byte = b;
-      count = 0;
-    }
-    count += n;
-  };
+  if (runs.row_begin.size() != size_t(runs.height) + 1 || runs.columns.size() != 2 * size_t(runs.row_begin.back()) ||
+      runs.levels.size() != size_t(runs.row_begin.back()))
+    throw Error("cannot encode mask runs: their row index does not match the image height or the runs");
+  PngRows png(runs.width, runs.height, out);
   for (int r = 0; r < runs.height; ++r) {
-    run(0, 1);  // filter type 0
+    png.row();
     size_t at = 0;
     for (uint32_t i = runs.row_begin[size_t(r)]; i < runs.row_begin[size_t(r) + 1]; ++i) {
       const size_t a = runs.columns[2 * size_t(i)], b = runs.columns[2 * size_t(i) + 1];
       if (a < at || b < a || b > size_t(runs.width))
         throw Error("cannot encode mask runs: row " + std::to_string(r) + " has runs out of order or outside the image");
-      run(0, a - at);
-      run(255, b - a);
+      png.pixels(0, a - at);
+      png.pixels(runs.levels[i], b - a);
       at = b;
     }
-    run(0, size_t(runs.width) - at);
+    png.pixels(0, size_t(runs.width) - at);
   }
-  deflater.add_run(byte, count);
-  deflater.finish(out);
-  png_end(data_begin, out);
+  png.finish();
 }
 
 namespace {

@@ -17,6 +17,9 @@ void validate_printer_profile(const PrinterProfile& p) {
                 std::to_string(p.pixel_size_y_um) + " um is not positive");
   if (!std::isfinite(p.offset_x_mm) || !std::isfinite(p.offset_y_mm))
     throw Error("display offset is not finite");
+  if (!(p.gamma >= 0) || !std::isfinite(p.gamma))
+    throw Error("anti-aliasing gamma " + std::to_string(p.gamma) +
+                " is not a finite number >= 0 (0: binary threshold, 1: linear coverage)");
 }
 
 }  // namespace slicereuse

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "coverage_runs.h"
+#include "pixel_map.h"
 #include "slicereuse/masks/printer_profile.h"
 #include "slicereuse/masks/rasterize_layer.h"
 #include "slicereuse/util/error.h"
@@ -11,11 +13,8 @@
 namespace slicereuse {
 namespace {
 
-// Anti-aliased masks sample every pixel on a kSupersample x kSupersample grid of sample centres
-// with the same nonzero rule as binary masks (64 samples -> 65 grey levels).
-constexpr int kSupersample = 8;
-
-// An edge in sample units, stored from its lower endpoint (smaller row coordinate) so both
+// Binary masks sample each pixel at its centre: sample i of a row or column is at i + 1/2.
+// An edge in pixel units, stored from its lower endpoint (smaller row coordinate) so both
 // directions of the same segment give bit-identical crossings.
 struct Edge {
   double ya, xa, dy, dx;   // lower endpoint, and upper endpoint minus lower
@@ -29,7 +28,6 @@ struct Scratch {
   std::vector<Edge> edges;
   std::vector<uint32_t> row_begin;  // per sample row, where its crossings start
   std::vector<uint32_t> crossings;  // per row: 2 * first sample at or after the crossing + (dir > 0)
-  std::vector<uint16_t> coverage;
 };
 
 // NaN maps to lo, so a broken coordinate can never produce an out-of-range index.
@@ -46,42 +44,30 @@ int first_sample_at_or_after(double x, int n) {
   return std::clamp(truncated + int(double(truncated) < t), 0, n);
 }
 
-// Builds the oriented edges of the closed contours of layer k in sample coordinates
-// (columns u to the right, rows v downwards, scale samples per pixel). Rows first: most edges
-// of a fine contour cross no sample row centre, and those are skipped by comparing their ends'
-// first rows, computed once per point. Which edges do cross follows no pattern a branch
-// predictor could learn (a test per point mispredicts about every other point), so the
-// comparisons are gathered 64 at a time into a bit mask whose set bits are then visited.
-// Edges come in contour order, the closing edge last.
-size_t build_edges(const Slices& s, size_t k, const PrinterProfile& p, int scale, Scratch& w,
-                   int rows) {
-  const double sx = scale * 1000.0 / p.pixel_size_x_um, sy = scale * 1000.0 / p.pixel_size_y_um;
-  const double cu = 0.5 * scale * p.width_px, cv = 0.5 * scale * p.height_px;
-  const double su = p.mirror_x ? -sx : sx, sv = p.mirror_y ? sy : -sy;
-  // Through locals: the compiler cannot tell that the writes to w leave s and p alone.
-  const double ox = p.offset_x_mm, oy = p.offset_y_mm;
+// Builds the oriented edges of the closed contours of layer k in pixel coordinates
+// (pixel_map.h, mirrors applied). Rows first: most edges of a fine contour cross no sample row
+// centre, and those are skipped by comparing their ends' first rows, computed once per point.
+// Which edges do cross follows no pattern a branch predictor could learn (a test per point
+// mispredicts about every other point), so the comparisons are gathered 64 at a time into a
+// bit mask whose set bits are then visited. Edges come in contour order, the closing edge last.
+size_t build_edges(const Slices& s, size_t k, const PrinterProfile& p, Scratch& w) {
+  // A local copy: the compiler cannot tell that the writes to w leave s and p alone.
+  const PixelMap map = pixel_map(p, true);
+  const int rows = p.height_px;
   w.edges.clear();
-  size_t open = 0;
-  for (uint64_t c = s.layer_begin[k]; c < s.layer_begin[k + 1]; ++c) {
-    if (s.contour_open[c]) {
-      ++open;
-      continue;
-    }
-    const uint64_t b = s.contour_begin[c], n = s.contour_begin[c + 1] - b;
-    if (n == 0) continue;
-    const double* const xyz = s.xyz.data() + 3 * b;
+  return for_each_closed_contour(s, k, [&](const double* xyz, uint64_t n) {
     // Point n repeats point 0, so the closing edge needs no wrap-around.
     w.v.resize(n + 1);
     w.row.resize(n + 1);
     double* const v = w.v.data();
     int* const row = w.row.data();
     for (uint64_t i = 0; i < n; ++i) {
-      v[i] = cv + sv * (xyz[3 * i + 1] + oy);
+      v[i] = map.v(xyz[3 * i + 1]);
       row[i] = first_sample_at_or_after(v[i], rows);
     }
     v[n] = v[0];
     row[n] = row[0];
-    auto u = [&](uint64_t i) { return cu + su * (xyz[3 * (i == n ? 0 : i)] + ox); };
+    auto u = [&](uint64_t i) { return map.u(xyz[3 * (i == n ? 0 : i)]); };
     for (uint64_t base = 0; base < n; base += 64) {
       const uint64_t m = std::min<uint64_t>(64, n - base);
       uint64_t crossing = 0;
@@ -103,8 +89,7 @@ size_t build_edges(const Slices& s, size_t k, const PrinterProfile& p, int scale
         w.edges.push_back({y0, x0, y1 - y0, x1 - x0, r0, r1, dir});
       }
     }
-  }
-  return open;
+  });
 }
 
 // Puts a and b in order without a branch (min and max compile to conditional moves).
@@ -209,55 +194,75 @@ void check_layer(const Slices& s, size_t k, const PrinterProfile& profile) {
   if (!s.has_points()) throw Error("the slices carry no contour points to rasterize");
 }
 
-}  // namespace
-
-size_t rasterize_layer_runs(const Slices& s, size_t k, const PrinterProfile& profile, MaskRuns& out) {
+void check_antialiased_layer(const Slices& s, size_t k, const PrinterProfile& profile) {
   check_layer(s, k, profile);
-  if (profile.antialiasing) throw Error("anti-aliased masks have grey levels and cannot be given as runs");
+  if (!profile.antialiasing) throw Error("an anti-aliased mask was asked for, but antialiasing is off");
+}
+
+// Anti-aliasing with gamma 0 is PrusaSlicer's threshold: the binary mask.
+bool is_binary(const PrinterProfile& p) { return !p.antialiasing || p.gamma == 0; }
+
+// The binary mask as runs (the layer checked).
+size_t binary_runs(const Slices& s, size_t k, const PrinterProfile& profile, MaskRuns& out) {
   thread_local Scratch w;
   const int H = profile.height_px;
   out.width = profile.width_px;
   out.height = H;
   out.row_begin.assign(size_t(H) + 1, 0);
   out.columns.clear();
-  const size_t open = build_edges(s, k, profile, 1, w, H);
+  out.levels.clear();
+  const size_t open = build_edges(s, k, profile, w);
   // Rows come in order and runs left to right (see sweep): count per row, then sum up.
   sweep(w, H, profile.width_px, [&](int r, int a, int b) {
     ++out.row_begin[size_t(r) + 1];
     out.columns.push_back(uint16_t(a));
     out.columns.push_back(uint16_t(b));
+    out.levels.push_back(255);
   });
   for (int r = 0; r < H; ++r) out.row_begin[size_t(r) + 1] += out.row_begin[size_t(r)];
   return open;
 }
 
+}  // namespace
+
+size_t rasterize_layer_runs(const Slices& s, size_t k, const PrinterProfile& profile, MaskRuns& out) {
+  check_layer(s, k, profile);
+  if (profile.antialiasing) throw Error("anti-aliased masks have grey levels and cannot be given as runs");
+  return binary_runs(s, k, profile, out);
+}
+
+size_t rasterize_layer_antialiased_runs(const Slices& s, size_t k, const PrinterProfile& profile, MaskRuns& out) {
+  check_antialiased_layer(s, k, profile);
+  return is_binary(profile) ? binary_runs(s, k, profile, out) : coverage_runs(s, k, profile, out);
+}
+
+size_t rasterize_layer_antialiased_png(const Slices& s, size_t k, const PrinterProfile& profile,
+                                       std::vector<uint8_t>& out) {
+  check_antialiased_layer(s, k, profile);
+  if (!is_binary(profile)) return coverage_png(s, k, profile, out);
+  thread_local MaskRuns runs;
+  const size_t open = binary_runs(s, k, profile, runs);
+  encode_mask_png(runs, out);
+  return open;
+}
+
 size_t rasterize_layer(const Slices& s, size_t k, const PrinterProfile& profile, uint8_t* out) {
   check_layer(s, k, profile);
-  thread_local Scratch w;
   const int W = profile.width_px, H = profile.height_px;
   std::memset(out, 0, size_t(W) * size_t(H));
-  if (!profile.antialiasing) {
-    const size_t open = build_edges(s, k, profile, 1, w, H);
+  if (is_binary(profile)) {
+    thread_local Scratch w;
+    const size_t open = build_edges(s, k, profile, w);
     sweep(w, H, W, [&](int r, int a, int b) { std::memset(out + size_t(r) * W + a, 255, b - a); });
     return open;
   }
-  constexpr int S = kSupersample;
-  const size_t open = build_edges(s, k, profile, S, w, H * S);
-  w.coverage.assign(size_t(W) * H, 0);
-  uint16_t* cov = w.coverage.data();
-  sweep(w, H * S, W * S, [&](int r, int a, int b) {
-    uint16_t* row = cov + size_t(r / S) * W;
-    const int ca = a / S, cb = (b - 1) / S;
-    if (ca == cb) {
-      row[ca] += uint16_t(b - a);
-      return;
+  thread_local MaskRuns runs;
+  const size_t open = coverage_runs(s, k, profile, runs);
+  for (int r = 0; r < H; ++r)
+    for (uint32_t i = runs.row_begin[size_t(r)]; i < runs.row_begin[size_t(r) + 1]; ++i) {
+      const uint16_t a = runs.columns[2 * size_t(i)], b = runs.columns[2 * size_t(i) + 1];
+      std::memset(out + size_t(r) * W + a, runs.levels[i], b - a);
     }
-    row[ca] += uint16_t(S * (ca + 1) - a);
-    for (int c = ca + 1; c < cb; ++c) row[c] += S;
-    row[cb] += uint16_t(b - S * cb);
-  });
-  for (size_t i = 0, n = size_t(W) * H; i < n; ++i)
-    out[i] = uint8_t((cov[i] * 255u + S * S / 2) / (S * S));
   return open;
 }
 

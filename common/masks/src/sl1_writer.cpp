@@ -74,7 +74,7 @@ std::string prusaslicer_ini(const Sl1Job& j) {
          "display_width = " + w + "\n"
          "exposure_time = " + num(kExposureSeconds) + "\n"
          "faded_layers = " + std::to_string(std::min(kFadedLayers, j.layers)) + "\n"
-         "gamma_correction = " + (p.antialiasing ? "1" : "0") + "\n"
+         "gamma_correction = " + num(p.antialiasing ? p.gamma : 0) + "\n"
          "initial_exposure_time = " + num(kFirstExposureSeconds) + "\n"
          "initial_layer_height = " + num(j.layer_height_mm) + "\n"
          "layer_height = " + num(j.layer_height_mm) + "\n"

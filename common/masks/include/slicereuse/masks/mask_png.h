@@ -3,8 +3,9 @@
 //
 // encode_mask_png: width x height bytes (row-major, one grey channel) -> a PNG file's bytes in
 // out (replaced), greyscale with bits = 1 (a pixel is white when its byte is >= 128) or 8.
-// encode_mask_png of MaskRuns: the same 8-bit PNG (0 and 255) of a binary mask given as runs
-// of lit pixels, in time proportional to the runs, not the pixels.
+// encode_mask_png of MaskRuns: the same 8-bit PNG of a mask given as runs of lit pixels, in
+// time proportional to the runs, not the pixels (an anti-aliased mask's grey pixels, only
+// along the edges, are runs of their own).
 // No row filter; the image data is deflated by RunDeflater (deflate_runs.h), which does what
 // zlib's run-length strategy does on masks in a fraction of the time: the 8-bit PNGs that
 // .sl1 archives need made zlib the bottleneck of mask export. libdeflate was measured against
@@ -31,13 +32,15 @@ struct MaskImage {
   std::vector<uint8_t> pixels;  // width * height
 };
 
-// A binary mask as runs of lit pixels: row r's runs are the column ranges
-// [columns[2i], columns[2i+1]) for i in [row_begin[r], row_begin[r+1]), increasing and disjoint.
+// A mask as runs of lit pixels: row r's runs are the column ranges
+// [columns[2i], columns[2i+1]) for i in [row_begin[r], row_begin[r+1]), increasing and disjoint,
+// run i's pixels all levels[i] (255 in a binary mask); pixels in no run are 0.
 struct MaskRuns {
   int width = 0;
   int height = 0;
   std::vector<uint32_t> row_begin;  // height + 1
   std::vector<uint16_t> columns;    // 2 per run
+  std::vector<uint8_t> levels;      // 1 per run
 };
 
 void encode_mask_png(const uint8_t* pixels, int width, int height, int bits,
