@@ -2,7 +2,6 @@
 // the plugin keeps between filters: the cached encoding and the buffers kept for the next member.
 #include "filter_params.h"
 #include "filters_common.h"
-#include "slicereuse/util/buffer.h"
 #include "slicereuse/util/memory_budget.h"
 
 namespace slicereuse::plugin {
