@@ -147,17 +147,11 @@ void check_family(const Slices& encoding, const Mesh& mesh) {
 template <class Ends>
 Slices transfer(const Slices& encoding, const Ends& ends, const Mesh& target, const TransferOptions& options,
                 TransferStats* stats, const Progress& progress) {
-  report_progress(progress, 0, "transferring");
-  TransferStats st;
-  Slices out = options.mode == TransferMode::Barycentric
-                   ? transfer_barycentric(encoding, ends, target, options.encoding, st, progress)
-                   : transfer_exact(encoding, ends, target, options.encoding, st, progress);
-  out.z_start = encoding.z_start;
-  out.thickness = encoding.thickness;
-  out.fingerprint = encoding.fingerprint;
-  report_progress(progress, 1, "transferring");
-  if (stats) *stats = st;
-  return out;
+  return reported_transfer(encoding, encoding.fingerprint, stats, progress, [&](TransferStats& st) {
+    return options.mode == TransferMode::Barycentric
+               ? transfer_barycentric(encoding, ends, target, options.encoding, st, progress)
+               : transfer_exact(encoding, ends, target, options.encoding, st, progress);
+  });
 }
 
 }  // namespace

@@ -45,6 +45,23 @@ inline size_t layer_point_end(const Slices& s, size_t k) { return s.contour_begi
 
 Slices layout_of(const Slices& encoding);
 
+// One transfer between its progress reports: make(stats) computes the layers; the output gets
+// the encoding's z_start and thickness and the fingerprint of the mesh it lies on (the target's),
+// and *stats (when not null) the figures.
+template <class Make>
+Slices reported_transfer(const Slices& encoding, const Fingerprint& lies_on, TransferStats* stats,
+                         const Progress& progress, Make&& make) {
+  report_progress(progress, 0, "transferring");
+  TransferStats st;
+  Slices out = make(st);
+  out.z_start = encoding.z_start;
+  out.thickness = encoding.thickness;
+  out.fingerprint = lies_on;
+  report_progress(progress, 1, "transferring");
+  if (stats) *stats = st;
+  return out;
+}
+
 struct EndsFromFaces {
   const uint8_t* edge;
   const uint32_t* face;

@@ -277,17 +277,11 @@ Slices transfer_through_map(const Slices& encoding, const SurfaceMap& map, const
   if (options.mode == TransferMode::Barycentric && options.encoding)
     throw Error("barycentric transfer through a map puts points inside the target's faces, not on its edges, so it "
                 "gives no target encoding; use exact mode (0) to write the target's encoding");
-  report_progress(progress, 0, "transferring");
-  TransferStats st;
-  Slices out = options.mode == TransferMode::Barycentric
-                   ? barycentric_through_map(encoding, map, target, st, progress)
-                   : exact_through_map(encoding, map, target, options.encoding, st, progress);
-  out.z_start = encoding.z_start;
-  out.thickness = encoding.thickness;
-  out.fingerprint = map.target;
-  report_progress(progress, 1, "transferring");
-  if (stats) *stats = st;
-  return out;
+  return reported_transfer(encoding, map.target, stats, progress, [&](TransferStats& st) {
+    return options.mode == TransferMode::Barycentric ? barycentric_through_map(encoding, map, target, st, progress)
+                                                     : exact_through_map(encoding, map, target, options.encoding,
+                                                                         st, progress);
+  });
 }
 
 }  // namespace slicereuse
