@@ -10,7 +10,7 @@ namespace slicereuse::plugin {
 EncodingCache& encoding_cache() {
   static EncodingCache& cache = [] () -> EncodingCache& {
     static EncodingCache c;
-    add_memory_reclaimer([] { return uint64_t(c.clear()); });
+    add_memory_reclaimer([] { return uint64_t(c.try_clear()); });
     return c;
   }();
   return cache;

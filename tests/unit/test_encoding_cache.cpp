@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
 
 #include "family.h"
 #include "slicereuse/formats/slice_files.h"
@@ -100,6 +101,29 @@ TEST_F(Cache, ReportsAndFreesItsMemory) {
   EXPECT_EQ(cache.clear(), expected);
   EXPECT_EQ(cache.bytes(), 0u);
   EXPECT_EQ(cache.clear(), 0u);
+}
+
+// try_clear, what a memory reclaimer calls, gives up at once while another thread holds the
+// cache: a check of memory inside a reading get() must not wait for that get() to end (with
+// clear() this test never ends: the reading thread waits for the one waiting for it).
+TEST_F(Cache, TryClearDoesNotWaitForAReadInProgress) {
+  const std::string path = dir + "/enc.srb";
+  write_encoding_file(path, source, FileFormat::Binary);
+  EncodingCache cache;
+  cache.get(path, member);
+  write_encoding_file(path, source, FileFormat::Text);  // another content: get() reads it again
+  int calls = 0;
+  size_t during = SIZE_MAX;
+  cache.get(path, member, nullptr, [&](double, const char*) {
+    if (calls++ == 0) std::thread([&] { during = cache.try_clear(); }).join();
+    return true;
+  });
+  EXPECT_GT(calls, 0);
+  EXPECT_EQ(during, 0u);
+  const size_t held = cache.bytes();  // the text file's entry, read to the end
+  ASSERT_GT(held, 0u);
+  EXPECT_EQ(cache.try_clear(), held);  // idle: cleared
+  EXPECT_EQ(cache.bytes(), 0u);
 }
 
 TEST_F(Cache, IdentityFollowsTheContent) {

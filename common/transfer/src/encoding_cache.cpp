@@ -45,6 +45,15 @@ size_t EncodingCache::bytes() const {
 
 size_t EncodingCache::clear() {
   std::lock_guard<std::mutex> lock(mutex_);
+  return drop_entry();
+}
+
+size_t EncodingCache::try_clear() {
+  std::unique_lock<std::mutex> lock(mutex_, std::try_to_lock);
+  return lock.owns_lock() ? drop_entry() : 0;
+}
+
+size_t EncodingCache::drop_entry() {
   const size_t freed = entry_ ? bytes_of_entry(*entry_) : 0;
   entry_.reset();
   return freed;

@@ -39,8 +39,14 @@ class EncodingCache {
   size_t bytes() const;
   // Drops the entry; returns its bytes.
   size_t clear();
+  // clear(), unless another thread holds the cache right now (reading an entry): 0 then,
+  // without waiting. What a memory reclaimer calls (memory_budget.h): check_memory_for may run
+  // on any thread, also inside a reading get(), where waiting for the cache would never end.
+  size_t try_clear();
 
  private:
+  size_t drop_entry();  // with mutex_ held
+
   mutable std::mutex mutex_;
   std::shared_ptr<const CachedEncoding> entry_;
 };

@@ -25,7 +25,8 @@ uint64_t available_memory();
 // releases the buffers kept for reuse (buffer.h), which the caches' freed buffers join; it returns
 // the bytes given back, each counted once. check_memory_for calls it before it refuses a job; a
 // caller that plans by available_memory() (Make Print Job's ranges of layers) calls it before it
-// settles for less. Thread safe.
+// settles for less. Thread safe. A reclaimer must not wait for a lock that a thread checking
+// memory may hold (EncodingCache::try_clear gives up instead).
 void add_memory_reclaimer(std::function<uint64_t()> reclaim);
 uint64_t reclaim_memory();
 
