@@ -1,10 +1,12 @@
-"""Makes the print jobs of a product family: one .sl1 per member, reusing one member's slicing.
+"""Makes the print jobs of a product family: one print file per member, reusing one member's slicing.
 
-    scripts/python examples/family.py --layer-thickness H --out DIR [--direct] [--verify]
-                                      [--keep-contours] MESH0 MESH1 ...
+    scripts/python examples/family.py --layer-thickness H --out DIR [--printer ID] [--antialiasing]
+                                      [--format EXT] [--direct] [--verify] [--keep-contours]
+                                      MESH0 MESH1 ...
 
 Default: slices MESH0 once with encoding, then for each member MESH1 ...: loads it, transfers
-the slicing (exact: the result equals slicing it) and writes DIR/<member file stem>.sl1, all in
+the slicing (exact: the result equals slicing it) and writes DIR/<member file stem>.sl1 (or the
+--format given), all in
 memory, with no contour file unless --keep-contours. --direct: the same outputs by slicing every
 member directly (the baseline). --verify: also slices each member directly and compares the
 masks (min_similarity 1 means identical). Prints one JSON object:
@@ -36,9 +38,15 @@ def main():
     ap.add_argument("--verify", action="store_true",
                     help="also slice each member directly and compare the masks (min_similarity)")
     ap.add_argument("--keep-contours", action="store_true", help="also write each member's contour file")
-    ap.add_argument("--width", type=int, help="mask width in pixels (default: make_print_job's)")
-    ap.add_argument("--height", type=int, help="mask height in pixels (default: make_print_job's)")
-    ap.add_argument("--pixel-um", type=float, help="pixel size in micrometres (default: make_print_job's)")
+    ap.add_argument("--printer", help="printer profile: method (the default), prusa_sl1, prusa_sl1s_speed, "
+                    "anycubic_photon_mono_x, elegoo_saturn_3_ultra, or custom (with --width, --height, --pixel-um)")
+    ap.add_argument("--width", type=int, help="custom printer: display pixels along x")
+    ap.add_argument("--height", type=int, help="custom printer: display pixels along y")
+    ap.add_argument("--pixel-um", type=float, help="custom printer: pixel size in micrometres")
+    ap.add_argument("--antialiasing", action="store_true", help="grey edge pixels from exact coverage")
+    ap.add_argument("--gamma", type=float, help="anti-aliasing gamma (PrusaSlicer's gamma_correction; default 1)")
+    ap.add_argument("--format", default="sl1", choices=["sl1", "sl1s", "goo", "png"],
+                    help="print file: sl1 (the default), sl1s, goo, or png (a folder of PNG images)")
     ap.add_argument("--text", action="store_true",
                     help="write text .enc/.ctr instead of binary .srb (encoding, kept contours)")
     ap.add_argument("meshes", nargs="+", metavar="MESH", help="the sliced mesh, then its family members")
@@ -48,10 +56,19 @@ def main():
     given = {"width_px": args.width, "height_px": args.height,
              "pixel_size_x_um": args.pixel_um, "pixel_size_y_um": args.pixel_um}
     profile = {k: v for k, v in given.items() if v is not None}
+    if profile and args.printer not in (None, "custom"):
+        ap.error(f"--width, --height and --pixel-um describe a custom printer, not {args.printer}")
+    if profile or args.printer:
+        profile["printer"] = args.printer or "custom"
+    if args.antialiasing:
+        profile["antialiasing"] = True
+    if args.gamma is not None:
+        profile["gamma"] = args.gamma
     try:
         sr.load()
         result = sr.family(args.meshes[0], args.meshes[1:], args.layer_thickness, args.out,
                            profile=profile, binary=not args.text,
+                           extension="" if args.format == "png" else "." + args.format,
                            progress=progress_bar if sys.stderr.isatty() else None,
                            direct=args.direct, verify=args.verify, keep_contours=args.keep_contours)
     except Exception as e:  # pymeshlab.PyMeshLabException, OSError, RuntimeError, ValueError

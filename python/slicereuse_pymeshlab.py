@@ -52,8 +52,9 @@ def _load_mesh(ms, path):
 
 
 def family(source, targets, layer_thickness, out, profile=None, binary=True, progress=None,
-           direct=False, verify=False, keep_contours=False, details=False):
-    """The production pipeline: one .sl1 print job per family member, out/<member stem>.sl1.
+           direct=False, verify=False, keep_contours=False, details=False, extension=".sl1"):
+    """The production pipeline: one print job per family member, out/<member stem><extension>
+    (".sl1", ".sl1s", ".goo", or "" for a folder of PNG images).
 
     Default: slices source once with encoding (out/<source stem>_enc.srb), then for each
     target loads it and runs make_print_job, which transfers the encoding (kept in memory by
@@ -61,12 +62,12 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     direct=True: the same outputs from slicing every target directly (the baseline), each
     from its own lowest vertex: the members of a family sit on one build plate (the same lowest
     z, as the source's), which is where transfer puts their layers too.
-    verify=True: also slices each target directly into out/<stem>.direct.sl1 and compares the
+    verify=True: also slices each target directly into out/<stem>.direct<extension> and compares the
     two stacks (min_similarity 1: identical masks); not counted in the target's seconds.
     keep_contours=True: also writes out/<stem>.srb (.ctr when binary is False).
     Returns {"source", "seconds", "targets": [{"mesh", "layers", "points", "resliced_layers",
     "seconds", "output"[, "min_similarity"]}, ...]}; a target's seconds cover loading it,
-    transferring or slicing it and writing its .sl1. details=True adds the filter's own
+    transferring or slicing it and writing its print file. details=True adds the filter's own
     "slicing_seconds" (transfer or slicing) and "masks_seconds" per target, and "cpu_seconds",
     the process's CPU time (all threads) for the same span as "seconds" (for benchmarks on a
     shared machine, where CPU time is less disturbed than wall time).
@@ -79,7 +80,9 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     if repeated:
         raise ValueError(f"members with the same file name would write the same output: {sorted(repeated)}")
     pymeshlab = load()
-    profile = profile or {}  # make_print_job's display parameters; the filter's defaults for the others
+    # make_print_job's printer parameters (printer by id, or custom values; antialiasing, gamma,
+    # offsets); the filter's defaults for the others.
+    profile = profile or {}
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     steps, step = 1 + len(targets) * (2 if verify else 1), 0
@@ -112,7 +115,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
         t0, c0 = time.perf_counter(), time.process_time()
         ms = pymeshlab.MeshSet()
         _load_mesh(ms, target)
-        output = out / f"{stem}.sl1"
+        output = out / f"{stem}{extension}"
         contours = str(out / (stem + (".srb" if binary else ".ctr"))) if keep_contours else ""
         # z_start is left at the filter's default: the mesh's lowest vertex.
         r = ms.apply_filter("make_print_job", encoding_file=encoding, layer_thickness=layer_thickness,
@@ -125,7 +128,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
                          cpu_seconds=time.process_time() - c0)
         if verify:
             tick(f"{name}: verifying against direct slicing")
-            check = out / f"{stem}.direct.sl1"
+            check = out / f"{stem}.direct{extension}"
             ms.apply_filter("make_print_job", encoding_file="", layer_thickness=layer_thickness,
                             contour_file="", output_path=str(check), **profile)
             c = ms.apply_filter("compare_mask_stacks", stack_a=str(output), stack_b=str(check),

@@ -29,15 +29,28 @@ FilterSpec free_cached_memory_filter();
 // The method's reference, closing every description.
 extern const char* const kReference;
 
-// The printer's display (filters_display.cpp): its parameters, bound to PrinterProfile (whose
-// defaults they are), the warning for a part that does not fit it, and its figures in a result
-// (open contours ignored, outside_display, the part's extent in mm).
-ParamList<PrinterProfile> printer_params();
+// The printer (filters_display.cpp): a preset of printer_presets.h by its index, or custom
+// (index = the number of presets, the default) with the given display and exposure; the offsets
+// and anti-aliasing given apply to every printer. profile() refuses a preset given with display
+// or exposure values other than their defaults (Error naming them).
+inline const char* const kCustomPrinter = "custom";
+struct PrinterSettings {
+  size_t printer = 0;
+  PrinterProfile given;
+  PrinterProfile profile() const;
+  std::string name() const;  // the preset's id, or "custom"
+};
+// Its parameters ("printer", then the custom values bound to PrinterProfile, whose defaults they
+// are), a log line saying which printer and image the masks are made for, the warning for a part
+// that does not fit the display, and the display figures in a result (open contours ignored,
+// outside_display, the part's extent in mm).
+ParamList<PrinterSettings> printer_params();
+void log_printer(Host& host, const char* filter, const PrinterSettings& settings);
 void log_display_warning(Host& host, const char* filter, const MaskExportStats& stats,
                          const PrinterProfile& profile);
 void add_display_figures(const MaskExportStats& stats, Result& result);
 // What an empty output_path of the mask filters is told.
-inline const char* const kMaskOutputWhenEmpty = "choose a folder or a .sl1 file";
+inline const char* const kMaskOutputWhenEmpty = "choose a folder, or a .sl1 or .sl1s file";
 
 // The slicing options of the layer_thickness and z_start parameters (z_start_option: at or
 // below kLowestVertexZStartAtOrBelow, the mesh's lowest vertex).

@@ -12,7 +12,7 @@ namespace {
 struct ExportParams {
   std::string contour_file;
   std::string output_path;
-  PrinterProfile printer;
+  PrinterSettings printer;
 };
 
 ParamList<ExportParams> export_params() {
@@ -20,16 +20,18 @@ ParamList<ExportParams> export_params() {
   l.file(&ExportParams::contour_file, ParamType::FileOpen, "contour_file", "Contour file", "*.ctr *.srb", nullptr,
          "Contour file written by Slice Mesh with Encoding or Transfer Slicing to Mesh. Empty: the current layer, a "
          "contour file opened with File > Import Mesh (.ctr, .srb, .cli).")
-      .file(&ExportParams::output_path, ParamType::FileSave, "output_path", "Output folder or .sl1", "*.sl1",
+      .file(&ExportParams::output_path, ParamType::FileSave, "output_path", "Output folder, .sl1 or .sl1s", "*.sl1 *.sl1s",
             kMaskOutputWhenEmpty,
-            "A folder for PNG images (created if missing; its parent must exist), or a file name ending in .sl1 for "
-            "a Prusa SL1 archive.")
+            "A folder for PNG images (created if missing; its parent must exist), or a file name ending in .sl1 or "
+            ".sl1s for a Prusa SL1/SL1S archive.")
       .include(&ExportParams::printer, printer_params());
   return l;
 }
 
 Result run_export_masks(const ExportParams& p, Host& host) {
   const auto start = std::chrono::steady_clock::now();
+  const PrinterProfile profile = p.printer.profile();
+  log_printer(host, "Export Mask Images", p.printer);
   check_outputs({{"output_path", p.output_path}});
 
   const Progress progress = host.progress();
@@ -44,13 +46,13 @@ Result run_export_masks(const ExportParams& p, Host& host) {
       throw Error(std::string("contour_file is empty and ") + e.what());
     }
   }
-  const MaskExportStats stats = export_masks(s, p.printer, p.output_path, sub_progress(progress, 0.1, 1));
+  const MaskExportStats stats = export_masks(s, profile, p.output_path, sub_progress(progress, 0.1, 1));
 
   const double seconds = seconds_since(start);
   host.log(format("Export Mask Images: %zu layers of %dx%d pixels to %s, %zu open contours ignored, %.3f s",
-                  stats.layers, p.printer.width_px, p.printer.height_px, p.output_path.c_str(),
+                  stats.layers, profile.width_px, profile.height_px, p.output_path.c_str(),
                   stats.ignored_open_contours, seconds));
-  log_display_warning(host, "Export Mask Images", stats, p.printer);
+  log_display_warning(host, "Export Mask Images", stats, profile);
   Result result = {{"layers", int64_t(stats.layers)}, {"seconds", seconds}};
   add_display_figures(stats, result);
   return result;
@@ -62,11 +64,12 @@ FilterSpec export_masks_filter() {
   const std::string description = std::string(
       "<p>Rasterizes the layers of a contour file into one mask image per layer "
       "for mask-projection (DLP/LCD) printers: a folder of PNG images "
-      "(NNNNN.png), or a Prusa SL1 archive when the output path ends in .sl1.</p>"
-      "<p>A pixel is lit when its centre lies inside the layer by the nonzero "
-      "winding rule of the closed contours; open contours are ignored and counted. "
-      "The model's XY origin sits at the image centre, shifted by the offsets; row "
-      "0 is the top of the image (largest y). Pixel sizes are in micrometres, "
+      "(NNNNN.png), or a Prusa SL1/SL1S archive when the output path ends in .sl1 or .sl1s.</p>"
+      "<p>Choose the printer by name (its display, orientation, mirrors and exposure as its "
+      "own slicer writes them), or custom and give them. A binary pixel is lit when its centre lies "
+      "inside the layer by the nonzero winding rule of the closed contours; with anti-aliasing a pixel's grey "
+      "level is the exact area the part covers of it (PrusaSlicer's gamma). Open contours are ignored and counted. "
+      "The model's XY origin sits at the display centre, shifted by the offsets. Pixel sizes are in micrometres, "
       "offsets in mm. With an empty contour file the contours come from the current "
       "layer, a contour file opened in MeshLab (.ctr, .srb or .cli).</p>") +
       kReference;

@@ -17,7 +17,7 @@ struct PrintJobParams {
   double z_start;
   std::string contour_file;
   std::string output_path;
-  PrinterProfile printer;
+  PrinterSettings printer;
 };
 
 ParamList<PrintJobParams> print_job_params() {
@@ -35,9 +35,9 @@ ParamList<PrintJobParams> print_job_params() {
       .file(&PrintJobParams::contour_file, ParamType::FileSave, "contour_file", "Contour file", "*.ctr *.srb", nullptr,
             "Also write the layers' contour points here (text .ctr unless the name ends in .srb). Empty (the "
             "default): no contour file.")
-      .file(&PrintJobParams::output_path, ParamType::FileSave, "output_path", "Output .sl1 or folder", "*.sl1",
+      .file(&PrintJobParams::output_path, ParamType::FileSave, "output_path", "Output .sl1, .sl1s or folder", "*.sl1 *.sl1s",
             kMaskOutputWhenEmpty,
-            "A file name ending in .sl1 for a Prusa SL1 archive, or a folder for PNG images (created if missing; its "
+            "A file name ending in .sl1 or .sl1s for a Prusa SL1/SL1S archive, or a folder for PNG images (created if missing; its "
             "parent must exist).")
       .include(&PrintJobParams::printer, printer_params());
   return l;
@@ -54,6 +54,8 @@ void keep_buffers_for_the_next_member() {
 
 Result run_print_job(const PrintJobParams& p, Host& host) {
   const auto start = std::chrono::steady_clock::now();
+  const PrinterProfile profile = p.printer.profile();
+  log_printer(host, "Make Print Job", p.printer);
   const bool direct = p.encoding_file.empty();
   check_outputs({{"contour_file", p.contour_file}, {"output_path", p.output_path}});
 
@@ -92,7 +94,7 @@ Result run_print_job(const PrintJobParams& p, Host& host) {
                          slicing_seconds += seconds_since(t);
                          return s;
                        }};
-    masks = export_masks(chunks, p.printer, p.output_path, progress);
+    masks = export_masks(chunks, profile, p.output_path, progress);
     masks_seconds = masks.seconds - slicing_seconds;
     layers = stats.resliced_layers = planes.size();
   } else {
@@ -112,7 +114,7 @@ Result run_print_job(const PrintJobParams& p, Host& host) {
     if (!p.contour_file.empty())
       write_contour_file(outputs.file(p.contour_file), s, format_for_name(p.contour_file), sub_progress(progress, 0.3, 0.4));
     const auto masks_start = std::chrono::steady_clock::now();
-    masks = export_masks(s, p.printer, p.output_path, sub_progress(progress, 0.4, 1));
+    masks = export_masks(s, profile, p.output_path, sub_progress(progress, 0.4, 1));
     masks_seconds = seconds_since(masks_start);
     outputs.commit();
     layers = s.layers();
@@ -126,7 +128,7 @@ Result run_print_job(const PrintJobParams& p, Host& host) {
                   ranges > 1 ? format(" in %zu ranges of layers, to stay within memory", ranges).c_str() : "", points,
                   p.output_path.c_str(), seconds, direct ? "slicing" : "transfer", slicing_seconds,
                   direct ? "" : (cached ? ", encoding in memory" : ", encoding read"), masks_seconds));
-  log_display_warning(host, "Make Print Job", masks, p.printer);
+  log_display_warning(host, "Make Print Job", masks, profile);
   Result result = {{"layers", int64_t(layers)},
                    {"points", int64_t(points)},
                    {"transferred_layers", int64_t(stats.transferred_layers)},

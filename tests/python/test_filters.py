@@ -1,5 +1,8 @@
 """The four filters through pymeshlab: parameters, result dicts, the preview layer, and bad
 input raising PyMeshLabException with a message that names the problem (never a crash)."""
+import struct
+import zipfile
+
 import pytest
 
 from conftest import THICKNESS, raises_filter_error as _raises, read_text_contours
@@ -121,6 +124,25 @@ def test_barycentric_mode_reports_deviation(pymeshlab, sliced, make_family):
     worst = max(abs(p[2] - z) for z, cs in layers for _, pts in cs for p in pts)
     assert t["max_plane_deviation"] > 1e-3
     assert worst == pytest.approx(t["max_plane_deviation"], abs=1e-12)  # the file has 17 digits
+
+
+def test_a_printer_preset_by_name_makes_its_print_file(sliced, pymeshlab):
+    # pymeshlab takes the printer by its id; the SL1S preset writes portrait 1620 x 2560 images
+    # and its printer model, anti-aliased on request; a custom value with a preset is refused.
+    ms, _, _, _, tmp, _ = sliced
+    ms.apply_filter("export_mask_images", contour_file=str(tmp / "s.ctr"), output_path=str(tmp / "p.sl1s"),
+                    printer="prusa_sl1s_speed", antialiasing=True)
+    with zipfile.ZipFile(tmp / "p.sl1s") as z:
+        assert "printerModel = SL1S\n" in z.read("config.ini").decode()
+        png = z.read("p00000.png")
+    assert png[:8] == b"\x89PNG\r\n\x1a\n"
+    width, height = struct.unpack(">II", png[16:24])
+    assert (width, height, png[24], png[25]) == (1620, 2560, 8, 0)  # 8-bit grey
+    _raises(pymeshlab, ms, "export_mask_images",
+            "printer prusa_sl1s_speed sets the display and exposure, but width_px were given too",
+            contour_file=str(tmp / "s.ctr"), output_path=str(tmp / "q.sl1s"), printer="prusa_sl1s_speed",
+            width_px=100)
+    assert not (tmp / "q.sl1s").exists()
 
 
 def test_masks_and_compare_results(sliced):

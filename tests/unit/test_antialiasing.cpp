@@ -2,7 +2,8 @@
 // loop clipped to the pixel's square by Sutherland-Hodgman, signed areas summed), on holes,
 // walls thinner than a pixel, edges on pixel borders, fine contours, long edges and parts that
 // leave the display; gamma 0 against the binary mask; invariance to contour order, loop start
-// and reversed duplicates; mirrors; runs; gamma validation and the .sl1 gamma_correction key.
+// and reversed duplicates; mirrors; portrait orientation; runs; gamma validation and the .sl1
+// gamma_correction key.
 #include <gtest/gtest.h>
 #include <omp.h>
 #include <zlib.h>
@@ -118,16 +119,19 @@ double signed_area(const std::vector<Pt>& poly) {
 // Each pixel's covered area: the integral of the winding number over its square, as an absolute
 // value clamped to 1 (rasterize_layer.h), from the loops in pixel coordinates (the placement of
 // docs/formats.md, without mirrors). Every loop is clipped to a pixel row's strip, then each
-// strip polygon to each pixel of that row.
+// strip polygon to each pixel of that row. Portrait, as PrusaSlicer writes it: the image is
+// height_px wide, column 0 at the largest y, row 0 at the largest x.
 std::vector<double> reference_coverage(const Layer& layer, const PrinterProfile& p) {
-  const int W = p.width_px, H = p.height_px;
+  const int W = p.portrait ? p.height_px : p.width_px, H = p.portrait ? p.width_px : p.height_px;
   std::vector<std::vector<Pt>> loops;
   for (const Loop& l : layer) {
     if (l.open) continue;
     std::vector<Pt> q;
-    for (const auto& pt : l.pts)
-      q.push_back({W / 2.0 + (pt[0] + p.offset_x_mm) * 1000 / p.pixel_size_x_um,
-                   H / 2.0 - (pt[1] + p.offset_y_mm) * 1000 / p.pixel_size_y_um});
+    for (const auto& pt : l.pts) {
+      const double x = (pt[0] + p.offset_x_mm) * 1000 / p.pixel_size_x_um,
+                   y = (pt[1] + p.offset_y_mm) * 1000 / p.pixel_size_y_um;
+      q.push_back(p.portrait ? Pt{W / 2.0 - y, H / 2.0 - x} : Pt{W / 2.0 + x, H / 2.0 - y});
+    }
     loops.push_back(q);
   }
   std::vector<double> integral(size_t(W) * H, 0);
@@ -290,15 +294,16 @@ namespace {
 void expect_runs_encode_the_pixels_as_the_direct_png_does(const Slices& s, size_t k, const PrinterProfile& p) {
   MaskRuns runs;
   rasterize_layer_antialiased_runs(s, k, p, runs);
-  ASSERT_EQ(runs.row_begin.size(), size_t(p.height_px) + 1);
+  const MaskImageLayout image = mask_image_layout(p);
+  ASSERT_EQ(runs.row_begin.size(), size_t(image.height) + 1);
   ASSERT_EQ(runs.levels.size(), runs.row_begin.back());
-  for (int r = 0; r < p.height_px; ++r)
+  for (int r = 0; r < image.height; ++r)
     for (uint32_t i = runs.row_begin[size_t(r)]; i < runs.row_begin[size_t(r) + 1]; ++i) {
       EXPECT_LT(runs.columns[2 * i], runs.columns[2 * i + 1]);
       EXPECT_NE(runs.levels[i], 0);
       if (i > runs.row_begin[size_t(r)]) EXPECT_LE(runs.columns[2 * i - 1], runs.columns[2 * i]);
     }
-  if (!runs.columns.empty()) EXPECT_LE(runs.columns.back(), p.width_px);
+  if (!runs.columns.empty()) EXPECT_LE(runs.columns.back(), image.width);
   std::vector<uint8_t> png, direct;
   encode_mask_png(runs, png);
   MaskImage back;
@@ -400,4 +405,37 @@ TEST_F(AntialiasedExport, Sl1CarriesTheGammaAndIsTheSameOnAnyNumberOfThreads) {
   binary.antialiasing = false;
   export_masks(s, binary, path("binary.sl1"));
   EXPECT_NE(test::zip_entry(path("binary.sl1"), "prusaslicer.ini").find("\ngamma_correction = 0\n"), std::string::npos);
+}
+
+TEST(Antialiasing, PortraitIsTheDisplayTurnedCounterClockwiseThenMirrored) {
+  // A display 200 px along x and 160 along y, portrait: images 160 wide and 200 tall, against
+  // the independent coverage in PrusaSlicer's portrait placement; mirrors flip the image's
+  // columns (mirror_x) and rows (mirror_y), and gamma 0 is still the binary mask.
+  const std::vector<Layer> layers = shapes();
+  const Slices s = test::make_slices(layers);
+  PrinterProfile p = antialiased(profiles()[1], 1);
+  p.height_px = 160;
+  p.portrait = true;
+  for (int mirror = 0; mirror < 4; ++mirror) {
+    p.mirror_x = mirror & 1;
+    p.mirror_y = mirror & 2;
+    const MaskImageLayout image = mask_image_layout(p);
+    ASSERT_EQ(image.width, 160);
+    ASSERT_EQ(image.height, 200);
+    for (size_t k = 0; k < layers.size(); ++k) {
+      const std::vector<double> f = reference_coverage(layers[k], p);
+      std::vector<uint8_t> want(f.size());
+      for (size_t i = 0; i < f.size(); ++i) want[i] = level_of(f[i], 1);
+      want = flipped(want, 160, 200, p.mirror_x, p.mirror_y);
+      const std::vector<uint8_t> img = raster(s, k, p);
+      ASSERT_EQ(img.size(), want.size());
+      int worst = 0;
+      for (size_t i = 0; i < img.size(); ++i) worst = std::max(worst, std::abs(int(img[i]) - int(want[i])));
+      EXPECT_LE(worst, 1) << "layer " << k << ", mirror " << mirror;
+      PrinterProfile binary = p;
+      binary.antialiasing = false;
+      EXPECT_EQ(raster(s, k, antialiased(p, 0)), raster(s, k, binary)) << "layer " << k << ", mirror " << mirror;
+      expect_runs_encode_the_pixels_as_the_direct_png_does(s, k, p);
+    }
+  }
 }

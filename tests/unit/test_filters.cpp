@@ -14,9 +14,11 @@
 
 #include "error_of.h"
 #include "filter_api.h"
+#include "mask_stack.h"
 #include "shapes.h"
 #include "shuffle_mesh.h"
 #include "slicereuse/formats/slice_files.h"
+#include "slicereuse/masks/mask_png.h"
 #include "slicereuse/slicing/slice_layers.h"
 #include "slicereuse/transfer/transfer_contours.h"
 #include "temp_folder.h"
@@ -133,11 +135,69 @@ TEST(Filters, ValuesOutOfRangeAreRefusedOnceWithTheirRange) {
   const FilterSpec& masks = spec_named("export_mask_images");
   EXPECT_EQ(error_of([&] { masks.run(defaults(masks, {{"output_path", "/tmp/x"}}, {{"width_px", 65536}}), host); }),
             "width_px must be between 1 and 65535 pixels (got 65536)");
-  EXPECT_EQ(error_of([&] { masks.run(defaults(masks), host); }), "output_path is empty: choose a folder or a .sl1 file");
+  EXPECT_EQ(error_of([&] { masks.run(defaults(masks), host); }), "output_path is empty: choose a folder, or a .sl1 or .sl1s file");
   EXPECT_TRUE(host.lines.empty());
 }
 
 class FiltersThroughAFakeHost : public test::TempFolderTest {};
+
+// A preset gives the display and exposure, and refuses custom values given with it; the offsets
+// and anti-aliasing given apply to it; "custom" (the default) takes the values given. The log
+// names the printer.
+TEST_F(FiltersThroughAFakeHost, APrinterPresetSetsTheDisplayAndTheGivenOffsetsAndAntialiasingApply) {
+  FakeHost host;
+  host.meshes.push_back(make_sphere(1, 24, 32));
+  const FilterSpec& job = spec_named("make_print_job");
+  const ParamSpec& printer = *std::find_if(job.params.begin(), job.params.end(),
+                                           [](const ParamSpec& p) { return p.name == "printer"; });
+  const auto index_of = [&](const std::string& id) {
+    return double(std::find(printer.enum_values.begin(), printer.enum_values.end(), id) - printer.enum_values.begin());
+  };
+  ASSERT_EQ(printer.enum_values.back(), "custom");
+  EXPECT_EQ(printer.default_number, index_of("custom"));
+  EXPECT_EQ(error_of([&] {
+              job.run(defaults(job, {{"output_path", path("sl1s")}},
+                               {{"printer", index_of("prusa_sl1s_speed")}, {"width_px", 7}, {"faded_layers", 3}}),
+                      host);
+            }),
+            "printer prusa_sl1s_speed sets the display and exposure, but width_px, faded_layers were given too: "
+            "choose printer custom to give them, or leave them at their defaults");
+  EXPECT_FALSE(std::filesystem::exists(path("sl1s")));
+  job.run(defaults(job, {{"output_path", path("sl1s")}},
+                   {{"printer", index_of("prusa_sl1s_speed")}, {"offset_x_mm", 10}, {"antialiasing", 1}}),
+          host);
+  EXPECT_NE(host.lines.front().find("printer prusa_sl1s_speed: 2560x1620 display of 50 x 50 um pixels, portrait, "
+                                    "mirror x, images 1620x2560, anti-aliased (gamma 1)"),
+            std::string::npos)
+      << host.lines.front();
+  MaskImage image;
+  {
+    MaskStack stack(path("sl1s"));
+    std::vector<uint8_t> bytes;
+    stack.read(stack.layers() / 2, bytes);
+    decode_mask_png(bytes.data(), bytes.size(), "middle layer", image);
+  }
+  ASSERT_EQ(image.width, 1620);
+  ASSERT_EQ(image.height, 2560);
+  // The sphere (radius 1 mm = 20 px) moved 10 mm = 200 px along +x: up from the centre row, as
+  // portrait images have row 0 at the largest x; grey levels on its outline.
+  size_t lo = image.height, hi = 0, grey = 0;
+  for (int r = 0; r < image.height; ++r)
+    for (int c = 0; c < image.width; ++c) {
+      const uint8_t v = image.pixels[size_t(r) * size_t(image.width) + size_t(c)];
+      if (v) lo = std::min(lo, size_t(r)), hi = std::max(hi, size_t(r));
+      grey += v != 0 && v != 255;
+    }
+  EXPECT_NEAR(0.5 * double(lo + hi + 1), 1280 - 200, 1.0);
+  EXPECT_GT(grey, 0u);
+
+  host.lines.clear();
+  job.run(defaults(job, {{"output_path", path("custom")}}, {{"width_px", 70}, {"height_px", 60}}), host);
+  EXPECT_NE(host.lines.front().find("printer custom: 70x60 display of 75 x 75 um pixels, landscape, images 70x60, "
+                                    "binary"),
+            std::string::npos)
+      << host.lines.front();
+}
 
 // The family's pipeline, every filter at its spec defaults but for the files: slice a sphere,
 // transfer to a moved member, masks, a print job by reuse, compare (S = 1), cross-parameterize

@@ -12,6 +12,7 @@
 #include <iterator>
 #include <numeric>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "error_of.h"
@@ -20,6 +21,7 @@
 #include "slicereuse/masks/compare_mask_stacks.h"
 #include "slicereuse/masks/export_masks.h"
 #include "slicereuse/masks/mask_png.h"
+#include "slicereuse/masks/printer_presets.h"
 #include "slicereuse/masks/printer_profile.h"
 #include "slicereuse/masks/rasterize_layer.h"
 #include "slicereuse/util/error.h"
@@ -301,14 +303,58 @@ TEST_F(MaskFiles, Sl1ConfigCarriesTheDisplay) {
   export_masks(sample_stack(), p, dir + "/x.sl1");
   const std::string config = test::zip_entry(dir + "/x.sl1", "config.ini"),
                     slicer = test::zip_entry(dir + "/x.sl1", "prusaslicer.ini");
+  // A custom display names no printer model, as PrusaSlicer writes it for a custom printer.
   for (const char* line : {"jobDir = x\n", "numFast = 3\n", "numSlow = 0\n", "layerHeight = 0.1\n",
-                           "action = print\n", "printerModel = SL1\n"})
+                           "action = print\n", "printerModel = \n", "expTime = 6\n", "expTimeFirst = 35\n",
+                           "numFade = 10\n"})
     EXPECT_NE(config.find(line), std::string::npos) << line;
   for (const char* line : {"display_pixels_x = 200\n", "display_pixels_y = 200\n",
                            "display_width = 20\n", "display_height = 20\n",
                            "display_orientation = landscape\n", "display_mirror_x = 0\n",
                            "display_mirror_y = 1\n", "printer_technology = SLA\n"})
     EXPECT_NE(slicer.find(line), std::string::npos) << line;
+}
+
+TEST_F(MaskFiles, AnSl1sOfTheSl1sPresetIsWhatPrusaSlicerWritesForIt) {
+  // PrusaSlicer 2.5's "Original Prusa SL1S SPEED": 2560 x 1620 pixels over 128 x 81 mm,
+  // portrait (images 1620 wide, 2560 tall), display_mirror_x = 1; printerModel SL1S.
+  const PrinterProfile p = printer_preset("prusa_sl1s_speed").profile;
+  export_masks(sample_stack(), p, dir + "/part.sl1s");
+  const std::string config = test::zip_entry(dir + "/part.sl1s", "config.ini"),
+                    slicer = test::zip_entry(dir + "/part.sl1s", "prusaslicer.ini");
+  for (const char* line : {"jobDir = part\n", "printerModel = SL1S\n", "expTime = 2\n", "expTimeFirst = 25\n",
+                           "numFade = 10\n", "numFast = 3\n"})
+    EXPECT_NE(config.find(line), std::string::npos) << line;
+  for (const char* line : {"display_pixels_x = 2560\n", "display_pixels_y = 1620\n", "display_width = 128\n",
+                           "display_height = 81\n", "display_orientation = portrait\n", "display_mirror_x = 1\n",
+                           "display_mirror_y = 0\n", "printer_model = SL1S\n"})
+    EXPECT_NE(slicer.find(line), std::string::npos) << line;
+  MaskStack stack(dir + "/part.sl1s");
+  ASSERT_EQ(stack.layers(), 3u);
+  std::vector<uint8_t> bytes;
+  stack.read(0, bytes);
+  MaskImage image;
+  decode_mask_png(bytes.data(), bytes.size(), "layer 0", image);
+  EXPECT_EQ(image.width, 1620);
+  EXPECT_EQ(image.height, 2560);
+}
+
+TEST_F(MaskFiles, EveryPresetIsAValidProfileWithItsPrintersFigures) {
+  // Display sizes in mm as the printers' makers give them.
+  const std::vector<std::tuple<std::string, double, double>> sizes = {
+      {"method", 76.8, 57.6},           {"prusa_sl1", 120.96, 68.04},
+      {"prusa_sl1s_speed", 128, 81},    {"anycubic_photon_mono_x", 192, 120},
+      {"elegoo_saturn_3_ultra", 218.88, 122.88}};
+  ASSERT_EQ(printer_presets().size(), sizes.size());
+  for (const auto& [id, w, h] : sizes) {
+    const PrinterProfile& p = printer_preset(id).profile;
+    validate_printer_profile(p);
+    EXPECT_NEAR(p.width_px * p.pixel_size_x_um / 1000, w, 1e-9) << id;
+    EXPECT_NEAR(p.height_px * p.pixel_size_y_um / 1000, h, 1e-9) << id;
+  }
+  EXPECT_EQ(test::error_of([] { printer_preset("sl2"); }),
+            "no printer profile named 'sl2' (the profiles are: method, prusa_sl1, prusa_sl1s_speed, "
+            "anycubic_photon_mono_x, elegoo_saturn_3_ultra)");
 }
 
 TEST_F(MaskFiles, Sl1ConfigCarriesTheResinVolumeSummedWhileTheLayersAreMade) {

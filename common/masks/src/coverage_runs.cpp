@@ -42,10 +42,10 @@ int64_t fixed_within(double x, int n) {
 
 // A point that is not finite gets row -1, so its edges are either skipped or (an edge to a
 // finite point) dropped by add_edge.
-Point pixel_point(const PixelMap& m, double x, double y, int W, int H) {
+Point pixel_point(const PixelMap& m, const double* xyz, int W, int H) {
   Point p;
-  p.u = m.u(x);
-  p.v = m.v(y);
+  p.u = m.u(xyz);
+  p.v = m.v(xyz);
   const int64_t u = fixed_within(p.u, W), v = fixed_within(p.v, H);
   p.row = std::isfinite(p.u) ? int32_t(v >> kFractionBits) : -1;
   p.col = int32_t(u >> kFractionBits);
@@ -220,7 +220,7 @@ size_t add_edges(const Slices& s, size_t k, const PixelMap& map, int W, int H, i
     const size_t base = w.points.size();
     w.points.resize(base + n + 1);
     Point* const pts = w.points.data() + base;
-    for (uint64_t i = 0; i < n; ++i) pts[i] = pixel_point(map, xyz[3 * i], xyz[3 * i + 1], W, H);
+    for (uint64_t i = 0; i < n; ++i) pts[i] = pixel_point(map, xyz + 3 * i, W, H);
     pts[n] = pts[0];
     EdgeRange range{UINT32_MAX, 0, 0};
     for (uint64_t i = 0; i < n; ++i) {
@@ -271,17 +271,18 @@ void sweep_row(const Strip& st, int32_t r, const CoverageLevels& levels, Emit&& 
 }
 
 // The pixels a sink gets, row by row, top to bottom: row(), then pixels(level, n) covering it.
-// The sink's rows are the image's, mirrors applied: the rows of the unmirrored image in reverse
-// for mirror_y, each row's spans in reverse for mirror_x.
+// The sink's rows are the image's, flips applied (mask_image_layout): the rows of the unflipped
+// image in reverse when rows ascend, each row's spans in reverse when columns descend.
 template <class Sink>
 size_t rasterize_coverage(const Slices& s, size_t k, const PrinterProfile& p, Sink& sink) {
   thread_local Scratch scratch;
   Scratch& w = scratch;
-  const int W = p.width_px, H = p.height_px;
+  const MaskImageLayout image = mask_image_layout(p);
+  const int W = image.width, H = image.height;
   const int shift = strip_shift(W), rows = 1 << shift;
   const size_t strips = size_t((H + rows - 1) >> shift);
   w.levels.set_gamma(p.gamma);
-  const size_t open = add_edges(s, k, pixel_map(p, false), W, H, shift, w);
+  const size_t open = add_edges(s, k, pixel_map(image, false), W, H, shift, w);
 
   // Ranges by strip: counted, then placed (a counting sort); afterwards strip_begin[i] is where
   // strip i + 1 begins.
@@ -297,15 +298,15 @@ size_t rasterize_coverage(const Slices& s, size_t k, const PrinterProfile& p, Si
   w.touched.assign(size_t(rows) * words, 0);
   const Point* const pts = w.points.data();
   for (size_t n = 0; n < strips; ++n) {
-    const size_t i = p.mirror_y ? strips - 1 - n : n;
+    const size_t i = image.rows_ascend ? strips - 1 - n : n;
     const int32_t r0 = int32_t(i) * rows;
     const Strip st{r0, std::min(r0 + rows, H), W, words, w.sums.data(), w.touched.data()};
     for (uint32_t e = i == 0 ? 0 : begin[i - 1]; e < begin[i]; ++e)
       for (uint32_t j = w.by_strip[e].first; j < w.by_strip[e].end; ++j) add_edge(pts[j], pts[j + 1], st);
     for (int32_t m = 0; m < st.r1 - st.r0; ++m) {
-      const int32_t r = p.mirror_y ? st.r1 - 1 - m : st.r0 + m;
+      const int32_t r = image.rows_ascend ? st.r1 - 1 - m : st.r0 + m;
       sink.row();
-      if (!p.mirror_x) {
+      if (!image.columns_descend) {
         sweep_row(st, r, w.levels, [&](int level, size_t count) { sink.pixels(uint8_t(level), count); });
         continue;
       }
@@ -357,14 +358,16 @@ class RunsSink {
 }  // namespace
 
 size_t coverage_runs(const Slices& s, size_t k, const PrinterProfile& p, MaskRuns& out) {
-  RunsSink sink(p.width_px, p.height_px, out);
+  const MaskImageLayout image = mask_image_layout(p);
+  RunsSink sink(image.width, image.height, out);
   const size_t open = rasterize_coverage(s, k, p, sink);
   sink.finish();
   return open;
 }
 
 size_t coverage_png(const Slices& s, size_t k, const PrinterProfile& p, std::vector<uint8_t>& png) {
-  PngRows sink(p.width_px, p.height_px, png);
+  const MaskImageLayout image = mask_image_layout(p);
+  PngRows sink(image.width, image.height, png);
   const size_t open = rasterize_coverage(s, k, p, sink);
   sink.finish();
   return open;

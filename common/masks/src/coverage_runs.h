@@ -22,8 +22,9 @@
 // are of integers, so the result does not depend on the order in which edges are added (contour
 // order, loop start point) and an edge and its reverse cancel exactly; each edge is cut at row
 // and column boundaries from its lower endpoint, alone. A pixel no edge enters has exactly full
-// or no coverage. Mirrors flip the finished rows (rather than the coordinates, whose rounding
-// would not be symmetric), so mirror_x and mirror_y flip the image exactly.
+// or no coverage. The image's flips (mirrors, orientation) are applied to the finished rows
+// (rather than to the coordinates, whose rounding would not be symmetric), so they flip the
+// image exactly.
 //
 // Speed: the pieces are added straight into the sums of a strip of rows small enough to stay
 // in cache (the edges are sorted by strip first, not the pieces), and the rows are swept from a

@@ -37,11 +37,14 @@ namespace {
 const char* const FOLDER_PREFIX = "layer";
 const char* const PHASE = "writing mask images";
 
+// A Prusa archive: .sl1 (SL1) and .sl1s (SL1S) are the same format; PrusaSlicer names the file
+// after the printer.
 bool is_sl1(const std::string& path) {
-  if (path.size() < 4) return false;
-  std::string ext = path.substr(path.size() - 4);
+  const size_t dot = path.find_last_of("./");
+  if (dot == std::string::npos || path[dot] != '.') return false;
+  std::string ext = path.substr(dot);
   for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".sl1";
+  return ext == ".sl1" || ext == ".sl1s";
 }
 
 // What export needs of a layer besides its image, found in the same visit to its points (hot in
@@ -186,9 +189,10 @@ void encode_layer(const Slices& s, size_t local, size_t k, const PrinterProfile&
     return;
   }
   thread_local Buffer<uint8_t> image;
-  image.resize(size_t(p.width_px) * size_t(p.height_px));
+  const MaskImageLayout layout = mask_image_layout(p);
+  image.resize(size_t(layout.width) * size_t(layout.height));
   rasterize_layer(s, local, p, image.data());
-  encode_mask_png(image.data(), p.width_px, p.height_px, bits, png);
+  encode_mask_png(image.data(), layout.width, layout.height, bits, png);
 }
 
 void write_file(const std::string& path, const std::vector<uint8_t>& data) {

@@ -1,8 +1,10 @@
 #pragma once
-// PixelMap: model x, y (mm) -> continuous pixel coordinates u (columns, to the right) and v
-// (rows, downwards) as printer_profile.h places the part; pixel (c, r) is [c, c+1] x [r, r+1].
-// pixel_map(p, true) applies the profile's mirrors; pixel_map(p, false) ignores them, for a
-// rasterizer that flips its output instead (coverage_runs.h).
+// PixelMap: a contour point (x, y in mm) -> continuous pixel coordinates u (columns, to the
+// right) and v (rows, downwards) of the image mask_image_layout (printer_profile.h) gives;
+// pixel (c, r) is [c, c+1] x [r, r+1]. pixel_map(p, true) applies the image's flips (orientation
+// and mirrors); pixel_map(p, false) leaves them out (columns along the column coordinate, row 0
+// at the largest row coordinate), for a rasterizer that flips its output instead
+// (coverage_runs.h).
 // for_each_closed_contour(s, k, f): what both rasterizers draw, f(xyz, n) for each closed
 // contour of layer k with points (its n points, 3 doubles each); returns the number of open
 // contours, which are not drawn.
@@ -15,19 +17,22 @@
 namespace slicereuse {
 
 struct PixelMap {
-  double cu, cv, su, sv, ox, oy;
-  double u(double x) const { return cu + su * (x + ox); }
-  double v(double y) const { return cv + sv * (y + oy); }
+  double cu, cv, su, sv, ou, ov;
+  int iu, iv;  // the point's coordinate along the columns and the rows
+  double u(const double* xyz) const { return cu + su * (xyz[iu] + ou); }
+  double v(const double* xyz) const { return cv + sv * (xyz[iv] + ov); }
 };
 
-inline PixelMap pixel_map(const PrinterProfile& p, bool mirrored) {
-  const double sx = 1000.0 / p.pixel_size_x_um, sy = 1000.0 / p.pixel_size_y_um;
-  return {0.5 * p.width_px,
-          0.5 * p.height_px,
-          mirrored && p.mirror_x ? -sx : sx,
-          mirrored && p.mirror_y ? sy : -sy,
-          p.offset_x_mm,
-          p.offset_y_mm};
+inline PixelMap pixel_map(const MaskImageLayout& m, bool flipped) {
+  const double su = 1000.0 / m.column_um, sv = 1000.0 / m.row_um;
+  return {0.5 * m.width,
+          0.5 * m.height,
+          flipped && m.columns_descend ? -su : su,
+          flipped && m.rows_ascend ? sv : -sv,
+          m.column_offset_mm,
+          m.row_offset_mm,
+          m.column_axis,
+          m.row_axis};
 }
 
 template <class F>

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "slicereuse/util/error.h"
 
@@ -20,6 +21,40 @@ void validate_printer_profile(const PrinterProfile& p) {
   if (!(p.gamma >= 0) || !std::isfinite(p.gamma))
     throw Error("anti-aliasing gamma " + std::to_string(p.gamma) +
                 " is not a finite number >= 0 (0: binary threshold, 1: linear coverage)");
+  for (const auto& [name, seconds] : {std::pair<const char*, double>{"exposure time", p.exposure_s},
+                                      {"bottom exposure time", p.bottom_exposure_s},
+                                      {"time between exposures", p.layer_move_s}})
+    if (!(seconds >= 0) || !std::isfinite(seconds))
+      throw Error(std::string(name) + " " + std::to_string(seconds) + " s is not a finite number >= 0");
+  if (p.bottom_layers < 0 || p.faded_layers < 0)
+    throw Error("bottom layers (" + std::to_string(p.bottom_layers) + ") and faded layers (" +
+                std::to_string(p.faded_layers) + ") must not be negative");
+}
+
+MaskImageLayout mask_image_layout(const PrinterProfile& p) {
+  MaskImageLayout m;
+  if (!p.portrait) {
+    m.width = p.width_px;
+    m.height = p.height_px;
+    m.column_um = p.pixel_size_x_um;
+    m.row_um = p.pixel_size_y_um;
+    m.column_offset_mm = p.offset_x_mm;
+    m.row_offset_mm = p.offset_y_mm;
+    m.columns_descend = p.mirror_x;
+  } else {
+    // The landscape image turned counter-clockwise: columns along -y, rows along -x.
+    m.width = p.height_px;
+    m.height = p.width_px;
+    m.column_axis = 1;
+    m.row_axis = 0;
+    m.column_um = p.pixel_size_y_um;
+    m.row_um = p.pixel_size_x_um;
+    m.column_offset_mm = p.offset_y_mm;
+    m.row_offset_mm = p.offset_x_mm;
+    m.columns_descend = !p.mirror_x;
+  }
+  m.rows_ascend = p.mirror_y;
+  return m;
 }
 
 }  // namespace slicereuse

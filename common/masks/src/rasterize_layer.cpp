@@ -45,15 +45,16 @@ int first_sample_at_or_after(double x, int n) {
 }
 
 // Builds the oriented edges of the closed contours of layer k in pixel coordinates
-// (pixel_map.h, mirrors applied). Rows first: most edges of a fine contour cross no sample row
+// (pixel_map.h, flips applied). Rows first: most edges of a fine contour cross no sample row
 // centre, and those are skipped by comparing their ends' first rows, computed once per point.
 // Which edges do cross follows no pattern a branch predictor could learn (a test per point
 // mispredicts about every other point), so the comparisons are gathered 64 at a time into a
 // bit mask whose set bits are then visited. Edges come in contour order, the closing edge last.
 size_t build_edges(const Slices& s, size_t k, const PrinterProfile& p, Scratch& w) {
   // A local copy: the compiler cannot tell that the writes to w leave s and p alone.
-  const PixelMap map = pixel_map(p, true);
-  const int rows = p.height_px;
+  const MaskImageLayout image = mask_image_layout(p);
+  const PixelMap map = pixel_map(image, true);
+  const int rows = image.height;
   w.edges.clear();
   return for_each_closed_contour(s, k, [&](const double* xyz, uint64_t n) {
     // Point n repeats point 0, so the closing edge needs no wrap-around.
@@ -62,12 +63,12 @@ size_t build_edges(const Slices& s, size_t k, const PrinterProfile& p, Scratch& 
     double* const v = w.v.data();
     int* const row = w.row.data();
     for (uint64_t i = 0; i < n; ++i) {
-      v[i] = map.v(xyz[3 * i + 1]);
+      v[i] = map.v(xyz + 3 * i);
       row[i] = first_sample_at_or_after(v[i], rows);
     }
     v[n] = v[0];
     row[n] = row[0];
-    auto u = [&](uint64_t i) { return map.u(xyz[3 * (i == n ? 0 : i)]); };
+    auto u = [&](uint64_t i) { return map.u(xyz + 3 * (i == n ? 0 : i)); };
     for (uint64_t base = 0; base < n; base += 64) {
       const uint64_t m = std::min<uint64_t>(64, n - base);
       uint64_t crossing = 0;
@@ -205,15 +206,16 @@ bool is_binary(const PrinterProfile& p) { return !p.antialiasing || p.gamma == 0
 // The binary mask as runs (the layer checked).
 size_t binary_runs(const Slices& s, size_t k, const PrinterProfile& profile, MaskRuns& out) {
   thread_local Scratch w;
-  const int H = profile.height_px;
-  out.width = profile.width_px;
+  const MaskImageLayout image = mask_image_layout(profile);
+  const int H = image.height;
+  out.width = image.width;
   out.height = H;
   out.row_begin.assign(size_t(H) + 1, 0);
   out.columns.clear();
   out.levels.clear();
   const size_t open = build_edges(s, k, profile, w);
   // Rows come in order and runs left to right (see sweep): count per row, then sum up.
-  sweep(w, H, profile.width_px, [&](int r, int a, int b) {
+  sweep(w, H, image.width, [&](int r, int a, int b) {
     ++out.row_begin[size_t(r) + 1];
     out.columns.push_back(uint16_t(a));
     out.columns.push_back(uint16_t(b));
@@ -248,7 +250,8 @@ size_t rasterize_layer_antialiased_png(const Slices& s, size_t k, const PrinterP
 
 size_t rasterize_layer(const Slices& s, size_t k, const PrinterProfile& profile, uint8_t* out) {
   check_layer(s, k, profile);
-  const int W = profile.width_px, H = profile.height_px;
+  const MaskImageLayout image = mask_image_layout(profile);
+  const int W = image.width, H = image.height;
   std::memset(out, 0, size_t(W) * size_t(H));
   if (is_binary(profile)) {
     thread_local Scratch w;

@@ -17,10 +17,6 @@
 namespace slicereuse {
 namespace {
 
-// Placeholder exposure settings: the printer profile has no resin data; SL1 defaults.
-constexpr double kExposureSeconds = 6, kFirstExposureSeconds = 35, kTiltSeconds = 5;
-constexpr size_t kFadedLayers = 10;
-
 std::string num(double v) {
   char buf[32];
   return std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
@@ -34,25 +30,40 @@ std::string utc_timestamp(std::time_t now) {
   return buf;
 }
 
+// The printer's estimate: the first layers at the first exposure, the faded ones stepping down
+// linearly to the normal one, the rest at it, and one tilt (or lift) per layer.
+double print_seconds(const Sl1Job& j) {
+  const PrinterProfile& p = j.profile;
+  double s = double(j.layers) * p.layer_move_s;
+  for (size_t k = 0; k < j.layers; ++k) {
+    const size_t faded = k < size_t(p.bottom_layers) ? 0 : k - size_t(p.bottom_layers);
+    if (k < size_t(p.bottom_layers))
+      s += p.bottom_exposure_s;
+    else if (faded < size_t(p.faded_layers))
+      s += p.bottom_exposure_s + (p.exposure_s - p.bottom_exposure_s) * double(faded + 1) / double(p.faded_layers + 1);
+    else
+      s += p.exposure_s;
+  }
+  return s;
+}
+
 std::string config_ini(const Sl1Job& j, const std::string& job, std::time_t now, double used_material_ml) {
-  const size_t fade = std::min(kFadedLayers, j.layers);
-  const double print_s = double(fade) * kFirstExposureSeconds + double(j.layers - fade) * kExposureSeconds +
-                         double(j.layers) * kTiltSeconds;
+  const PrinterProfile& p = j.profile;
   return "action = print\n"
-         "expTime = " + num(kExposureSeconds) + "\n"
-         "expTimeFirst = " + num(kFirstExposureSeconds) + "\n"
+         "expTime = " + num(p.exposure_s) + "\n"
+         "expTimeFirst = " + num(p.bottom_exposure_s) + "\n"
          "expUserProfile = 0\n"
          "fileCreationTimestamp = " + utc_timestamp(now) + "\n"
          "hollow = 0\n"
          "jobDir = " + job + "\n"
          "layerHeight = " + num(j.layer_height_mm) + "\n"
          "materialName = slicereuse\n"
-         "numFade = " + std::to_string(fade) + "\n"
+         "numFade = " + std::to_string(p.faded_layers) + "\n"
          "numFast = " + std::to_string(j.layers) + "\n"
          "numSlow = 0\n"
          "printProfile = slicereuse\n"
-         "printTime = " + num(std::round(print_s)) + "\n"
-         "printerModel = SL1\n"
+         "printTime = " + num(std::round(print_seconds(j))) + "\n"
+         "printerModel = " + p.printer_model + "\n"
          "printerProfile = slicereuse\n"
          "printerVariant = default\n"
          "prusaSlicerVersion = slicereuse\n"
@@ -68,18 +79,18 @@ std::string prusaslicer_ini(const Sl1Job& j) {
          "display_height = " + h + "\n"
          "display_mirror_x = " + std::to_string(int(p.mirror_x)) + "\n"
          "display_mirror_y = " + std::to_string(int(p.mirror_y)) + "\n"
-         "display_orientation = landscape\n"
+         "display_orientation = " + (p.portrait ? "portrait" : "landscape") + "\n"
          "display_pixels_x = " + std::to_string(p.width_px) + "\n"
          "display_pixels_y = " + std::to_string(p.height_px) + "\n"
          "display_width = " + w + "\n"
-         "exposure_time = " + num(kExposureSeconds) + "\n"
-         "faded_layers = " + std::to_string(std::min(kFadedLayers, j.layers)) + "\n"
+         "exposure_time = " + num(p.exposure_s) + "\n"
+         "faded_layers = " + std::to_string(p.faded_layers) + "\n"
          "gamma_correction = " + num(p.antialiasing ? p.gamma : 0) + "\n"
-         "initial_exposure_time = " + num(kFirstExposureSeconds) + "\n"
+         "initial_exposure_time = " + num(p.bottom_exposure_s) + "\n"
          "initial_layer_height = " + num(j.layer_height_mm) + "\n"
          "layer_height = " + num(j.layer_height_mm) + "\n"
          "max_print_height = " + num(height) + "\n"
-         "printer_model = SL1\n"
+         "printer_model = " + p.printer_model + "\n"
          "printer_settings_id = slicereuse\n"
          "printer_technology = SLA\n"
          "printer_variant = default\n"
@@ -155,7 +166,8 @@ zip_int64_t layer_cb(void* ud, void* data, zip_uint64_t len, zip_source_cmd_t cm
 std::string job_name(const std::string& path) {
   const size_t slash = path.find_last_of('/');
   std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
-  if (name.size() > 4) name.resize(name.size() - 4);  // ".sl1"
+  const size_t dot = name.find_last_of('.');
+  if (dot != std::string::npos && dot > 0) name.resize(dot);  // ".sl1", ".sl1s"
   return name;
 }
 

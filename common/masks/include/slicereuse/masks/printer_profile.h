@@ -1,15 +1,26 @@
 #pragma once
-// PrinterProfile: the display the masks are made for and where the part sits on it, and
-// validate_printer_profile, which throws Error naming the bad field when a profile cannot be
-// rasterized: display size outside 1..kMaxDisplayPixels px per side, a pixel size that is not a
-// positive finite number, a non-finite offset, or a gamma that is not a finite number >= 0.
-// Exporters call it before creating any output.
+// PrinterProfile: the display the masks are made for, where the part sits on it, and what the
+// printer's file says besides the images (exposure, bottom and faded layers). Named presets of
+// real printers are in printer_presets.h.
+// validate_printer_profile throws Error naming the bad field when a profile cannot be
+// rasterized or written: display size outside 1..kMaxDisplayPixels px per side, a pixel size
+// that is not a positive finite number, a non-finite offset, a gamma that is not a finite number
+// >= 0, or exposure settings that are negative or not finite. Exporters call it before creating
+// any output.
 //
-// Placement: the model's XY origin sits at the display centre, shifted by offset_x/y_mm; row 0
-// is the top of the image (largest y). mirror_x / mirror_y flip the image.
+// The display is given as PrusaSlicer's printer settings give it: width_px x height_px pixels
+// (display_pixels_x/y) of pixel_size_x_um x pixel_size_y_um along the build plate's x and y.
+// Placement: the model's XY origin sits at the display centre, shifted by offset_x/y_mm.
+// The image as written (mask_image_layout) follows PrusaSlicer's display_orientation and
+// display_mirror_x/y, as PrusaSlicer 2.5 writes them (checked against its --export-sla):
+//   landscape: width_px x height_px, columns along +x, row 0 at the largest y;
+//   portrait:  height_px x width_px, the landscape image turned 90 degrees counter-clockwise
+//              (columns along -y, row 0 at the largest x);
+//   then mirror_x flips the image's columns, mirror_y its rows.
 //
-// Its defaults are the display defaults (1024 x 768 pixels of 75 um), written only here: hosts
-// take their parameters' defaults from it (PrinterProfile{}.width_px, ...).
+// Its defaults are the method's display (1024 x 768 pixels of 75 um, landscape, no mirrors),
+// written only here: hosts take their parameters' defaults from it (PrinterProfile{}.width_px).
+#include <string>
 
 namespace slicereuse {
 
@@ -18,6 +29,7 @@ struct PrinterProfile {
   int height_px = 768;
   double pixel_size_x_um = 75;
   double pixel_size_y_um = 75;
+  bool portrait = false;
   double offset_x_mm = 0;
   double offset_y_mm = 0;
   bool mirror_x = false;
@@ -29,7 +41,30 @@ struct PrinterProfile {
   // values bend the curve as PrusaSlicer's AGG rasterizer does (agg::gamma_power). Not used when
   // antialiasing is off.
   double gamma = 1;
+
+  // What the print file carries for the printer besides the images.
+  std::string printer_model;       // .sl1 printerModel (SL1, SL1S); empty for other printers
+  double exposure_s = 6;           // each layer's exposure
+  double bottom_exposure_s = 35;   // the first layers' exposure
+  int bottom_layers = 1;           // layers exposed bottom_exposure_s long
+  int faded_layers = 10;           // layers after those whose exposure steps down (SL1 numFade)
+  double layer_move_s = 5;         // time between two exposures (tilt, or lift and retract)
 };
+
+// The image a profile's masks have: its size in pixels, and how build-plate coordinates map to
+// it (printer_profile.h's placement, orientation and mirrors).
+struct MaskImageLayout {
+  int width = 0, height = 0;
+  // Which model coordinate (0 = x, 1 = y) runs along the image's columns and rows.
+  int column_axis = 0, row_axis = 1;
+  // Whether columns run against that coordinate (column 0 at its largest value), and rows along
+  // it (row 0 at its smallest value): the image's flips from orientation and mirrors together.
+  bool columns_descend = false, rows_ascend = false;
+  double column_um = 0, row_um = 0;        // a pixel's size along the columns and rows
+  double column_offset_mm = 0, row_offset_mm = 0;  // the profile's offset along those coordinates
+};
+
+MaskImageLayout mask_image_layout(const PrinterProfile& profile);
 
 // Largest display side, in pixels, accepted by the core and by the mask filters' parameters.
 constexpr int kMaxDisplayPixels = 65535;

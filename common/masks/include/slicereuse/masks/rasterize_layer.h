@@ -1,6 +1,7 @@
 #pragma once
 // rasterize_layer: one layer's mask image from layered contours, for mask-projection printers.
-// Placement as printer_profile.h says. Open contours are ignored and counted.
+// Placement, orientation and mirrors as printer_profile.h says; the image is
+// mask_image_layout(profile).width x height. Open contours are ignored and counted.
 //
 // Binary masks: pixel (col, row) is on (255) when its centre lies inside the layer's region by
 // the nonzero winding rule of the oriented closed contours, off (0) otherwise.
