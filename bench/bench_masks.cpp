@@ -3,7 +3,7 @@
 //   rasterize  - every layer into memory, all cores, no encoding
 //   folder     - export_masks to <out>/masks (one PNG per layer)
 //   sl1        - export_masks to <out>/masks.sl1
-//   compare    - compare_mask_stacks(folder, sl1), which must report S = 1
+//   compare    - compare_mask_stacks(folder, sl1), which must report S = 1 and grey difference 0
 //   layer      - (only when asked for) every layer on one thread, as an .sl1 encodes it:
 //                rasterize_layer_runs, then encode_mask_png of the runs (anti-aliased: also
 //                rasterize_layer_antialiased_png); microseconds per layer of each in thread CPU
@@ -16,8 +16,8 @@
 // (--gamma G, default 1), --aa 0,1 for both in the same run, taking turns within each run, and
 // their sl1 time ratio; their archives are <out>/masks.sl1 and <out>/masks_aa.sl1.
 // --reference R (an .sl1 or folder made by another build, e.g. before a change) compares the
-// binary sl1 step's archive against R with compare_mask_stacks, which must report S = 1 and 0
-// differing pixels; --aa-reference R the anti-aliased one.
+// binary sl1 step's archive against R with compare_mask_stacks, which must report S = 1, 0
+// differing pixels and grey difference 0; --aa-reference R the anti-aliased one.
 // Usage: bench_masks [--shape arch] [--faces 545000] [--height 14.484] [--thickness 0.001]
 //                    [--runs 3] [--out /tmp/slicereuse-bench] [--aa 0|1|0,1] [--gamma 1]
 //                    [--reference R] [--aa-reference R]
@@ -271,9 +271,9 @@ int main(int argc, char** argv) {
   for (const Mode& m : modes) {
     std::printf("%s masks:\n", m.name());
     if (compare) {
-      std::printf("compare: min S %.9g, %llu differing pixels\n", m.cmp.min_similarity,
-                  static_cast<unsigned long long>(m.cmp.differing_pixels));
-      ok = ok && m.cmp.min_similarity == 1;
+      std::printf("compare: min S %.9g, %llu differing pixels, max grey difference %d\n", m.cmp.min_similarity,
+                  static_cast<unsigned long long>(m.cmp.differing_pixels), m.cmp.max_grey_difference);
+      ok = ok && m.cmp.min_similarity == 1 && m.cmp.max_grey_difference == 0;
     }
     std::printf("%-10s %9s %12s %12s   wall seconds per run\n", "step", "seconds", "layers/s", "cpu-seconds");
     struct Row {
@@ -300,9 +300,10 @@ int main(int argc, char** argv) {
     if (!m.t_sl1.empty()) std::printf("sl1 %.1f MB\n", double(std::filesystem::file_size(m.sl1)) / 1e6);
     if (!m.reference.empty() && !m.t_sl1.empty()) {
       const StackComparison ref = compare_mask_stacks(m.reference, m.sl1, "");
-      ok = ok && ref.min_similarity == 1 && ref.differing_pixels == 0;
-      std::printf("against %s: min S %.9g, %llu differing pixels\n", m.reference.c_str(), ref.min_similarity,
-                  static_cast<unsigned long long>(ref.differing_pixels));
+      // S is taken on the binary threshold: only a grey difference of 0 means every level kept.
+      ok = ok && ref.min_similarity == 1 && ref.differing_pixels == 0 && ref.max_grey_difference == 0;
+      std::printf("against %s: min S %.9g, %llu differing pixels, max grey difference %d\n", m.reference.c_str(),
+                  ref.min_similarity, static_cast<unsigned long long>(ref.differing_pixels), ref.max_grey_difference);
     }
   }
   if (modes.size() == 2 && !modes[0].t_sl1.empty())

@@ -9,10 +9,11 @@ the slicing (exact: the result equals slicing it) and writes DIR/<member file st
 --format given), all in
 memory, with no contour file unless --keep-contours. --direct: the same outputs by slicing every
 member directly (the baseline). --verify: also slices each member directly and compares the
-masks (min_similarity 1 means identical). Prints one JSON object:
+masks (min_similarity 1 and max_grey_difference 0 mean identical). Prints one JSON object:
 {"source": MESH0, "seconds": total, "targets": [{"mesh", "layers", "points", "resliced_layers",
-"seconds", "output"[, "min_similarity"]}, ...]}; a member's seconds cover loading it,
-transferring or slicing it and writing its .sl1. A progress bar goes to a terminal's stderr.
+"seconds", "output"[, "min_similarity", "max_grey_difference"]}, ...]}; a member's seconds cover
+loading it, transferring or slicing it and writing its .sl1. A progress bar goes to a terminal's
+stderr.
 """
 import argparse
 import json
@@ -36,7 +37,8 @@ def main():
     ap.add_argument("--out", required=True, help="output folder (created if missing)")
     ap.add_argument("--direct", action="store_true", help="slice every member directly (the baseline)")
     ap.add_argument("--verify", action="store_true",
-                    help="also slice each member directly and compare the masks (min_similarity)")
+                    help="also slice each member directly and compare the masks "
+                         "(min_similarity, max_grey_difference)")
     ap.add_argument("--keep-contours", action="store_true", help="also write each member's contour file")
     ap.add_argument("--printer", help="printer profile: method (the default), prusa_sl1, prusa_sl1s_speed, "
                     "anycubic_photon_mono_x, elegoo_saturn_3_ultra, or custom (with --width, --height, --pixel-um)")

@@ -63,14 +63,16 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     from its own lowest vertex: the members of a family sit on one build plate (the same lowest
     z, as the source's), which is where transfer puts their layers too.
     verify=True: also slices each target directly into out/<stem>.direct<extension> and compares the
-    two stacks (min_similarity 1: identical masks); not counted in the target's seconds.
+    two stacks (min_similarity, S on the binary threshold, and max_grey_difference, the largest
+    difference of a pixel's grey levels: 1 and 0 for identical masks); not counted in the
+    target's seconds.
     keep_contours=True: also writes out/<stem>.srb (.ctr when binary is False).
     Returns {"source", "seconds", "targets": [{"mesh", "layers", "points", "resliced_layers",
-    "seconds", "output"[, "min_similarity"]}, ...]}; a target's seconds cover loading it,
-    transferring or slicing it and writing its print file. details=True adds the filter's own
-    "slicing_seconds" (transfer or slicing) and "masks_seconds" per target, and "cpu_seconds",
-    the process's CPU time (all threads) for the same span as "seconds" (for benchmarks on a
-    shared machine, where CPU time is less disturbed than wall time).
+    "seconds", "output"[, "min_similarity", "max_grey_difference"]}, ...]}; a target's seconds
+    cover loading it, transferring or slicing it and writing its print file. details=True adds the
+    filter's own "slicing_seconds" (transfer or slicing) and "masks_seconds" per target, and
+    "cpu_seconds", the process's CPU time (all threads) for the same span as "seconds" (for
+    benchmarks on a shared machine, where CPU time is less disturbed than wall time).
     progress(step, steps, text) is called before each step."""
     for path in [source, *targets]:
         if not Path(path).is_file():
@@ -133,7 +135,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
                             contour_file="", output_path=str(check), **profile)
             c = ms.apply_filter("compare_mask_stacks", stack_a=str(output), stack_b=str(check),
                                 report_file="")
-            entry["min_similarity"] = c["min_similarity"]
+            entry.update(min_similarity=c["min_similarity"], max_grey_difference=c["max_grey_difference"])
         results.append(entry)
         del ms
     if not direct:  # the plugin's cached encoding is not needed after the last member

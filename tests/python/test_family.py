@@ -33,14 +33,14 @@ def test_reuse_and_direct_write_identical_print_jobs(make_family, tmp_path, shap
     assert reused["source"] == direct["source"] == str(members[0])
     for r, d, member in zip(reused["targets"], direct["targets"], members[1:]):
         assert r["mesh"] == d["mesh"] == str(member)
-        assert set(r) == TARGET_KEYS | {"min_similarity"} and set(d) == TARGET_KEYS
+        assert set(r) == TARGET_KEYS | {"min_similarity", "max_grey_difference"} and set(d) == TARGET_KEYS
         assert r["output"] == str(tmp_path / "reuse" / f"{member.stem}.sl1")
         assert r["points"] == d["points"] > 0, (r, d)
         assert r["layers"] == d["layers"], (r, d)
         # x-y and band members keep the base's height: 8 mm at 0.1 mm.
         assert r["layers"] == (80 if z_change != "everywhere" else pytest.approx(80, abs=3)), r
         assert d["resliced_layers"] == d["layers"], d
-        assert r["min_similarity"] == 1.0, r
+        assert r["min_similarity"] == 1.0 and r["max_grey_difference"] == 0, r
         images = layer_pngs(r["output"])
         assert len(images) == r["layers"]
         assert images == layer_pngs(d["output"])
@@ -72,7 +72,7 @@ def test_keep_contours_writes_each_members_contour_file(pymeshlab, make_family, 
             n.replace(member.stem, f"{member.stem}.again") for n in layer_pngs(t["output"])}
         c = ms.apply_filter("compare_mask_stacks", stack_a=t["output"],
                             stack_b=str(tmp_path / f"{member.stem}.again.sl1"), report_file="")
-        assert c["min_similarity"] == 1.0 and c["layers"] == t["layers"]
+        assert c["min_similarity"] == 1.0 and c["max_grey_difference"] == 0 and c["layers"] == t["layers"]
 
 
 def test_cli_prints_one_json_object(make_family, tmp_path):
@@ -85,11 +85,11 @@ def test_cli_prints_one_json_object(make_family, tmp_path):
     assert set(result) == {"source", "seconds", "targets"}
     assert len(result["targets"]) == 2
     for t in result["targets"]:
-        assert set(t) == TARGET_KEYS | {"min_similarity"}
+        assert set(t) == TARGET_KEYS | {"min_similarity", "max_grey_difference"}
         assert isinstance(t["layers"], int) and isinstance(t["points"], int)
         assert t["resliced_layers"] == 0
         assert 0 < t["seconds"] < result["seconds"]
-        assert t["min_similarity"] == 1.0
+        assert t["min_similarity"] == 1.0 and t["max_grey_difference"] == 0
     # 8 mm at 0.1 mm: layers whose bottom is below the top, z in [0, 8].
     assert result["targets"][0]["layers"] == 80
     assert out.stderr == ""  # no progress bar when stderr is not a terminal

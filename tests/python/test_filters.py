@@ -165,19 +165,32 @@ def test_masks_and_compare_results(sliced):
                     output_path=str(tmp / "again.sl1"), **profile)
     c = ms.apply_filter("compare_mask_stacks", stack_a=str(tmp / "masks"), stack_b=str(tmp / "again.sl1"),
                         report_file=str(tmp / "compare.csv"))
-    assert set(c) == {"layers", "min_similarity", "worst_layer", "differing_pixels", "seconds"}
+    assert set(c) == {"layers", "min_similarity", "worst_layer", "differing_pixels", "max_grey_difference",
+                      "max_grey_difference_layer", "over_one_level_pixels", "over_one_level_share",
+                      "over_one_level_layer", "seconds"}
     assert c["layers"] == r["layers"] and c["min_similarity"] == 1.0 and c["differing_pixels"] == 0
+    assert (c["max_grey_difference"], c["over_one_level_pixels"], c["over_one_level_share"]) == (0, 0, 0.0)
     rows = (tmp / "compare.csv").read_text().splitlines()
-    assert rows[0] == "layer,similarity,differing_pixels" and len(rows) == 1 + r["layers"]
+    assert rows[0] == "layer,similarity,differing_pixels,max_grey_difference,over_one_level_pixels"
+    assert rows[1:] == [f"{k},1,0,0,0" for k in range(r["layers"])]
     # Member 1's masks differ: the comparison sees it.
     ms.set_current_mesh(target)
     ms.apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS,
                     contour_file=str(tmp / "m1.ctr"), encoding_file="")
     ms.apply_filter("export_mask_images", contour_file=str(tmp / "m1.ctr"),
                     output_path=str(tmp / "masks_m1"), **profile)
-    c = ms.apply_filter("compare_mask_stacks", stack_a=str(tmp / "masks"), stack_b=str(tmp / "masks_m1"))
+    c = ms.apply_filter("compare_mask_stacks", stack_a=str(tmp / "masks"), stack_b=str(tmp / "masks_m1"),
+                        report_file=str(tmp / "m1.csv"))
     assert c["min_similarity"] < 1.0 and c["differing_pixels"] > 0
     assert 0 <= c["worst_layer"] < r["layers"]
+    # Binary masks: every differing pixel is 0 against 255, so the grey figures follow S's.
+    assert c["max_grey_difference"] == 255 and c["over_one_level_pixels"] == c["differing_pixels"]
+    assert c["over_one_level_layer"] == c["worst_layer"]
+    assert c["over_one_level_share"] == c["differing_pixels"] / (r["layers"] * 256 * 192)
+    rows = [[float(x) for x in row.split(",")] for row in (tmp / "m1.csv").read_text().splitlines()[1:]]
+    assert sum(row[2] for row in rows) == c["differing_pixels"]
+    assert all(row[3] == (255 if row[2] else 0) and row[4] == row[2] for row in rows)
+    assert c["max_grey_difference_layer"] == next(k for k, row in enumerate(rows) if row[2])
 
 
 def test_preview_layer_is_an_edge_mesh_and_not_current(sliced):

@@ -268,8 +268,15 @@ TEST_F(FiltersThroughAFakeHost, EveryFilterRunsAndReturnsEveryFigureItLogs) {
   const Result compare = compare_spec.run(
       defaults(compare_spec, {{"stack_a", path("t_masks")}, {"stack_b", path("t.sl1")}, {"report_file", path("c.csv")}}),
       host);
+  EXPECT_EQ(keys_of(compare),
+            (std::set<std::string>{"layers", "min_similarity", "worst_layer", "differing_pixels", "max_grey_difference",
+                                   "max_grey_difference_layer", "over_one_level_pixels", "over_one_level_share",
+                                   "over_one_level_layer", "seconds"}));
   EXPECT_EQ(std::get<double>(compare.at("min_similarity")), 1.0);
   EXPECT_EQ(count(compare, "differing_pixels"), 0);
+  EXPECT_EQ(count(compare, "max_grey_difference"), 0);
+  EXPECT_EQ(count(compare, "over_one_level_pixels"), 0);
+  EXPECT_EQ(std::get<double>(compare.at("over_one_level_share")), 0.0);
   EXPECT_EQ(count(compare, "layers"), int64_t(direct.layers()));
 
   const FilterSpec& crossparam_spec = spec_named("cross_parameterize_meshes");

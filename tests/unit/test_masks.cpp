@@ -240,7 +240,8 @@ TEST_F(MaskFiles, FolderExportComparesEqualToItself) {
   EXPECT_EQ(c.min_similarity, 1.0);
   EXPECT_EQ(c.differing_pixels, 0u);
   EXPECT_EQ(read_text(dir + "/report.csv"),
-            "layer,similarity,differing_pixels\n0,1,0\n1,1,0\n2,1,0\n");
+            "layer,similarity,differing_pixels,max_grey_difference,over_one_level_pixels\n"
+            "0,1,0,0,0\n1,1,0,0,0\n2,1,0,0,0\n");
 }
 
 TEST_F(MaskFiles, OnePixelDifferenceGivesExactSimilarity) {
@@ -261,7 +262,8 @@ TEST_F(MaskFiles, OnePixelDifferenceGivesExactSimilarity) {
   EXPECT_EQ(c.layers[2].differing_pixels, 1u);
   EXPECT_EQ(c.layers[0].similarity, 1.0);
   EXPECT_EQ(read_text(dir + "/r.csv"),
-            "layer,similarity,differing_pixels\n0,1,0\n1,1,0\n2,0.999975,1\n");
+            "layer,similarity,differing_pixels,max_grey_difference,over_one_level_pixels\n"
+            "0,1,0,0,0\n1,1,0,0,0\n2,0.999975,1,255,1\n");
 }
 
 TEST_F(MaskFiles, Sl1RoundTripMatchesFolder) {
@@ -277,6 +279,7 @@ TEST_F(MaskFiles, Sl1RoundTripMatchesFolder) {
     ASSERT_EQ(c.layers.size(), 3u);
     EXPECT_EQ(c.min_similarity, 1.0);
     EXPECT_EQ(c.differing_pixels, 0u);
+    EXPECT_EQ(c.max_grey_difference, 0);  // S alone would not see grey levels differ
     // PrusaSlicer's SL1 import reads only 8-bit greyscale layers.
     MaskStack archive(sl1);
     std::vector<uint8_t> bytes;

@@ -21,17 +21,50 @@ std::string size_text(const MaskImage& m) {
   return std::to_string(m.width) + "x" + std::to_string(m.height);
 }
 
+// Every figure of one layer in one pass over both images. Branch-free on bytes, so the compiler
+// vectorizes it: the on/off states differ exactly when the levels differ in their top bit
+// (>= 128), and |a - b| is max - min. The counts are summed in 16 bits over blocks of at most
+// 65535 pixels, so the vector loop adds 16-bit lanes instead of widening every byte to 64 bits:
+// measured on 1024x768 masks, 5x faster than with 64-bit sums, and no slower than the single
+// count of unequal pixels this loop replaced.
+void compare_pixels(const uint8_t* a, const uint8_t* b, size_t n, LayerSimilarity& l) {
+  constexpr size_t kBlock = 65535;
+  uint64_t differ = 0, over_one = 0;
+  uint8_t max_difference = 0;
+  for (size_t begin = 0; begin < n; begin += kBlock) {
+    const size_t end = std::min(n, begin + kBlock);
+    uint16_t block_differ = 0, block_over_one = 0;
+    for (size_t p = begin; p < end; ++p) {
+      const uint8_t x = a[p], y = b[p];
+      const uint8_t d = uint8_t(std::max(x, y) - std::min(x, y));
+      block_differ = uint16_t(block_differ + ((x ^ y) >> 7));
+      block_over_one = uint16_t(block_over_one + (d > 1));
+      max_difference = std::max(max_difference, d);
+    }
+    differ += block_differ;
+    over_one += block_over_one;
+  }
+  l.differing_pixels = differ;
+  l.over_one_level_pixels = over_one;
+  l.max_grey_difference = max_difference;
+}
+
 void write_csv(const std::string& path, const StackComparison& c) {
-  std::string text = "layer,similarity,differing_pixels\n";
-  char buf[64];
+  // to_chars prints a double in shortest round-trip form in at most 24 characters, a uint64 in
+  // 20: a row is at most 4 integers and a double, each followed by ',' or the newline.
+  constexpr size_t kDoubleChars = 24, kUintChars = 20;
+  std::string text = "layer,similarity,differing_pixels,max_grey_difference,over_one_level_pixels\n";
+  char row[4 * (kUintChars + 1) + kDoubleChars + 1];
   for (const LayerSimilarity& l : c.layers) {
-    char* p = std::to_chars(buf, buf + sizeof buf, l.layer).ptr;
+    char* p = std::to_chars(row, row + kUintChars, uint64_t(l.layer)).ptr;
     *p++ = ',';
-    p = std::to_chars(p, buf + sizeof buf, l.similarity).ptr;
-    *p++ = ',';
-    p = std::to_chars(p, buf + sizeof buf, l.differing_pixels).ptr;
+    p = std::to_chars(p, p + kDoubleChars, l.similarity).ptr;
+    for (const uint64_t v : {l.differing_pixels, uint64_t(l.max_grey_difference), l.over_one_level_pixels}) {
+      *p++ = ',';
+      p = std::to_chars(p, p + kUintChars, v).ptr;
+    }
     *p++ = '\n';
-    text.append(buf, p);
+    text.append(row, p);
   }
   AtomicFile file(path);
   file.write(text.data(), text.size());
@@ -50,6 +83,7 @@ StackComparison compare_mask_stacks(const std::string& stack_a, const std::strin
                 " layers, '" + stack_b + "' has " + std::to_string(b.layers()));
   StackComparison result;
   result.layers.resize(L);
+  std::vector<uint64_t> pixels(L);  // per layer, for the share over the stack
   // Archives are read on this thread (one zip handle each); decoding runs on all cores.
   const size_t batch = size_t(16) * size_t(omp_get_max_threads());
   std::vector<std::vector<uint8_t>> bytes_a(batch), bytes_b(batch);
@@ -66,31 +100,41 @@ StackComparison compare_mask_stacks(const std::string& stack_a, const std::strin
           thread_local MaskImage ia, ib;
           const size_t k = first + i;
           decode_mask_png(bytes_a[i].data(), bytes_a[i].size(), a.layer_name(k), ia);
-          uint64_t differ = 0;
+          LayerSimilarity& l = result.layers[k];
+          l.layer = k;
           // Equal files hold equal images (e.g. reused and direct .sl1 layers, which the
-          // encoder writes byte for byte alike): one decode checks them, the second is skipped.
+          // encoder writes byte for byte alike): one decode checks them, the second is skipped
+          // and every difference stays 0.
           if (bytes_a[i] != bytes_b[i]) {
             decode_mask_png(bytes_b[i].data(), bytes_b[i].size(), b.layer_name(k), ib);
             if (ia.width != ib.width || ia.height != ib.height)
               throw Error("mask images of layer " + std::to_string(k) + " differ in size: '" +
                           a.layer_name(k) + "' is " + size_text(ia) + ", '" + b.layer_name(k) +
                           "' is " + size_text(ib));
-            for (size_t p = 0, np = ia.pixels.size(); p < np; ++p) differ += ia.pixels[p] != ib.pixels[p];
+            compare_pixels(ia.pixels.data(), ib.pixels.data(), ia.pixels.size(), l);
           }
-          LayerSimilarity& l = result.layers[k];
-          l.layer = k;
-          l.differing_pixels = differ;
-          l.similarity = 1.0 - double(differ) / double(ia.pixels.size());
+          pixels[k] = ia.pixels.size();
+          l.similarity = 1.0 - double(l.differing_pixels) / double(pixels[k]);
         },
         {}, PHASE);
   }
+  uint64_t all_pixels = 0;
   for (const LayerSimilarity& l : result.layers) {
+    all_pixels += pixels[l.layer];
     result.differing_pixels += l.differing_pixels;
+    result.over_one_level_pixels += l.over_one_level_pixels;
     if (l.similarity < result.min_similarity) {
       result.min_similarity = l.similarity;
       result.worst_layer = l.layer;
     }
+    if (l.max_grey_difference > result.max_grey_difference) {
+      result.max_grey_difference = l.max_grey_difference;
+      result.max_grey_difference_layer = l.layer;
+    }
+    if (l.over_one_level_pixels > result.layers[result.over_one_level_layer].over_one_level_pixels)
+      result.over_one_level_layer = l.layer;
   }
+  result.over_one_level_share = double(result.over_one_level_pixels) / double(all_pixels);
   report_progress(progress, 1, PHASE);
   if (!report_csv.empty()) write_csv(report_csv, result);
   return result;
