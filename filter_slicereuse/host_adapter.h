@@ -44,6 +44,7 @@
 #include "filter_api.h"
 #include "mesh_convert.h"
 #include "slicereuse/util/error.h"
+#include "slicereuse/util/json_string.h"
 
 namespace slicereuse::plugin {
 
@@ -230,23 +231,6 @@ std::optional<std::string> failure_of(const std::string& context, Body&& body) n
   } catch (...) {
     return context + ": unexpected error";
   }
-}
-
-inline std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", unsigned(c));
-      out += buf;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
 }
 
 inline std::string result_line(const std::string& python_name, const Result& result) {

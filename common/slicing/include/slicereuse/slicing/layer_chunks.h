@@ -21,4 +21,9 @@ namespace slicereuse {
 std::vector<size_t> layer_chunks(const Mesh& mesh, const std::vector<double>& planes, uint64_t budget_bytes,
                                  size_t bytes_per_point);
 
+// The same for several meshes sliced on the same planes, a layer's points being all of theirs
+// (a build plate of members, plate_job.h).
+std::vector<size_t> layer_chunks(const std::vector<const Mesh*>& meshes, const std::vector<double>& planes,
+                                 uint64_t budget_bytes, size_t bytes_per_point);
+
 }  // namespace slicereuse

@@ -1,0 +1,157 @@
+#include "slicereuse/plates/plate_job.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+
+#include "slicereuse/slicing/layer_chunks.h"
+#include "slicereuse/slicing/layer_planes.h"
+#include "slicereuse/transfer/transfer_contours.h"
+#include "slicereuse/util/error.h"
+#include "slicereuse/util/format.h"
+
+namespace slicereuse {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// Layers [a, b) of an encoding, as an encoding of their own planes: its thickness is 0, so a
+// transfer cuts the target on exactly these planes (transfer_layers.h, target_planes) instead
+// of extending them to the target's top.
+Slices encoding_layers(const Slices& enc, size_t a, size_t b) {
+  Slices s;
+  s.fingerprint = enc.fingerprint;
+  s.layer_z.assign(enc.layer_z.begin() + long(a), enc.layer_z.begin() + long(b));
+  const uint64_t c0 = enc.layer_begin[a], c1 = enc.layer_begin[b];
+  const uint64_t p0 = enc.contour_begin[c0], p1 = enc.contour_begin[c1];
+  for (size_t k = a; k <= b; ++k) s.layer_begin.push_back(enc.layer_begin[k] - c0);
+  for (uint64_t c = c0; c <= c1; ++c) s.contour_begin.push_back(enc.contour_begin[c] - p0);
+  s.contour_open.assign(enc.contour_open.begin() + long(c0), enc.contour_open.begin() + long(c1));
+  s.face.resize(p1 - p0);
+  s.edge.resize(p1 - p0);
+  s.t.resize(p1 - p0);
+  std::memcpy(s.face.data(), enc.face.data() + p0, (p1 - p0) * sizeof(uint32_t));
+  std::memcpy(s.edge.data(), enc.edge.data() + p0, p1 - p0);
+  std::memcpy(s.t.data(), enc.t.data() + p0, (p1 - p0) * sizeof(double));
+  return s;
+}
+
+// A member's layers for plate layers [first, first + s.layers()).
+struct Piece {
+  Slices s;
+  size_t first;
+};
+
+// The plate's layers [a, b): every piece's layer at that height, members one after another.
+Slices merge_layers(const std::vector<Piece>& pieces, const std::vector<double>& planes, size_t a, size_t b,
+                    double z_start, double h) {
+  Slices out;
+  out.z_start = z_start + double(a) * h;
+  out.thickness = h;
+  out.layer_z.assign(planes.begin() + long(a), planes.begin() + long(b));
+  out.layer_begin.push_back(0);
+  out.contour_begin.push_back(0);
+  size_t points = 0;
+  for (const Piece& p : pieces) points += p.s.points();
+  out.xyz.resize(3 * points);
+  size_t q = 0;
+  for (size_t k = a; k < b; ++k) {
+    for (const Piece& p : pieces) {
+      if (k < p.first || k >= p.first + p.s.layers()) continue;
+      const size_t local = k - p.first;
+      for (uint64_t c = p.s.layer_begin[local]; c < p.s.layer_begin[local + 1]; ++c) {
+        const uint64_t n = p.s.contour_begin[c + 1] - p.s.contour_begin[c];
+        std::memcpy(&out.xyz[3 * q], &p.s.xyz[3 * p.s.contour_begin[c]], 3 * n * sizeof(double));
+        q += n;
+        out.contour_begin.push_back(q);
+        out.contour_open.push_back(p.s.contour_open[c]);
+      }
+    }
+    out.layer_begin.push_back(out.contour_open.size());
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<double> plate_planes(const std::vector<Mesh>& placed, const PlateJobOptions& o, double* z_start,
+                                 double* thickness) {
+  if (placed.empty()) throw Error("a plate needs at least one member");
+  double lowest = INFINITY, top = -INFINITY;
+  for (const Mesh& m : placed) {
+    validate_mesh(m);
+    const ZRange z = z_range(m);
+    lowest = std::min(lowest, z.min);
+    top = std::max(top, z.max);
+  }
+  if (o.encoding) {
+    if (!(o.encoding->thickness > 0))
+      throw Error("the encoding has no layer thickness (it was not made by slicing at a thickness), so the plate's "
+                  "layers are unknown");
+    *z_start = o.encoding->z_start;
+    *thickness = o.encoding->thickness;
+  } else {
+    *z_start = std::isnan(o.slicing.z_start) ? lowest : o.slicing.z_start;
+    *thickness = o.slicing.thickness;
+  }
+  return layer_planes(*z_start, *thickness, top);
+}
+
+PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOptions& o, const PrinterProfile& profile,
+                           const std::string& output_path, const Progress& progress) {
+  PlateJobStats st;
+  const std::vector<double> planes = plate_planes(placed, o, &st.z_start, &st.thickness);
+  const size_t L = planes.size(), n = placed.size();
+  // Each member's own layer count: its direct slicing from the plate's z_start stops at its top.
+  std::vector<size_t> own(n, 0);
+  for (size_t m = 0; m < n; ++m) {
+    const double top = z_range(placed[m]).max;
+    if (st.z_start < top) own[m] = layer_planes(st.z_start, st.thickness, top).size();
+  }
+  const size_t Le = o.encoding ? o.encoding->layers() : 0;
+  std::vector<const Mesh*> meshes;
+  for (const Mesh& m : placed) meshes.push_back(&m);
+  // A range holds every member's points twice (the members' layers and the plate's merged copy).
+  const std::vector<size_t> first = layer_chunks(meshes, planes, o.range_budget_bytes, 2 * 3 * sizeof(double));
+  st.ranges = first.size() - 1;
+  st.layers = L;
+
+  SliceChunks chunks{first, st.thickness, [&](size_t i, const Progress& range_progress) {
+                       const auto t = std::chrono::steady_clock::now();
+                       const size_t a = first[i], b = first[i + 1];
+                       std::vector<Piece> pieces;
+                       for (size_t m = 0; m < n; ++m) {
+                         const Progress mp = sub_progress(range_progress, double(m) / double(n), double(m + 1) / double(n));
+                         const size_t e = std::min(b, own[m]);
+                         const size_t te = std::min(e, Le);  // layers the encoding has
+                         if (a < te) {
+                           TransferStats ts;
+                           pieces.push_back({transfer_contours(encoding_layers(*o.encoding, a, te), placed[m],
+                                                               TransferOptions(TransferMode::Exact, false), &ts, mp),
+                                             a});
+                           st.transferred_layers += ts.transferred_layers;
+                           st.resliced_layers += ts.resliced_layers;
+                         }
+                         // Layers above the encoding's (a member taller than the source), or all
+                         // of them when slicing directly.
+                         const size_t d = std::max(a, te);
+                         if (d < e) {
+                           pieces.push_back({slice_planes(placed[m], {planes.begin() + long(d), planes.begin() + long(e)}, mp,
+                                                          false),
+                                             d});
+                           st.resliced_layers += e - d;
+                         }
+                       }
+                       Slices s = merge_layers(pieces, planes, a, b, st.z_start, st.thickness);
+                       st.points += s.points();
+                       st.slicing_seconds += seconds_since(t);
+                       return s;
+                     }};
+  st.masks = export_masks(chunks, profile, output_path, progress);
+  return st;
+}
+
+}  // namespace slicereuse

@@ -1,0 +1,439 @@
+// Plates (issue #17): arrangement of members on build plates, checked by exact polygon geometry
+// of the test's own; the placements file read back; and a plate's masks equal, pixel for pixel,
+// the union of each placed member's own masks, by reuse and by direct slicing, binary and
+// anti-aliased, whole and in ranges of layers.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "error_of.h"
+#include "family.h"
+#include "mask_stack.h"
+#include "shapes.h"
+#include "slicereuse/masks/export_masks.h"
+#include "slicereuse/masks/mask_png.h"
+#include "slicereuse/plates/arrange_plates.h"
+#include "slicereuse/plates/footprint.h"
+#include "slicereuse/plates/placement.h"
+#include "slicereuse/plates/placements_file.h"
+#include "slicereuse/plates/plate_job.h"
+#include "slicereuse/slicing/slice_layers.h"
+#include "temp_folder.h"
+
+using namespace slicereuse;
+
+namespace {
+
+// ---- Independent 2-D geometry: distances between projected triangles. ----
+using P2 = std::array<double, 2>;
+
+double cross(const P2& o, const P2& a, const P2& b) {
+  return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+}
+
+double point_segment(const P2& p, const P2& a, const P2& b) {
+  const double dx = b[0] - a[0], dy = b[1] - a[1], l2 = dx * dx + dy * dy;
+  double u = l2 > 0 ? ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2 : 0;
+  u = std::clamp(u, 0.0, 1.0);
+  return std::hypot(p[0] - a[0] - u * dx, p[1] - a[1] - u * dy);
+}
+
+bool segments_cross(const P2& a, const P2& b, const P2& c, const P2& d) {
+  const double d1 = cross(c, d, a), d2 = cross(c, d, b), d3 = cross(a, b, c), d4 = cross(a, b, d);
+  return ((d1 > 0) != (d2 > 0) && d1 != 0 && d2 != 0) && ((d3 > 0) != (d4 > 0) && d3 != 0 && d4 != 0);
+}
+
+double segment_segment(const P2& a, const P2& b, const P2& c, const P2& d) {
+  if (segments_cross(a, b, c, d)) return 0;
+  return std::min({point_segment(a, c, d), point_segment(b, c, d), point_segment(c, a, b), point_segment(d, a, b)});
+}
+
+bool inside_triangle(const P2& p, const std::array<P2, 3>& t) {
+  const double a = cross(t[0], t[1], p), b = cross(t[1], t[2], p), c = cross(t[2], t[0], p);
+  return (a >= 0 && b >= 0 && c >= 0) || (a <= 0 && b <= 0 && c <= 0);
+}
+
+double triangle_distance(const std::array<P2, 3>& s, const std::array<P2, 3>& t) {
+  for (const P2& p : s)
+    if (inside_triangle(p, t)) return 0;
+  for (const P2& p : t)
+    if (inside_triangle(p, s)) return 0;
+  double d = INFINITY;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) d = std::min(d, segment_segment(s[i], s[(i + 1) % 3], t[j], t[(j + 1) % 3]));
+  return d;
+}
+
+struct Projected {
+  std::vector<std::array<P2, 3>> tri;
+  std::vector<std::array<double, 4>> box;  // x0, y0, x1, y1 per triangle
+};
+
+Projected project(const Mesh& m) {
+  Projected p;
+  for (size_t f = 0; f < m.faces(); ++f) {
+    std::array<P2, 3> t;
+    for (int c = 0; c < 3; ++c) t[c] = {m.V[3 * m.F[3 * f + c]], m.V[3 * m.F[3 * f + c] + 1]};
+    p.tri.push_back(t);
+    p.box.push_back({std::min({t[0][0], t[1][0], t[2][0]}), std::min({t[0][1], t[1][1], t[2][1]}),
+                     std::max({t[0][0], t[1][0], t[2][0]}), std::max({t[0][1], t[1][1], t[2][1]})});
+  }
+  return p;
+}
+
+// The smallest distance between the two members' projected triangles, or `cap` when it is
+// at least cap (triangles whose boxes are cap apart are skipped).
+double min_distance(const Projected& a, const Projected& b, double cap) {
+  double best = cap;
+  for (size_t i = 0; i < a.tri.size(); ++i)
+    for (size_t j = 0; j < b.tri.size(); ++j) {
+      const auto& p = a.box[i];
+      const auto& q = b.box[j];
+      const double gx = std::max({0.0, q[0] - p[2], p[0] - q[2]}), gy = std::max({0.0, q[1] - p[3], p[1] - q[3]});
+      if (std::hypot(gx, gy) >= best) continue;
+      best = std::min(best, triangle_distance(a.tri[i], b.tri[j]));
+    }
+  return best;
+}
+
+PrinterProfile display(int w, int h, double um = 100) {
+  PrinterProfile p;
+  p.width_px = w;
+  p.height_px = h;
+  p.pixel_size_x_um = p.pixel_size_y_um = um;
+  return p;
+}
+
+// Members of different shapes: arch family members (non-convex, U-shaped), boxes and a sphere.
+struct Members {
+  std::vector<Mesh> meshes;
+  std::vector<std::string> names;
+  std::vector<const Mesh*> pointers() const {
+    std::vector<const Mesh*> p;
+    for (const Mesh& m : meshes) p.push_back(&m);
+    return p;
+  }
+};
+
+test::FamilyOptions small_arch() {
+  test::FamilyOptions o;
+  o.faces = 1500;
+  o.height = 4;
+  o.z_change = test::ZChange::Band;
+  return o;
+}
+
+Members mixed_members() {
+  Members s;
+  const test::FamilyOptions o = small_arch();
+  const Mesh base = test::make_family_base(o);
+  for (int i = 0; i < 6; ++i) {
+    s.meshes.push_back(test::make_family_member(base, o, i));
+    s.names.push_back("arch" + std::to_string(i));
+  }
+  s.meshes.push_back(test::make_box(0, 0, 0, 12, 3, 5));
+  s.names.push_back("bar");
+  s.meshes.push_back(test::make_box(-4, -4, 0, 4, 4, 2));
+  s.names.push_back("square");
+  s.meshes.push_back(test::make_sphere(3, 8, 12));
+  s.names.push_back("ball");
+  return s;
+}
+
+// Every member's placed triangles within the platform less the spacing, and members of one
+// plate at least the spacing apart.
+void expect_valid(const Members& s, const Arrangement& a, const Platform& platform, double spacing) {
+  constexpr double tol = 1e-6;
+  ASSERT_EQ(a.placement.size(), s.meshes.size());
+  std::vector<Projected> placed;
+  for (size_t m = 0; m < s.meshes.size(); ++m) {
+    const Mesh moved = place_mesh(s.meshes[m], a.placement[m]);
+    for (size_t v = 0; v < moved.vertices(); ++v) {
+      EXPECT_GE(moved.V[3 * v], platform.x0 + spacing - tol) << s.names[m];
+      EXPECT_LE(moved.V[3 * v], platform.x1 - spacing + tol) << s.names[m];
+      EXPECT_GE(moved.V[3 * v + 1], platform.y0 + spacing - tol) << s.names[m];
+      EXPECT_LE(moved.V[3 * v + 1], platform.y1 - spacing + tol) << s.names[m];
+      EXPECT_EQ(moved.V[3 * v + 2], s.meshes[m].V[3 * v + 2]);
+    }
+    placed.push_back(project(moved));
+  }
+  size_t listed = 0;
+  for (size_t k = 0; k < a.members.size(); ++k) {
+    listed += a.members[k].size();
+    for (size_t i = 0; i < a.members[k].size(); ++i) {
+      EXPECT_EQ(a.plate[a.members[k][i]], k);
+      for (size_t j = 0; j < i; ++j) {
+        const size_t p = a.members[k][i], q = a.members[k][j];
+        EXPECT_GE(min_distance(placed[p], placed[q], spacing), spacing - tol)
+            << s.names[p] << " and " << s.names[q] << " on plate " << k + 1;
+      }
+    }
+  }
+  EXPECT_EQ(listed, s.meshes.size());
+}
+
+}  // namespace
+
+TEST(Footprint, CoversEveryProjectedTriangleAndNotTheBoundingBox) {
+  const test::FamilyOptions o = small_arch();
+  const Mesh arch = test::make_family_base(o);
+  for (double theta : {0.0, 15.0, 90.0}) {
+    const Footprint f = mesh_footprint(arch, theta, 0.25);
+    // Every projected vertex of the turned arch lies in a marked cell.
+    const Turn turn = turn_of(theta);
+    for (size_t v = 0; v < arch.vertices(); ++v) {
+      double x, y;
+      turn.apply(arch.V[3 * v], arch.V[3 * v + 1], x, y);
+      const int i = int(std::floor((x - f.x0) / f.cell)), j = int(std::floor((y - f.y0) / f.cell));
+      ASSERT_TRUE(i >= 0 && i < f.width && j >= 0 && j < f.height);
+      EXPECT_EQ(f.cells[size_t(j) * f.width + i], 1);
+    }
+    // The arch's bay (inside the horseshoe) is free: well under its bounding box.
+    EXPECT_LT(f.marked(), size_t(f.width) * size_t(f.height) * 3 / 4) << theta;
+  }
+}
+
+TEST(ArrangePlates, MembersNeverOverlapAndKeepTheSpacing) {
+  const Members s = mixed_members();
+  for (double spacing : {2.0, 0.5}) {
+    const PrinterProfile profile = display(500, 400);  // 50 x 40 mm
+    const Platform platform = printer_platform(profile);
+    ArrangeOptions o;
+    o.spacing_mm = spacing;
+    const Arrangement a = arrange_plates(s.pointers(), s.names, platform, o);
+    expect_valid(s, a, platform, spacing);
+    ASSERT_EQ(a.area_used.size(), a.members.size());
+    for (double used : a.area_used) EXPECT_TRUE(used > 0 && used < 1);
+  }
+}
+
+TEST(ArrangePlates, MembersThatDoNotFitGoToTheNextPlate) {
+  Members s;
+  for (int i = 0; i < 7; ++i) {
+    s.meshes.push_back(test::make_box(0, 0, 0, 14, 9, 3));
+    s.names.push_back("box" + std::to_string(i));
+  }
+  // 40 x 30 mm with 2 mm spacing: 2 x 2 boxes of 14 x 9 per plate at best (rows of 9 + 2 + 9 + 2 + 9 do not fit 26 mm).
+  const Platform platform = printer_platform(display(400, 300));
+  const Arrangement a = arrange_plates(s.pointers(), s.names, platform, {});
+  expect_valid(s, a, platform, 2);
+  EXPECT_GE(a.members.size(), 2u);
+  for (const auto& plate : a.members) EXPECT_LE(plate.size(), 4u);
+  // Turning helps: a 30 x 6 bar fits a 40 x 20 platform only near 0 or 180 degrees, and with a
+  // rotation step of 15 degrees three fit across 20 mm only lying along x.
+}
+
+TEST(ArrangePlates, TurnsMembersWhereThatPacksMore) {
+  // A 24 x 6 bar on a 12 x 40 mm platform fits only turned by 90 degrees.
+  Members s;
+  s.meshes.push_back(test::make_box(0, 0, 0, 24, 6, 3));
+  s.names.push_back("bar");
+  const Platform platform = printer_platform(display(120, 400));
+  const Arrangement a = arrange_plates(s.pointers(), s.names, platform, {});
+  expect_valid(s, a, platform, 2);
+  EXPECT_TRUE(a.placement[0].theta_deg == 90 || a.placement[0].theta_deg == 270);
+}
+
+TEST(ArrangePlates, RefusesAMemberLargerThanThePlatformWithBothSizes) {
+  Members s = mixed_members();
+  s.meshes.push_back(test::make_box(0, 0, 0, 100, 10, 3));
+  s.names.push_back("long bar");
+  const Platform platform = printer_platform(display(500, 400));
+  const std::string e = test::error_of([&] { arrange_plates(s.pointers(), s.names, platform, {}); });
+  EXPECT_NE(e.find("member 'long bar' (100.00 x 10.00 mm"), std::string::npos) << e;
+  EXPECT_NE(e.find("the platform is 50.00 x 40.00 mm, 46.00 x 36.00 mm inside the spacing of 2 mm"), std::string::npos) << e;
+}
+
+TEST(ArrangePlates, RefusesBadOptions) {
+  const Members s = mixed_members();
+  const Platform platform = printer_platform(display(500, 400));
+  ArrangeOptions o;
+  o.spacing_mm = -1;
+  EXPECT_NE(test::error_of([&] { arrange_plates(s.pointers(), s.names, platform, o); }).find("spacing -1 mm"),
+            std::string::npos);
+  o = {};
+  o.rotation_step_deg = 0;
+  EXPECT_NE(test::error_of([&] { arrange_plates(s.pointers(), s.names, platform, o); }).find("rotation step"),
+            std::string::npos);
+  o = {};
+  o.spacing_mm = 30;
+  EXPECT_NE(test::error_of([&] { arrange_plates(s.pointers(), s.names, platform, o); }).find("leaves no room"),
+            std::string::npos);
+}
+
+class PlacementsFileTest : public test::TempFolderTest {};
+
+TEST_F(PlacementsFileTest, ReadsBackExactlyThePlacementsUsed) {
+  const Members s = mixed_members();
+  const Platform platform = printer_platform(display(400, 300));
+  const Arrangement a = arrange_plates(s.pointers(), s.names, platform, {});
+  std::vector<std::string> outputs;
+  for (size_t k = 0; k < a.members.size(); ++k) outputs.push_back("plate_" + std::to_string(k + 1) + ".sl1");
+  write_placements_file(path("plates.json"), placements_of(a, s.names, 2, platform, outputs));
+  const PlacementsFile f = read_placements_file(path("plates.json"));
+  EXPECT_EQ(f.spacing_mm, 2);
+  EXPECT_EQ(f.platform.x0, platform.x0);
+  EXPECT_EQ(f.platform.y1, platform.y1);
+  ASSERT_EQ(f.plates.size(), a.members.size());
+  for (size_t k = 0; k < f.plates.size(); ++k) {
+    EXPECT_EQ(f.plates[k].output, outputs[k]);
+    EXPECT_EQ(f.plates[k].area_used, a.area_used[k]);
+  }
+  // Members in another order than the file's: matched by name.
+  std::vector<std::string> names(s.names.rbegin(), s.names.rend());
+  const Arrangement b = arrangement_of(f, names);
+  for (size_t m = 0; m < names.size(); ++m) {
+    const size_t orig = s.names.size() - 1 - m;
+    EXPECT_EQ(b.plate[m], a.plate[orig]);
+    EXPECT_EQ(b.placement[m].theta_deg, a.placement[orig].theta_deg);
+    EXPECT_EQ(b.placement[m].tx_mm, a.placement[orig].tx_mm);
+    EXPECT_EQ(b.placement[m].ty_mm, a.placement[orig].ty_mm);
+  }
+  // A member the file does not place, and one it places that is not given.
+  names.push_back("extra");
+  EXPECT_NE(test::error_of([&] { arrangement_of(f, names); }).find("do not place member 'extra'"), std::string::npos);
+  names.erase(names.begin());
+  names.pop_back();
+  EXPECT_NE(test::error_of([&] { arrangement_of(f, names); }).find("member 'ball' (plate"), std::string::npos);
+}
+
+TEST_F(PlacementsFileTest, RefusesBrokenFilesNamingTheProblem) {
+  auto write = [&](const std::string& text) {
+    std::ofstream(path("p.json")) << text;
+    return test::error_of([&] { read_placements_file(path("p.json")); });
+  };
+  const std::string head = R"({"format": "slicereuse placements", "version": 1, "spacing_mm": 2,
+  "platform_mm": {"x0": -10, "y0": -10, "x1": 10, "y1": 10}, "plates": [)";
+  EXPECT_NE(write(head + R"({"area_used": 0.1, "members": [{"name": "a", "theta_deg": 0, "tx_mm": 1}]}]})")
+                .find("plate 1, member 1 has no \"ty_mm\""),
+            std::string::npos);
+  EXPECT_NE(write(head + R"({"area_used": 0.1, "members": [{"name": "a", "theta_deg": "x", "tx_mm": 1, "ty_mm": 1}]}]})")
+                .find("member 1's theta_deg is a string, not a number"),
+            std::string::npos);
+  EXPECT_NE(write(head + "\n{\"area_used\": 0.1, \"members\": [}]}").find("line 3: expected a value"), std::string::npos);
+  EXPECT_NE(write(head + R"({"area_used": 0.1, "members": []}]})").find("plate 1 has no members"), std::string::npos);
+  EXPECT_NE(write(R"({"format": "other", "version": 1})").find("is not a slicereuse placements file"), std::string::npos);
+  EXPECT_NE(test::error_of([&] { read_placements_file(path("missing.json")); }).find("missing.json"), std::string::npos);
+}
+
+// ---- A plate's masks: the union of each placed member's own masks. ----
+
+class PlateJobTest : public test::TempFolderTest {
+ protected:
+  // Layer k of a PNG stack.
+  static MaskImage layer(MaskStack& stack, size_t k) {
+    std::vector<uint8_t> bytes;
+    stack.read(k, bytes);
+    MaskImage img;
+    decode_mask_png(bytes.data(), bytes.size(), stack.layer_name(k), img);
+    return img;
+  }
+
+  // The plate stack at `plate` equals, pixel for pixel, the union (largest value) of the member
+  // stacks; members' stacks end where they end.
+  void expect_union(const std::string& plate, const std::vector<std::string>& members) {
+    MaskStack p(plate);
+    std::vector<std::unique_ptr<MaskStack>> ms;
+    size_t tallest = 0;
+    for (const auto& m : members) {
+      ms.push_back(std::make_unique<MaskStack>(m));
+      tallest = std::max(tallest, ms.back()->layers());
+    }
+    ASSERT_EQ(p.layers(), tallest);
+    size_t lit = 0;
+    for (size_t k = 0; k < p.layers(); ++k) {
+      const MaskImage img = layer(p, k);
+      std::vector<uint8_t> u(img.pixels.size(), 0);
+      for (auto& m : ms) {
+        if (k >= m->layers()) continue;
+        const MaskImage mi = layer(*m, k);
+        ASSERT_EQ(mi.pixels.size(), u.size());
+        for (size_t i = 0; i < u.size(); ++i) {
+          // Members never share a lit pixel: the union is the sum.
+          if (mi.pixels[i] && u[i]) ADD_FAILURE() << "pixel " << i << " of layer " << k << " lit by two members";
+          u[i] = std::max(u[i], mi.pixels[i]);
+        }
+      }
+      for (uint8_t v : u) lit += v != 0;
+      ASSERT_TRUE(img.pixels == u) << "layer " << k;
+    }
+    EXPECT_GT(lit, 0u);
+  }
+};
+
+TEST_F(PlateJobTest, PlateMasksEqualTheUnionOfTheMembersOwnMasksByReuseAndDirect) {
+  // Members of one family (the same faces), z edited in a band so that transfer re-slices some
+  // layers, plus a member made taller than the source and one shorter.
+  test::FamilyOptions o = small_arch();
+  const Mesh base = test::make_family_base(o);
+  std::vector<Mesh> members;
+  std::vector<std::string> names;
+  for (int i = 1; i <= 5; ++i) {
+    members.push_back(test::make_family_member(base, o, i));
+    names.push_back("m" + std::to_string(i));
+  }
+  for (size_t v = 0; v < members[3].vertices(); ++v) members[3].V[3 * v + 2] *= 1.2;
+  for (size_t v = 0; v < members[4].vertices(); ++v) members[4].V[3 * v + 2] *= 0.7;
+  std::vector<const Mesh*> ptrs;
+  for (const Mesh& m : members) ptrs.push_back(&m);
+  PrinterProfile profile = display(500, 400);
+  const Arrangement a = arrange_plates(ptrs, names, printer_platform(profile), {});
+  ASSERT_EQ(a.members.size(), 1u) << "the test wants one plate";
+  std::vector<Mesh> placed;
+  for (size_t m = 0; m < members.size(); ++m) placed.push_back(place_mesh(members[m], a.placement[m]));
+
+  SliceOptions so;
+  so.thickness = 0.1;
+  const Slices encoding = slice_layers(base, so);
+  for (bool aa : {false, true}) {
+    profile.antialiasing = aa;
+    const std::string tag = aa ? "aa" : "bin";
+    // Each placed member's own masks, sliced directly on the encoding's planes.
+    std::vector<std::string> own;
+    for (size_t m = 0; m < placed.size(); ++m) {
+      SliceOptions mo = so;
+      mo.z_start = encoding.z_start;
+      mo.encoding = false;
+      own.push_back(path(tag + "_own_" + names[m]));
+      export_masks(slice_layers(placed[m], mo), profile, own.back());
+    }
+    PlateJobOptions reuse;
+    reuse.encoding = &encoding;
+    const PlateJobStats r = export_plate(placed, reuse, profile, path(tag + "_reuse"));
+    EXPECT_GT(r.transferred_layers, 0u);
+    EXPECT_GT(r.resliced_layers, 0u);  // the band's layers and the tall member's top
+    expect_union(path(tag + "_reuse"), own);
+
+    PlateJobOptions direct;
+    direct.slicing = so;
+    direct.slicing.z_start = encoding.z_start;
+    const PlateJobStats d = export_plate(placed, direct, profile, path(tag + "_direct.sl1"));
+    EXPECT_EQ(d.transferred_layers, 0u);
+    EXPECT_EQ(d.layers, r.layers);
+    expect_union(path(tag + "_direct.sl1"), own);
+
+    // In ranges of layers, to stay within a (tiny) memory budget: the same masks.
+    reuse.range_budget_bytes = 200000;
+    const PlateJobStats rr = export_plate(placed, reuse, profile, path(tag + "_ranges"));
+    EXPECT_GT(rr.ranges, 2u);
+    EXPECT_EQ(rr.points, r.points);
+    expect_union(path(tag + "_ranges"), own);
+  }
+}
+
+TEST(PlateJob, RefusesNoMembersAndAnEncodingWithoutThickness) {
+  PlateJobOptions o;
+  EXPECT_NE(test::error_of([&] { export_plate({}, o, display(100, 100), "/tmp/never"); }).find("at least one member"),
+            std::string::npos);
+  const Mesh box = test::make_box(0, 0, 0, 1, 1, 1);
+  Slices planes_only = slice_planes(box, {0.5});
+  o.encoding = &planes_only;
+  EXPECT_NE(test::error_of([&] { export_plate({box}, o, display(100, 100), "/tmp/never"); }).find("no layer thickness"),
+            std::string::npos);
+}
