@@ -185,6 +185,13 @@ class DocumentHost : public Host {
     return mesh_from_vcg(m->cm);
   }
 
+  std::vector<NamedMesh> meshes_with_faces(bool visible_only) override {
+    std::vector<NamedMesh> out;
+    for (MeshModel* m : Api::meshes(md_))
+      if (m->cm.fn > 0 && (!visible_only || m->isVisible())) out.push_back({m->label().toStdString(), mesh_from_vcg(m->cm)});
+    return out;
+  }
+
   Slices current_contour_layer() override {
     if (md_.mm() == nullptr) throw Error("there is no current layer: open a contour file first");
     return slices_of_contour_layer(md_.mm()->cm);

@@ -8,6 +8,7 @@
 #include <common/interfaces.h>
 
 #include <QList>
+#include <vector>
 
 namespace slicereuse::plugin {
 
@@ -34,6 +35,8 @@ struct MeshLab2020 {
     return ref >= 0 && ref < md.meshList.size() ? md.meshList[ref] : nullptr;
   }
   static int mesh_count(const MeshDocument& md) { return md.meshList.size(); }
+  // Every loaded mesh, in the document's order.
+  static std::vector<MeshModel*> meshes(MeshDocument& md) { return {md.meshList.begin(), md.meshList.end()}; }
   // Adds an empty layer, not made current, and lets fill write its CMeshO.
   template <class Fill>
   static void add_layer(MeshDocument& md, const QString& name, Fill fill) {

@@ -6,6 +6,8 @@
 // A RichMesh value is the mesh's id (pymeshlab's mesh id, which is what a script passes).
 #include <common/plugins/interfaces/filter_plugin.h>
 
+#include <vector>
+
 namespace slicereuse::plugin {
 
 struct MeshLab2025 {
@@ -26,6 +28,12 @@ struct MeshLab2025 {
     return ref >= 0 ? md.getMesh(unsigned(ref)) : nullptr;
   }
   static int mesh_count(const MeshDocument& md) { return int(md.meshNumber()); }
+  // Every loaded mesh, in the document's order.
+  static std::vector<MeshModel*> meshes(MeshDocument& md) {
+    std::vector<MeshModel*> out;
+    for (MeshModel& m : md.meshIterator()) out.push_back(&m);
+    return out;
+  }
   // Adds a layer filled by fill, not made current (addNewMesh(CMeshO) also updates its bounding
   // box and data mask).
   template <class Fill>

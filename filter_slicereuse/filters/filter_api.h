@@ -35,7 +35,7 @@ struct ParamSpec {
 };
 
 enum class FilterId { SliceWithEncoding, TransferSlicing, ExportMasks, CompareMasks, MakePrintJob,
-                      CrossParameterize, FreeCachedMemory };
+                      CrossParameterize, FreeCachedMemory, MakePlateJob };
 
 // Which meshes a filter works on (MeshLab's arity): none (files only), the current mesh, or the
 // meshes its Mesh parameters name.
@@ -83,6 +83,14 @@ class Host {
   virtual ~Host() = default;
   virtual Mesh current_mesh() = 0;                   // throws Error if there is none
   virtual Mesh mesh_at(int ref) = 0;                 // a Mesh parameter's value; Error if none
+  // The loaded meshes that have faces, in the document's order, each with its layer name and
+  // whether it is shown (the eye of MeshLab's layer dialog; every mesh pymeshlab and
+  // meshlabserver load is shown); only the shown ones when visible_only.
+  struct NamedMesh {
+    std::string name;
+    Mesh mesh;
+  };
+  virtual std::vector<NamedMesh> meshes_with_faces(bool visible_only) = 0;
   // The current layer's contours when it is a contour layer (a .ctr, .srb or .cli file opened
   // through the io_encoding plugin; see contour_layer.h); throws Error if it is not.
   virtual Slices current_contour_layer() = 0;

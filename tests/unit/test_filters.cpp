@@ -48,6 +48,14 @@ class FakeHost : public Host {
     if (ref < 0 || size_t(ref) >= meshes.size()) throw Error("there is no mesh with index " + std::to_string(ref));
     return meshes[size_t(ref)];
   }
+  // Mesh i is named "mesh<i>" and shown unless hidden[i].
+  std::set<size_t> hidden;
+  std::vector<NamedMesh> meshes_with_faces(bool visible_only) override {
+    std::vector<NamedMesh> out;
+    for (size_t i = 0; i < meshes.size(); ++i)
+      if (meshes[i].faces() > 0 && !(visible_only && hidden.count(i))) out.push_back({"mesh" + std::to_string(i), meshes[i]});
+    return out;
+  }
   Slices current_contour_layer() override { throw Error("the layer is not a contour layer"); }
   void add_polyline_layer(const std::string& name, const std::vector<double>&, const std::vector<uint32_t>&) override {
     added_layers.push_back(name);
@@ -97,7 +105,7 @@ TEST(Filters, NamesAreUniqueAndEveryParameterIsDeclaredOnce) {
     std::set<std::string> params;
     for (const ParamSpec& p : f.params) EXPECT_TRUE(params.insert(p.name).second) << f.name << ": " << p.name;
   }
-  EXPECT_EQ(filter_specs().size(), 7u);
+  EXPECT_EQ(filter_specs().size(), 8u);
   EXPECT_EQ(find_filter_spec(-1), nullptr);
 }
 
@@ -301,6 +309,67 @@ TEST_F(FiltersThroughAFakeHost, EveryFilterRunsAndReturnsEveryFigureItLogs) {
   EXPECT_GE(count(freed, "freed_bytes"), count(freed, "encoding_bytes"));
   EXPECT_EQ(count(free_spec.run(defaults(free_spec), host), "encoding_bytes"), 0);
   EXPECT_EQ(count(job_spec.run(job_values, host), "encoding_cached"), 0);
+}
+
+// Make Plate Job through the fake host: the shown meshes (the hidden renumbered copy, whose faces
+// differ, is left out) on one plate by reuse, its layout picture and placements file; then the
+// same plate from that placements file by direct slicing gives the same masks.
+TEST_F(FiltersThroughAFakeHost, MakePlateJobPutsTheShownMeshesOnPlatesAndReadsItsPlacementsBack) {
+  FakeHost host;
+  host.meshes.push_back(make_sphere(1, 24, 32));
+  Mesh moved = host.meshes[0];
+  for (size_t i = 0; i < moved.V.size(); i += 3) moved.V[i] = 1.1 * moved.V[i] + 0.05 * moved.V[i + 2];
+  host.meshes.push_back(moved);
+  host.meshes.push_back(shuffle_mesh(host.meshes[0], 7).mesh);
+  host.hidden = {2};
+  const FilterSpec& slice_spec = spec_named("slice_mesh_with_encoding");
+  slice_spec.run(defaults(slice_spec, {{"encoding_file", path("s.srb")}}), host);
+
+  const FilterSpec& plate_spec = spec_named("make_plate_job");
+  const Result plate = plate_spec.run(
+      defaults(plate_spec, {{"encoding_file", path("s.srb")}, {"output_path", path("plate.sl1")},
+                            {"placements_output", path("plates.json")}}),
+      host);
+  EXPECT_EQ(keys_of(plate), (std::set<std::string>{"plates", "members", "layers", "points", "transferred_layers",
+                                                   "resliced_layers", "encoding_cached", "arrange_seconds",
+                                                   "slicing_seconds", "seconds", "area_used_1"}));
+  EXPECT_EQ(count(plate, "plates"), 1);
+  EXPECT_EQ(count(plate, "members"), 2);
+  SliceOptions options;
+  options.thickness = 0.1;
+  const size_t layers = slice_layers(host.meshes[0], options).layers();
+  EXPECT_EQ(count(plate, "layers"), int64_t(layers));
+  EXPECT_EQ(count(plate, "transferred_layers"), int64_t(2 * layers));
+  EXPECT_EQ(count(plate, "resliced_layers"), 0);
+  EXPECT_TRUE(std::filesystem::is_regular_file(path("plate_1.sl1")));
+  std::ifstream layout(path("plate_1_layout.png"), std::ios::binary);
+  std::vector<uint8_t> png((std::istreambuf_iterator<char>(layout)), std::istreambuf_iterator<char>());
+  MaskImage picture;
+  decode_mask_png(png.data(), png.size(), "layout", picture);
+  EXPECT_EQ(picture.width, 768);  // the method's 76.8 x 57.6 mm display at 0.1 mm
+  EXPECT_EQ(picture.height, 576);
+
+  // The placements written, used instead of arranging, with direct slicing: the same masks.
+  const Result again = plate_spec.run(
+      defaults(plate_spec, {{"placements_file", path("plates.json")}, {"output_path", path("direct.sl1")}}), host);
+  EXPECT_EQ(count(again, "transferred_layers"), 0);
+  const FilterSpec& compare_spec = spec_named("compare_mask_stacks");
+  const Result compare = compare_spec.run(
+      defaults(compare_spec, {{"stack_a", path("plate_1.sl1")}, {"stack_b", path("direct_1.sl1")}}), host);
+  EXPECT_EQ(std::get<double>(compare.at("min_similarity")), 1.0);
+  EXPECT_EQ(count(compare, "max_grey_difference"), 0);
+
+  // Every mesh, the renumbered copy included: it is no member of the encoding's family.
+  EXPECT_NE(test::error_of([&] {
+              plate_spec.run(defaults(plate_spec, {{"encoding_file", path("s.srb")}, {"output_path", path("all.sl1")}},
+                                      {{"visible_only", 0}}),
+                             host);
+            }).find("faces differ"),
+            std::string::npos);
+  host.hidden = {0, 1, 2};
+  EXPECT_NE(test::error_of([&] { plate_spec.run(defaults(plate_spec, {{"output_path", path("none.sl1")}}), host); })
+                .find("no shown mesh with faces"),
+            std::string::npos);
 }
 
 // examples/*.mlx: every filter is in one, and wherever a script names a filter it lists every

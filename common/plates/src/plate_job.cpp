@@ -20,8 +20,9 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 
 // Layers [a, b) of an encoding, as an encoding of their own planes: its thickness is 0, so a
 // transfer cuts the target on exactly these planes (transfer_layers.h, target_planes) instead
-// of extending them to the target's top.
-Slices encoding_layers(const Slices& enc, size_t a, size_t b) {
+// of extending them to the target's top. Their edge ends into *ends when edge_ends is given.
+Slices encoding_layers(const Slices& enc, const Buffer<uint32_t>* edge_ends, size_t a, size_t b,
+                       Buffer<uint32_t>* ends) {
   Slices s;
   s.fingerprint = enc.fingerprint;
   s.layer_z.assign(enc.layer_z.begin() + long(a), enc.layer_z.begin() + long(b));
@@ -36,6 +37,10 @@ Slices encoding_layers(const Slices& enc, size_t a, size_t b) {
   std::memcpy(s.face.data(), enc.face.data() + p0, (p1 - p0) * sizeof(uint32_t));
   std::memcpy(s.edge.data(), enc.edge.data() + p0, p1 - p0);
   std::memcpy(s.t.data(), enc.t.data() + p0, (p1 - p0) * sizeof(double));
+  if (edge_ends) {
+    ends->resize(2 * (p1 - p0));
+    std::memcpy(ends->data(), edge_ends->data() + 2 * p0, 2 * (p1 - p0) * sizeof(uint32_t));
+  }
   return s;
 }
 
@@ -75,6 +80,54 @@ Slices merge_layers(const std::vector<Piece>& pieces, const std::vector<double>&
   return out;
 }
 
+// The plate's layers [a, b): each member's own layers there (own[m]: how many it has), by
+// transfer where the encoding has them, else sliced directly; merged member after member.
+Slices plate_range(const std::vector<Mesh>& placed, const PlateJobOptions& o, const std::vector<double>& planes,
+                   const std::vector<size_t>& own, size_t a, size_t b, PlateJobStats& st, const Progress& progress) {
+  const size_t n = placed.size(), Le = o.encoding ? o.encoding->layers() : 0;
+  // The range's encoding, shared by every member that has all its layers; a shorter member gets
+  // one cut at its own top (transferred onto planes above a member's top, layers would fail
+  // their certificate, and a range failing most would be sliced directly).
+  struct Sub {
+    size_t end = 0;
+    Slices enc;
+    Buffer<uint32_t> ends;
+  };
+  Sub shared, cut;
+  auto sub_to = [&](size_t te) -> const Sub& {
+    Sub& s = te == std::min(b, Le) ? shared : cut;
+    if (s.end != te || s.enc.layer_z.empty()) {
+      s.enc = encoding_layers(*o.encoding, o.edge_ends, a, te, &s.ends);
+      s.end = te;
+    }
+    return s;
+  };
+  std::vector<Piece> pieces;
+  for (size_t m = 0; m < n; ++m) {
+    const Progress mp = sub_progress(progress, double(m) / double(n), double(m + 1) / double(n));
+    const size_t e = std::min(b, own[m]);
+    const size_t te = std::min(e, Le);  // the member's layers the encoding has
+    if (a < te) {
+      const Sub& sub = sub_to(te);
+      TransferStats ts;
+      const TransferOptions exact(TransferMode::Exact, false);
+      pieces.push_back({o.edge_ends ? transfer_contours(sub.enc, sub.ends, placed[m], exact, &ts, mp)
+                                    : transfer_contours(sub.enc, placed[m], exact, &ts, mp),
+                        a});
+      st.transferred_layers += ts.transferred_layers;
+      st.resliced_layers += ts.resliced_layers;
+    }
+    // Layers above the encoding's (a member taller than the source), or all of them when
+    // slicing directly.
+    const size_t d = std::max(a, te);
+    if (d < e) {
+      pieces.push_back({slice_planes(placed[m], {planes.begin() + long(d), planes.begin() + long(e)}, mp, false), d});
+      st.resliced_layers += e - d;
+    }
+  }
+  return merge_layers(pieces, planes, a, b, st.z_start, st.thickness);
+}
+
 }  // namespace
 
 std::vector<double> plate_planes(const std::vector<Mesh>& placed, const PlateJobOptions& o, double* z_start,
@@ -111,7 +164,6 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
     const double top = z_range(placed[m]).max;
     if (st.z_start < top) own[m] = layer_planes(st.z_start, st.thickness, top).size();
   }
-  const size_t Le = o.encoding ? o.encoding->layers() : 0;
   std::vector<const Mesh*> meshes;
   for (const Mesh& m : placed) meshes.push_back(&m);
   // A range holds every member's points twice (the members' layers and the plate's merged copy).
@@ -121,31 +173,7 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
 
   SliceChunks chunks{first, st.thickness, [&](size_t i, const Progress& range_progress) {
                        const auto t = std::chrono::steady_clock::now();
-                       const size_t a = first[i], b = first[i + 1];
-                       std::vector<Piece> pieces;
-                       for (size_t m = 0; m < n; ++m) {
-                         const Progress mp = sub_progress(range_progress, double(m) / double(n), double(m + 1) / double(n));
-                         const size_t e = std::min(b, own[m]);
-                         const size_t te = std::min(e, Le);  // layers the encoding has
-                         if (a < te) {
-                           TransferStats ts;
-                           pieces.push_back({transfer_contours(encoding_layers(*o.encoding, a, te), placed[m],
-                                                               TransferOptions(TransferMode::Exact, false), &ts, mp),
-                                             a});
-                           st.transferred_layers += ts.transferred_layers;
-                           st.resliced_layers += ts.resliced_layers;
-                         }
-                         // Layers above the encoding's (a member taller than the source), or all
-                         // of them when slicing directly.
-                         const size_t d = std::max(a, te);
-                         if (d < e) {
-                           pieces.push_back({slice_planes(placed[m], {planes.begin() + long(d), planes.begin() + long(e)}, mp,
-                                                          false),
-                                             d});
-                           st.resliced_layers += e - d;
-                         }
-                       }
-                       Slices s = merge_layers(pieces, planes, a, b, st.z_start, st.thickness);
+                       Slices s = plate_range(placed, o, planes, own, first[i], first[i + 1], st, range_progress);
                        st.points += s.points();
                        st.slicing_seconds += seconds_since(t);
                        return s;

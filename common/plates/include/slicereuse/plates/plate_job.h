@@ -35,6 +35,8 @@ namespace slicereuse {
 
 struct PlateJobOptions {
   const Slices* encoding = nullptr;  // the source's encoding (reuse), or null (direct slicing)
+  // Its encoded_edge_ends (transfer_contours.h), or null: then looked up in each member's faces.
+  const Buffer<uint32_t>* edge_ends = nullptr;
   SliceOptions slicing;              // direct slicing's thickness and z_start
   uint64_t range_budget_bytes = 0;
 };
