@@ -2,6 +2,7 @@
 
     scripts/python examples/family.py --layer-thickness H --out DIR [--printer ID] [--antialiasing]
                                       [--format EXT] [--direct] [--verify] [--keep-contours]
+                                      [--plates [--spacing MM] [--placements FILE]]
                                       MESH0 MESH1 ...
 
 Default: slices MESH0 once with encoding, then for each member MESH1 ...: loads it, transfers
@@ -14,6 +15,15 @@ masks (min_similarity 1 and max_grey_difference 0 mean identical). Prints one JS
 "seconds", "output"[, "min_similarity", "max_grey_difference"]}, ...]}; a member's seconds cover
 loading it, transferring or slicing it and writing its .sl1. A progress bar goes to a terminal's
 stderr.
+
+--plates: the lab's job instead, many members per print: MESH1 ... are arranged on build plates
+of the printer (footprints --spacing mm apart, 2 by default, and from the display's edges,
+turned about z where that packs more), one print file per plate DIR/plate_<k>.sl1 with its top
+view DIR/plate_<k>_layout.png, and DIR/plates.json, the placements (docs/formats.md);
+--placements FILE places them as that file says instead. By reuse of MESH0's slicing, or
+--direct; --verify compares each plate with direct slicing. Prints {"source", "members",
+"seconds", "arrange_seconds", "plates": [{"output", "layout", "members", "area_used"[,
+"min_similarity", "max_grey_difference"]}, ...]}.
 """
 import argparse
 import json
@@ -51,6 +61,10 @@ def main():
                     help="print file: sl1 (the default), sl1s, goo, or png (a folder of PNG images)")
     ap.add_argument("--text", action="store_true",
                     help="write text .enc/.ctr instead of binary .srb (encoding, kept contours)")
+    ap.add_argument("--plates", action="store_true",
+                    help="arrange the members on build plates: one print file per plate, plus plates.json")
+    ap.add_argument("--spacing", type=float, default=2.0, help="--plates: spacing between members in mm")
+    ap.add_argument("--placements", help="--plates: a placements file to use instead of arranging")
     ap.add_argument("meshes", nargs="+", metavar="MESH", help="the sliced mesh, then its family members")
     args = ap.parse_args()
     if args.layer_thickness <= 0:
@@ -66,13 +80,22 @@ def main():
         profile["antialiasing"] = True
     if args.gamma is not None:
         profile["gamma"] = args.gamma
+    if (args.placements or args.spacing != 2.0) and not args.plates:
+        ap.error("--spacing and --placements go with --plates")
+    if args.plates and args.keep_contours:
+        ap.error("--keep-contours is for one print file per member, not --plates")
     try:
         sr.load()
-        result = sr.family(args.meshes[0], args.meshes[1:], args.layer_thickness, args.out,
-                           profile=profile, binary=not args.text,
-                           extension="" if args.format == "png" else "." + args.format,
-                           progress=progress_bar if sys.stderr.isatty() else None,
-                           direct=args.direct, verify=args.verify, keep_contours=args.keep_contours)
+        bar = progress_bar if sys.stderr.isatty() else None
+        extension = "" if args.format == "png" else "." + args.format
+        if args.plates:
+            result = sr.plates(args.meshes[0], args.meshes[1:], args.layer_thickness, args.out, profile=profile,
+                               progress=bar, direct=args.direct, verify=args.verify, spacing_mm=args.spacing,
+                               placements=args.placements, extension=extension)
+        else:
+            result = sr.family(args.meshes[0], args.meshes[1:], args.layer_thickness, args.out,
+                               profile=profile, binary=not args.text, extension=extension, progress=bar,
+                               direct=args.direct, verify=args.verify, keep_contours=args.keep_contours)
     except Exception as e:  # pymeshlab.PyMeshLabException, OSError, RuntimeError, ValueError
         if sys.stderr.isatty():
             sys.stderr.write("\n")

@@ -145,6 +145,83 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     return {"source": str(source), "seconds": time.perf_counter() - start, "targets": results}
 
 
+
+def plates(source, targets, layer_thickness, out, profile=None, progress=None, direct=False, verify=False,
+           spacing_mm=2.0, placements=None, extension=".sl1"):
+    """The lab's job: the targets arranged on build plates of the printer (make_plate_job), one
+    print file per plate, out/plate_<k><extension> (".sl1", ".sl1s", ".goo", or "" for folders of
+    PNG images), its top view out/plate_<k>_layout.png, and out/plates.json, the placements
+    (docs/formats.md, "Placements file").
+
+    Default: slices source once with encoding (out/<source stem>_enc.srb) and transfers it onto
+    every placed target (exact); direct=True slices every target directly instead, from the
+    lowest vertex of all targets (the family's members sit on one build plate, the source's).
+    placements: a placements file to use instead of arranging (its members named by file name).
+    verify=True: also makes each plate by direct slicing from out/plates.json into
+    out/plate.direct_<k><extension> and compares (min_similarity 1 and max_grey_difference 0 mean
+    identical); not counted in "seconds".
+    Returns {"source", "members", "seconds", "arrange_seconds", "plates": [{"output", "layout",
+    "members", "area_used"[, "min_similarity", "max_grey_difference"]}, ...]}; "seconds" covers
+    loading the targets, arranging, transferring or slicing and writing every plate (not slicing
+    the source)."""
+    for path in [source, *targets]:
+        if not Path(path).is_file():
+            raise FileNotFoundError(f"mesh file not found: {path}")
+    pymeshlab = load()
+    profile = profile or {}
+    out = Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    steps, step = 2 + (1 if verify else 0), 0
+
+    def tick(text):
+        nonlocal step
+        if progress:
+            progress(step, steps, text)
+        step += 1
+
+    encoding = ""
+    if not direct:
+        tick(f"slicing {Path(source).name}")
+        ms = pymeshlab.MeshSet()
+        _load_mesh(ms, source)
+        encoding = str(out / (Path(source).stem + "_enc.srb"))
+        ms.apply_filter("slice_mesh_with_encoding", layer_thickness=layer_thickness, contour_file="",
+                        encoding_file=encoding, file_format=1)
+        del ms
+    tick(f"{len(targets)} members onto plates")
+    start = time.perf_counter()
+    ms = pymeshlab.MeshSet()
+    for t in targets:
+        _load_mesh(ms, t)
+    summary = out / "plates.json"
+    r = ms.apply_filter("make_plate_job", encoding_file=encoding, layer_thickness=layer_thickness,
+                        spacing_mm=spacing_mm, placements_file=str(placements or ""),
+                        placements_output=str(summary), output_path=str(out / f"plate{extension}"), **profile)
+    seconds = time.perf_counter() - start
+    written = json.loads(summary.read_text())
+    result = {"source": str(source), "members": r["members"], "seconds": seconds,
+              "arrange_seconds": r["arrange_seconds"], "plates": []}
+    for plate in written["plates"]:
+        output = plate["output"]
+        result["plates"].append({"output": output, "members": [m["name"] for m in plate["members"]],
+                                 "area_used": plate["area_used"],
+                                 "layout": str(Path(output).with_suffix("")) + "_layout.png"})
+    if verify:
+        tick("verifying every plate against direct slicing")
+        ms.apply_filter("make_plate_job", encoding_file="", layer_thickness=layer_thickness,
+                        spacing_mm=spacing_mm, placements_file=str(summary), placements_output="",
+                        output_path=str(out / f"plate.direct{extension}"), **profile)
+        for k, plate in enumerate(result["plates"], 1):
+            check = out / f"plate.direct_{k}{extension}"
+            c = ms.apply_filter("compare_mask_stacks", stack_a=plate["output"], stack_b=str(check), report_file="")
+            plate.update(min_similarity=c["min_similarity"], max_grey_difference=c["max_grey_difference"])
+    del ms
+    if not direct:
+        pymeshlab.MeshSet().apply_filter("free_cached_memory")
+    if progress:
+        progress(steps, steps, "done")
+    return result
+
 if __name__ == "__main__":
     load()
     print(json.dumps({"plugin": str(PLUGIN), "loaded": True}))

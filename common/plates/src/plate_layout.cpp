@@ -1,6 +1,7 @@
 #include "slicereuse/plates/plate_layout.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstring>
@@ -72,7 +73,8 @@ void write_plate_layout(const std::string& path, const std::vector<Mesh>& placed
     throw Error(format("plate layout: %g x %g pixels is not within 1..20000 pixels a side", w, h));
   Image img{int(w), int(h), std::vector<uint8_t>(size_t(w) * size_t(h), kPaper)};
   const int scale = std::max(1, std::min(img.width, img.height) / 150);
-  // Member by member: footprint on the image's pixels, its outline, its name.
+  // Every member's footprint on the image's pixels and its outline, then the names on top.
+  std::vector<std::array<int, 2>> centre;
   for (size_t m = 0; m < placed.size(); ++m) {
     const Footprint f = mesh_footprint(placed[m], 0, px);
     const int ox = int(std::lround((f.x0 - platform.x0) / px)), oy = int(std::lround((f.y0 - platform.y0) / px));
@@ -83,8 +85,9 @@ void write_plate_layout(const std::string& path, const std::vector<Mesh>& placed
         const bool edge = !cell(i - 1, j) || !cell(i + 1, j) || !cell(i, j - 1) || !cell(i, j + 1);
         img.set(ox + i, img.height - 1 - (oy + j), edge ? kInk : kFill);
       }
-    draw_text(img, names[m], ox + f.width / 2, img.height - 1 - (oy + f.height / 2), scale);
+    centre.push_back({ox + f.width / 2, img.height - 1 - (oy + f.height / 2)});
   }
+  for (size_t m = 0; m < placed.size(); ++m) draw_text(img, names[m], centre[m][0], centre[m][1], scale);
   for (int x = 0; x < img.width; ++x) {
     img.set(x, 0, kInk);
     img.set(x, img.height - 1, kInk);

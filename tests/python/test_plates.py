@@ -1,0 +1,134 @@
+"""Make Plate Job (issue #17) in both hosts: a plate's masks equal, pixel for pixel, the union of
+its members' own masks, each member made alone on its placement (direct slicing of the placed
+member), binary and anti-aliased; reuse equals direct slicing per plate; the placements file
+written is read back (the same plates from it); family.py --plates. pymeshlab (2025, double)
+and meshlabserver (2020, float)."""
+import json
+import struct
+import subprocess
+import zlib
+
+import numpy as np
+import pytest
+
+import slicereuse_pymeshlab as sr
+from conftest import ROOT, THICKNESS
+from test_hosts import _run, meshlabserver  # noqa: F401 (fixture)
+
+
+def png_pixels(data):
+    """The grey pixels of one of our mask PNGs (1- or 8-bit grey, no row filter) as a height x
+    width array, 1-bit pixels widened to 0/255."""
+    assert data[:8] == b"\x89PNG\r\n\x1a\n"
+    pos, idat, width = 8, b"", 0
+    while pos < len(data):
+        n, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + n]
+        if kind == b"IHDR":
+            width, height, bits, colour = struct.unpack(">IIBB", body[:10])
+            assert colour == 0 and bits in (1, 8)
+        elif kind == b"IDAT":
+            idat += body
+        pos += 12 + n
+    rows = np.frombuffer(zlib.decompress(idat), np.uint8).reshape(height, -1)
+    assert not rows[:, 0].any(), "row filter"
+    if bits == 8:
+        return rows[:, 1:]
+    return np.unpackbits(rows[:, 1:], axis=1)[:, :width] * np.uint8(255)
+
+
+def stack(path):
+    """A mask stack's layers: a folder of layerNNNNN.png, as one layers x height x width array."""
+    return np.stack([png_pixels(p.read_bytes()) for p in sorted(path.glob("layer*.png"))])
+
+
+def union(stacks):
+    """The union of member stacks (each ends where it ends); no pixel may be lit by two."""
+    out = np.zeros((max(len(s) for s in stacks),) + stacks[0].shape[1:], np.uint8)
+    for s in stacks:
+        part = out[:len(s)]
+        assert not (part.astype(bool) & s.astype(bool)).any(), "two members light one pixel"
+        part |= s
+    return out
+
+
+def one_member_placements(written, plate, member):
+    """A placements file that puts one member of `written` where it sat, alone."""
+    m = written["plates"][plate]["members"][member]
+    return {**written, "plates": [{"plate": 1, "area_used": 0, "members": [m]}]}
+
+
+@pytest.mark.parametrize("antialiasing", [False, True], ids=["binary", "antialiased"])
+def test_plate_is_the_union_of_its_members_placed_alone(pymeshlab, make_family, tmp_path, antialiasing):
+    members = make_family("arch", 6, z_change="band")
+    ms = pymeshlab.MeshSet()
+    ms.load_new_mesh(str(members[0]))
+    ms.apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS, contour_file="",
+                    encoding_file=str(tmp_path / "s.srb"))
+    ms = pymeshlab.MeshSet()
+    for m in members[1:]:
+        ms.load_new_mesh(str(m))
+    r = ms.apply_filter("make_plate_job", encoding_file=str(tmp_path / "s.srb"), output_path=str(tmp_path / "reuse"),
+                        placements_output=str(tmp_path / "plates.json"), antialiasing=antialiasing)
+    written = json.loads((tmp_path / "plates.json").read_text())
+    assert r["plates"] == len(written["plates"]) >= 1 and r["members"] == 5
+    assert r["transferred_layers"] > 0 and r["resliced_layers"] > 0  # the band's layers
+    placed = sorted(m["name"] for p in written["plates"] for m in p["members"])
+    assert placed == sorted(m.name for m in members[1:])
+    # Direct slicing from the file written: the same plates, equal to reuse.
+    d = ms.apply_filter("make_plate_job", placements_file=str(tmp_path / "plates.json"),
+                        output_path=str(tmp_path / "direct"), antialiasing=antialiasing)
+    assert d["plates"] == r["plates"] and d["transferred_layers"] == 0
+    for k, plate in enumerate(written["plates"], 1):
+        assert plate["output"] == str(tmp_path / f"reuse_{k}")
+        reuse, direct = stack(tmp_path / f"reuse_{k}"), stack(tmp_path / f"direct_{k}")
+        assert np.array_equal(reuse, direct)
+        # Each member alone on its placement, in a set of its own.
+        alone = []
+        for i, m in enumerate(plate["members"]):
+            f = tmp_path / f"alone_{k}_{i}.json"
+            f.write_text(json.dumps(one_member_placements(written, k - 1, i)))
+            one = pymeshlab.MeshSet()
+            one.load_new_mesh(str(next(p for p in members if p.name == m["name"])))
+            one.apply_filter("make_plate_job", placements_file=str(f), output_path=str(tmp_path / f"alone_{k}_{i}"),
+                             antialiasing=antialiasing)
+            alone.append(stack(tmp_path / f"alone_{k}_{i}_1"))
+        assert np.array_equal(reuse, union(alone)) and reuse.any()
+        assert bool(((reuse > 0) & (reuse < 255)).any()) == antialiasing
+
+
+def test_meshlabserver_plate_by_reuse_equals_direct_and_reads_its_placements(meshlabserver, make_family, tmp_path):
+    """The float host: the example script arranges and makes the plates by reuse; the same plates
+    from the placements file it wrote, sliced directly, have identical masks."""
+    members = make_family("arch", 5, z_change="band")
+    slice_ = ("slice.mlx", {"layer_thickness": THICKNESS, "contour_file": "", "encoding_file": tmp_path / "s.srb"})
+    _run(meshlabserver, tmp_path, [members[0]], [slice_])
+    plate = {"encoding_file": tmp_path / "s.srb", "placements_output": tmp_path / "plates.json",
+             "output_path": tmp_path / "reuse.sl1", "printer": 5}
+    direct = {"encoding_file": "", "placements_file": tmp_path / "plates.json", "placements_output": "",
+              "output_path": tmp_path / "direct.sl1", "printer": 5}
+    results = _run(meshlabserver, tmp_path, members[1:], [("plate_job.mlx", plate), ("plate_job.mlx", direct)])
+    (_, r), (_, d) = results
+    assert r["members"] == d["members"] == 4 and r["plates"] == d["plates"] >= 1
+    assert r["transferred_layers"] > 0 and d["transferred_layers"] == 0
+    compares = [("compare.mlx", {"stack_a": tmp_path / f"reuse_{k}.sl1", "stack_b": tmp_path / f"direct_{k}.sl1",
+                                 "report_file": ""}) for k in range(1, r["plates"] + 1)]
+    for _, c in _run(meshlabserver, tmp_path, [members[1]], compares):
+        assert c["min_similarity"] == 1.0 and c["max_grey_difference"] == 0, c
+    assert (tmp_path / "reuse_1_layout.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_family_py_plates_verifies_every_plate(make_family, tmp_path):
+    members = make_family("arch", 8, z_change="band")
+    run = subprocess.run([str(ROOT / "scripts" / "python"), str(ROOT / "examples" / "family.py"), "--plates",
+                          "--verify", "--layer-thickness", str(THICKNESS), "--printer", "prusa_sl1s_speed",
+                          "--out", str(tmp_path)] + [str(m) for m in members],
+                         capture_output=True, text=True, check=True)
+    result = json.loads(run.stdout)
+    assert result["members"] == 7
+    assert sum(len(p["members"]) for p in result["plates"]) == 7
+    for p in result["plates"]:
+        assert p["min_similarity"] == 1.0 and p["max_grey_difference"] == 0, p
+        assert p["output"].endswith(".sl1") and (tmp_path / p["layout"]).is_file()
+    written = json.loads((tmp_path / "plates.json").read_text())
+    assert [[m["name"] for m in p["members"]] for p in written["plates"]] == [p["members"] for p in result["plates"]]
