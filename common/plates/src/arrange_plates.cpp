@@ -60,10 +60,12 @@ struct PlateGrid {
   PlateGrid(int w, int h) : width(w), height(h), last_held(size_t(w) * size_t(h), -1) {}
 
   // The smallest x' >= x at which pose could sit in row y without conflict from the runs tested
-  // so far: x itself when it is free.
-  int first_free_from(const Pose& p, int x, int y) const {
-    const int m = p.margin;
-    for (int dj = 0; dj + 1 < int(p.near.row_begin.size()); ++dj) {
+  // so far: x itself when it is free. Rows are tested from *start_row on, wrapping around, and
+  // *start_row is left at the row that conflicted: the next position usually conflicts there too.
+  int first_free_from(const Pose& p, int x, int y, int* start_row) const {
+    const int m = p.margin, rows = int(p.near.row_begin.size()) - 1;
+    for (int n = 0; n < rows; ++n) {
+      const int dj = (*start_row + n) % rows;
       const int row = y - m + dj;
       if (row < 0 || row >= height) continue;
       const int* held = last_held.data() + size_t(row) * width;
@@ -71,7 +73,10 @@ struct PlateGrid {
         const int lo = std::max(0, x - m + p.near.lo[r]), hi = std::min(width - 1, x - m + p.near.hi[r]);
         if (lo > hi) continue;
         const int q = held[hi];
-        if (q >= lo) return q - (p.near.lo[r] - m) + 1;  // the run starts past q from there on
+        if (q >= lo) {
+          *start_row = dj;
+          return q - (p.near.lo[r] - m) + 1;  // the run starts past q from there on
+        }
       }
     }
     return x;
@@ -102,10 +107,13 @@ Spot best_spot(const PlateGrid& g, const std::vector<Pose>& poses) {
   for (size_t k = 0; k < poses.size(); ++k) {
     const Pose& p = poses[k];
     const int w = p.footprint.width, h = p.footprint.height;
+    // A plate whose free cells are fewer than the footprint's has no room for it.
+    if (size_t(g.width) * size_t(g.height) - g.cells < p.cells) continue;
+    int start_row = 0;
     for (int y = 0; y + h <= g.height && y + h <= best_top; ++y) {
       int x = 0;
       while (x + w <= g.width) {
-        const int next = g.first_free_from(p, x, y);
+        const int next = g.first_free_from(p, x, y, &start_row);
         if (next == x) break;
         x = next;
       }
