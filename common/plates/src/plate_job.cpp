@@ -108,12 +108,20 @@ Slices plate_range(const std::vector<Mesh>& placed, const PlateJobOptions& o, co
     const size_t e = std::min(b, own[m]);
     const size_t te = std::min(e, Le);  // the member's layers the encoding has
     if (a < te) {
-      const Sub& sub = sub_to(te);
       TransferStats ts;
       const TransferOptions exact(TransferMode::Exact, false);
-      pieces.push_back({o.edge_ends ? transfer_contours(sub.enc, sub.ends, placed[m], exact, &ts, mp)
-                                    : transfer_contours(sub.enc, placed[m], exact, &ts, mp),
-                        a});
+      if (a == 0 && te == Le && own[m] == Le) {
+        // The whole encoding, and the member has exactly its layers: transferred as it is (a
+        // transfer's planes run to the member's top, here the encoding's last), with no copy.
+        pieces.push_back({o.edge_ends ? transfer_contours(*o.encoding, *o.edge_ends, placed[m], exact, &ts, mp)
+                                      : transfer_contours(*o.encoding, placed[m], exact, &ts, mp),
+                          a});
+      } else {
+        const Sub& sub = sub_to(te);
+        pieces.push_back({o.edge_ends ? transfer_contours(sub.enc, sub.ends, placed[m], exact, &ts, mp)
+                                      : transfer_contours(sub.enc, placed[m], exact, &ts, mp),
+                          a});
+      }
       st.transferred_layers += ts.transferred_layers;
       st.resliced_layers += ts.resliced_layers;
     }
@@ -124,6 +132,13 @@ Slices plate_range(const std::vector<Mesh>& placed, const PlateJobOptions& o, co
       pieces.push_back({slice_planes(placed[m], {planes.begin() + long(d), planes.begin() + long(e)}, mp, false), d});
       st.resliced_layers += e - d;
     }
+  }
+  if (pieces.size() == 1 && pieces[0].first == a && pieces[0].s.layers() == b - a) {
+    // One member fills the range (a plate of one member): its layers are the plate's, uncopied.
+    Slices s = std::move(pieces[0].s);
+    s.z_start = st.z_start + double(a) * st.thickness;
+    s.thickness = st.thickness;
+    return s;
   }
   return merge_layers(pieces, planes, a, b, st.z_start, st.thickness);
 }
