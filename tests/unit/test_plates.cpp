@@ -21,6 +21,7 @@
 #include "slicereuse/plates/arrange_plates.h"
 #include "slicereuse/plates/footprint.h"
 #include "slicereuse/plates/placement.h"
+#include "slicereuse/plates/plate_file_names.h"
 #include "slicereuse/plates/placements_file.h"
 #include "slicereuse/plates/plate_job.h"
 #include "slicereuse/slicing/slice_layers.h"
@@ -265,6 +266,20 @@ TEST(ArrangePlates, RefusesBadOptions) {
   o.spacing_mm = 30;
   EXPECT_NE(test::error_of([&] { arrange_plates(s.pointers(), s.names, platform, o); }).find("leaves no room"),
             std::string::npos);
+  Members empty = s;
+  empty.meshes.back().F.clear();
+  EXPECT_NE(test::error_of([&] { arrange_plates(empty.pointers(), empty.names, platform, {}); }).find("member 'ball': "),
+            std::string::npos);
+}
+
+TEST(PlateFileNames, NumberThePatternAndPutTheLayoutBeside) {
+  EXPECT_EQ(plate_file_name("out/plate.sl1", 2), "out/plate_2.sl1");
+  EXPECT_EQ(plate_file_name("out/plate.direct.sl1s", 1), "out/plate.direct_1.sl1s");
+  EXPECT_EQ(plate_file_name("out/masks", 3), "out/masks_3");
+  EXPECT_EQ(plate_file_name("out/masks/", 3), "out/masks_3");
+  EXPECT_EQ(plate_file_name("out.d/masks", 1), "out.d/masks_1");
+  EXPECT_EQ(plate_layout_file_name("out/plate_2.sl1"), "out/plate_2_layout.png");
+  EXPECT_EQ(plate_layout_file_name("out/masks_3"), "out/masks_3_layout.png");
 }
 
 class PlacementsFileTest : public test::TempFolderTest {};

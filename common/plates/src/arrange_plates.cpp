@@ -157,9 +157,15 @@ Arrangement arrange_plates(const std::vector<const Mesh*>& members, const std::v
   std::vector<double> thetas;
   for (int k = 0; k * o.rotation_step_deg < 360 - 1e-9; ++k) thetas.push_back(k * o.rotation_step_deg);
 
-  // Every member must fit an empty plate at some rotation; refused before anything is placed.
+  // Every member must be a mesh and fit an empty plate at some rotation; refused before
+  // anything is placed.
   const size_t n = members.size();
   for (size_t m = 0; m < n; ++m) {
+    try {
+      validate_mesh(*members[m]);
+    } catch (const Error& e) {
+      throw Error("member '" + names[m] + "': " + e.what());
+    }
     bool fits = false;
     for (double theta : thetas) {
       const FootprintExtent e = footprint_extent(*members[m], theta, o.cell_mm);

@@ -85,9 +85,11 @@ class Parser {
     } else if (*p_ == '"') {
       v.type = JsonValue::Type::String;
       v.text = string();
-    } else if (word("true") || word("false")) {
+    } else if (word("true")) {
       v.type = JsonValue::Type::Bool;
-      v.boolean = p_[-1] == 'e' && p_[-2] == 'u';
+      v.boolean = true;
+    } else if (word("false")) {
+      v.type = JsonValue::Type::Bool;
     } else if (word("null")) {
     } else {
       v.type = JsonValue::Type::Number;

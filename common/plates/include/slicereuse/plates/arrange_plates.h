@@ -17,7 +17,8 @@
 // Output: per member its placement (placement.h) and plate; per plate its members in placing
 // order and the area used: the members' footprint cells' area over the platform's area.
 // Throws Error naming the member, its size and the usable platform's size when a member fits an
-// empty plate at no rotation, and for bad options (naming the option) or a platform narrower
+// empty plate at no rotation, naming the member when it is no valid mesh (validate_mesh), and for
+// bad options (naming the option) or a platform narrower
 // than twice the spacing.
 #include <string>
 #include <vector>
