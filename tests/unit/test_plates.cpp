@@ -184,8 +184,10 @@ void expect_valid(const Members& s, const Arrangement& a, const Platform& platfo
 TEST(Footprint, CoversEveryProjectedTriangleAndNotTheBoundingBox) {
   const test::FamilyOptions o = small_arch();
   const Mesh arch = test::make_family_base(o);
-  for (double theta : {0.0, 15.0, 90.0}) {
-    const Footprint f = mesh_footprint(arch, theta, 0.25);
+  for (double theta : {0.0, 15.0, 90.0, 195.0, 270.0}) {
+    // At 180 degrees and more, also the reflection of the footprint 180 degrees before.
+    const Footprint f = theta < 180 ? mesh_footprint(arch, theta, 0.25)
+                                    : half_turn_footprint(mesh_footprint(arch, theta - 180, 0.25));
     // Every projected vertex of the turned arch lies in a marked cell.
     const Turn turn = turn_of(theta);
     for (size_t v = 0; v < arch.vertices(); ++v) {

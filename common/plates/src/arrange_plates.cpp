@@ -194,19 +194,38 @@ Arrangement arrange_plates(const std::vector<const Mesh*>& members, const std::v
   for (size_t done = 0; done < n; ++done) {
     const size_t m = order[done];
     std::vector<Pose> poses(thetas.size());
+    // A rotation 180 degrees past one already rasterized reflects its footprint instead.
+    std::vector<size_t> half_turn_of(thetas.size(), SIZE_MAX), rasterized;
+    for (size_t k = 0; k < thetas.size(); ++k) {
+      for (size_t r : rasterized)
+        if (thetas[k] == thetas[r] + 180) half_turn_of[k] = r;
+      if (half_turn_of[k] == SIZE_MAX) rasterized.push_back(k);
+    }
+    auto pose = [&](size_t k) {
+      Pose& p = poses[k];
+      p.theta_deg = thetas[k];
+      const Footprint near = dilate_footprint(p.footprint, o.spacing_mm);
+      p.marked = runs_of(p.footprint);
+      p.near = runs_of(near);
+      p.margin = near.margin;
+      p.cells = p.footprint.marked();
+    };
+    const Progress member_progress = sub_progress(progress, double(done) / double(n), double(done + 1) / double(n));
+    parallel_blocks(
+        rasterized.size(),
+        [&](size_t i) {
+          poses[rasterized[i]].footprint = mesh_footprint(*members[m], thetas[rasterized[i]], o.cell_mm);
+          pose(rasterized[i]);
+        },
+        sub_progress(member_progress, 0, 0.5), "arranging");
     parallel_blocks(
         thetas.size(),
         [&](size_t k) {
-          Pose& p = poses[k];
-          p.theta_deg = thetas[k];
-          p.footprint = mesh_footprint(*members[m], thetas[k], o.cell_mm);
-          const Footprint near = dilate_footprint(p.footprint, o.spacing_mm);
-          p.marked = runs_of(p.footprint);
-          p.near = runs_of(near);
-          p.margin = near.margin;
-          p.cells = p.footprint.marked();
+          if (half_turn_of[k] == SIZE_MAX) return;
+          poses[k].footprint = half_turn_footprint(poses[half_turn_of[k]].footprint);
+          pose(k);
         },
-        sub_progress(progress, double(done) / double(n), double(done + 1) / double(n)), "arranging");
+        sub_progress(member_progress, 0.5, 1), "arranging");
     // Poses that cannot fit an empty plate are no candidates anywhere.
     poses.erase(std::remove_if(poses.begin(), poses.end(),
                                [&](const Pose& p) { return p.footprint.width > grid_w || p.footprint.height > grid_h; }),

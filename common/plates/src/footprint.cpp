@@ -113,6 +113,14 @@ Footprint mesh_footprint(const Mesh& mesh, double theta_deg, double cell_mm) {
   return f;
 }
 
+Footprint half_turn_footprint(const Footprint& f) {
+  Footprint h = f;
+  h.x0 = -(f.x0 + f.width * f.cell);
+  h.y0 = -(f.y0 + f.height * f.cell);
+  std::reverse(h.cells.begin(), h.cells.end());  // (i, j) -> (width-1-i, height-1-j)
+  return h;
+}
+
 Footprint dilate_footprint(const Footprint& f, double spacing_mm) {
   if (!(spacing_mm >= 0) || !std::isfinite(spacing_mm))
     throw Error(format("spacing %g mm is not a number >= 0", spacing_mm));

@@ -7,8 +7,13 @@
 // outline of the union of the triangles, holes and concave bays kept, not a bounding box).
 // Cell (i, j) covers [x0 + i cell, x0 + (i+1) cell] x [y0 + j cell, y0 + (j+1) cell], row-major
 // in cells[j * width + i]; (x0, y0) lies kFootprintSlack_mm below the turned mesh's smallest x
-// and y, and the slack is also added around every triangle, so that the placed mesh (turned
+// and y (at least that: half_turn_footprint), and the slack is also added around every triangle, so that the placed mesh (turned
 // and moved, whose coordinates round differently by some 1e-13 mm) stays inside the cells too.
+// half_turn_footprint(f): the footprint of the same mesh turned 180 degrees further, without
+// rasterizing it again: the cells point-reflected, on the reflected grid (its (x0, y0) is the
+// reflection of f's far corner, so it lies at or below the turned mesh's smallest x and y by at
+// least the slack). Turned again by turn_of(theta + 180), the mesh's coordinates differ from the
+// reflected ones by rounding only (some 1e-16 of the coordinates), well inside the slack.
 // footprint_extent: the grid's width and height in cells alone, from the vertices (what
 // mesh_footprint would give), for the fit checks that need no cells.
 // dilate_footprint(f, spacing_mm): the cells whose box comes closer than spacing_mm to a box of a
@@ -42,6 +47,8 @@ struct FootprintExtent {
 FootprintExtent footprint_extent(const Mesh& mesh, double theta_deg, double cell_mm);
 
 Footprint mesh_footprint(const Mesh& mesh, double theta_deg, double cell_mm);
+
+Footprint half_turn_footprint(const Footprint& f);
 
 Footprint dilate_footprint(const Footprint& f, double spacing_mm);
 
