@@ -9,14 +9,9 @@
 #include "slicereuse/slicing/layer_planes.h"
 #include "slicereuse/transfer/transfer_contours.h"
 #include "slicereuse/util/error.h"
-#include "slicereuse/util/format.h"
 
 namespace slicereuse {
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
 
 // Layers [a, b) of an encoding, as an encoding of their own planes: its thickness is 0, so a
 // transfer cuts the target on exactly these planes (transfer_layers.h, target_planes) instead
@@ -190,7 +185,7 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
                        const auto t = std::chrono::steady_clock::now();
                        Slices s = plate_range(placed, o, planes, own, first[i], first[i + 1], st, range_progress);
                        st.points += s.points();
-                       st.slicing_seconds += seconds_since(t);
+                       st.slicing_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
                        return s;
                      }};
   st.masks = export_masks(chunks, profile, output_path, progress);
