@@ -1,6 +1,6 @@
 #pragma once
-// compare_mask_stacks: the method's similarity S of two mask stacks (folders of PNGs or .sl1
-// archives), layer by layer: S = pixels equal in both images / all pixels, so S = 1 means the
+// compare_mask_stacks: the method's similarity S of two mask stacks (folders of PNGs, .sl1
+// archives or .goo files, in any pairing), layer by layer: S = pixels equal in both images / all pixels, so S = 1 means the
 // same masks.
 #include <cstddef>
 #include <cstdint>
