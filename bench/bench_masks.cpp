@@ -1,9 +1,12 @@
 // Mask benchmark: slices a generated family member (default: the arch, 14,484 layers at 1 um)
-// in memory (not timed), centres it on a 1024x768 display at 75 um, then times
+// in memory (not timed), centres it on a 1024x768 display at 75 um (--printer ID: a preset's
+// display and job instead, e.g. elegoo_saturn_3_ultra; --aa still chooses the masks), then times
 //   rasterize  - every layer into memory, all cores, no encoding
 //   folder     - export_masks to <out>/masks (one PNG per layer)
 //   sl1        - export_masks to <out>/masks.sl1
 //   compare    - compare_mask_stacks(folder, sl1), which must report S = 1 and grey difference 0
+//   goo        - (only when asked for) export_masks to <out>/masks.goo (Elegoo), and, with the
+//                sl1 step, compare_mask_stacks(sl1, goo), which must report S = 1 (not timed)
 //   layer      - (only when asked for) every layer on one thread, as an .sl1 encodes it:
 //                rasterize_layer_runs, then encode_mask_png of the runs (anti-aliased: also
 //                rasterize_layer_antialiased_png); microseconds per layer of each in thread CPU
@@ -12,7 +15,7 @@
 //   deflate    - (only when asked for) the PNG image data of every 8th layer (filter byte and
 //                8-bit row, as in an .sl1) deflated on one thread by RunDeflater and by
 //                libdeflate at levels 1, 3 and 6: seconds and total compressed size each
-// Prints the median seconds over runs and layers per second. --aa 1 for anti-aliased masks
+// Prints the median seconds over runs and layers per second, and each file's size. --aa 1 for anti-aliased masks
 // (--gamma G, default 1), --aa 0,1 for both in the same run, taking turns within each run, and
 // their sl1 time ratio; their archives are <out>/masks.sl1 and <out>/masks_aa.sl1.
 // --reference R (an .sl1 or folder made by another build, e.g. before a change) compares the
@@ -20,8 +23,8 @@
 // differing pixels and grey difference 0; --aa-reference R the anti-aliased one.
 // Usage: bench_masks [--shape arch] [--faces 545000] [--height 14.484] [--thickness 0.001]
 //                    [--runs 3] [--out /tmp/slicereuse-bench] [--aa 0|1|0,1] [--gamma 1]
-//                    [--reference R] [--aa-reference R]
-//                    [--steps rasterize,folder,sl1,compare[,layer][,deflate]]
+//                    [--reference R] [--aa-reference R] [--printer ID]
+//                    [--steps rasterize,folder,sl1,compare[,goo][,layer][,deflate]]
 #include <libdeflate.h>
 #include <omp.h>
 #include <sys/resource.h>
@@ -43,6 +46,7 @@
 #include "slicereuse/masks/deflate_runs.h"
 #include "slicereuse/masks/export_masks.h"
 #include "slicereuse/masks/mask_png.h"
+#include "slicereuse/masks/printer_presets.h"
 #include "slicereuse/masks/printer_profile.h"
 #include "slicereuse/masks/rasterize_layer.h"
 #include "slicereuse/slicing/slice_layers.h"
@@ -188,15 +192,15 @@ void time_layers(const Slices& s, const PrinterProfile& profile, int runs) {
 // One kind of mask the steps are run for, and what they measured.
 struct Mode {
   PrinterProfile profile;
-  std::string folder, sl1, reference;
-  std::vector<double> t_raster, t_folder, t_sl1, t_compare;
-  std::vector<double> c_raster, c_folder, c_sl1, c_compare;
+  std::string folder, sl1, goo, reference;
+  std::vector<double> t_raster, t_folder, t_sl1, t_compare, t_goo;
+  std::vector<double> c_raster, c_folder, c_sl1, c_compare, c_goo;
   StackComparison cmp;
   const char* name() const { return profile.antialiasing ? "anti-aliased" : "binary"; }
 };
 
 int main(int argc, char** argv) {
-  std::string aa = "0", steps = "rasterize,folder,sl1,compare", reference, aa_reference;
+  std::string aa = "0", steps = "rasterize,folder,sl1,compare", reference, aa_reference, printer;
   double gamma = 1;
   std::vector<char*> rest{argv[0]};
   for (int i = 1; i < argc; ++i) {
@@ -205,6 +209,7 @@ int main(int argc, char** argv) {
     else if (std::string(argv[i]) == "--steps" && i + 1 < argc) steps = argv[++i];
     else if (std::string(argv[i]) == "--reference" && i + 1 < argc) reference = argv[++i];
     else if (std::string(argv[i]) == "--aa-reference" && i + 1 < argc) aa_reference = argv[++i];
+    else if (std::string(argv[i]) == "--printer" && i + 1 < argc) printer = argv[++i];
     else rest.push_back(argv[i]);
   }
   BenchArgs args = parse_bench_args(int(rest.size()), rest.data());
@@ -225,18 +230,21 @@ int main(int argc, char** argv) {
   for (const char* kind : {"0", "1"}) {
     if (!wants(aa, kind)) continue;
     Mode m;
-    m.profile.offset_x_mm = -(lo[0] + hi[0]) / 2;  // 1024 x 768 at 75 um: 76.8 x 57.6 mm
+    if (!printer.empty()) m.profile = printer_preset(printer).profile;
+    m.profile.offset_x_mm = -(lo[0] + hi[0]) / 2;  // centred
     m.profile.offset_y_mm = -(lo[1] + hi[1]) / 2;
     m.profile.antialiasing = kind[0] == '1';
     m.profile.gamma = gamma;
     const std::string suffix = m.profile.antialiasing ? "_aa" : "";
     m.folder = args.out + "/masks" + suffix;
     m.sl1 = args.out + "/masks" + suffix + ".sl1";
+    m.goo = args.out + "/masks" + suffix + ".goo";
     m.reference = m.profile.antialiasing ? aa_reference : reference;
     modes.push_back(m);
   }
-  std::printf("shape %s, threads %d, %dx%d at %g um, extent %.2f x %.2f mm, gamma %g (anti-aliased)\n",
-              args.family.shape.c_str(), omp_get_max_threads(), modes[0].profile.width_px,
+  std::printf("shape %s, threads %d, %s%dx%d at %g um, extent %.2f x %.2f mm, gamma %g (anti-aliased)\n",
+              args.family.shape.c_str(), omp_get_max_threads(), printer.empty() ? "" : (printer + " ").c_str(),
+              modes[0].profile.width_px,
               modes[0].profile.height_px, modes[0].profile.pixel_size_x_um, hi[0] - lo[0], hi[1] - lo[1], gamma);
   std::printf("%8zu layers, %zu contours, %zu points\n", s.layers(), s.contours(), s.points());
   for (const Mode& m : modes) {
@@ -263,6 +271,7 @@ int main(int argc, char** argv) {
       if (wants(steps, "folder"))
         m.t_folder.push_back(seconds_of([&] { export_masks(s, profile, m.folder); }, m.c_folder));
       if (wants(steps, "sl1")) m.t_sl1.push_back(seconds_of([&] { export_masks(s, profile, m.sl1); }, m.c_sl1));
+      if (wants(steps, "goo")) m.t_goo.push_back(seconds_of([&] { export_masks(s, profile, m.goo); }, m.c_goo));
       if (compare)
         m.t_compare.push_back(seconds_of([&] { m.cmp = compare_mask_stacks(m.folder, m.sl1, ""); }, m.c_compare));
     }
@@ -275,6 +284,12 @@ int main(int argc, char** argv) {
                   static_cast<unsigned long long>(m.cmp.differing_pixels), m.cmp.max_grey_difference);
       ok = ok && m.cmp.min_similarity == 1 && m.cmp.max_grey_difference == 0;
     }
+    if (!m.t_goo.empty() && !m.t_sl1.empty()) {
+      const StackComparison c = compare_mask_stacks(m.sl1, m.goo, "");
+      std::printf("goo against sl1: min S %.9g, %llu differing pixels\n", c.min_similarity,
+                  static_cast<unsigned long long>(c.differing_pixels));
+      ok = ok && c.min_similarity == 1 && c.differing_pixels == 0;
+    }
     std::printf("%-10s %9s %12s %12s   wall seconds per run\n", "step", "seconds", "layers/s", "cpu-seconds");
     struct Row {
       const char* name;
@@ -284,7 +299,8 @@ int main(int argc, char** argv) {
     const Row rows[] = {{"rasterize", m.t_raster, m.c_raster},
                         {"folder", m.t_folder, m.c_folder},
                         {"sl1", m.t_sl1, m.c_sl1},
-                        {"compare", m.t_compare, m.c_compare}};
+                        {"compare", m.t_compare, m.c_compare},
+                        {"goo", m.t_goo, m.c_goo}};
     for (const Row& row : rows) {
       if (row.wall.empty()) continue;
       const double med = median_of(row.wall);
@@ -298,6 +314,7 @@ int main(int argc, char** argv) {
       std::printf("folder %.1f MB\n", double(bytes) / 1e6);
     }
     if (!m.t_sl1.empty()) std::printf("sl1 %.1f MB\n", double(std::filesystem::file_size(m.sl1)) / 1e6);
+    if (!m.t_goo.empty()) std::printf("goo %.1f MB\n", double(std::filesystem::file_size(m.goo)) / 1e6);
     if (!m.reference.empty() && !m.t_sl1.empty()) {
       const StackComparison ref = compare_mask_stacks(m.reference, m.sl1, "");
       // S is taken on the binary threshold: only a grey difference of 0 means every level kept.

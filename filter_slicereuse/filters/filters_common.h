@@ -51,7 +51,7 @@ void log_display_warning(Host& host, const char* filter, const MaskExportStats& 
                          const PrinterProfile& profile);
 void add_display_figures(const MaskExportStats& stats, Result& result);
 // What an empty output_path of the mask filters is told.
-inline const char* const kMaskOutputWhenEmpty = "choose a folder, or a .sl1 or .sl1s file";
+inline const char* const kMaskOutputWhenEmpty = "choose a folder, or a .sl1, .sl1s or .goo file";
 
 // The slicing options of the layer_thickness and z_start parameters (z_start_option: at or
 // below kLowestVertexZStartAtOrBelow, the mesh's lowest vertex).

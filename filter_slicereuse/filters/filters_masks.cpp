@@ -1,5 +1,5 @@
-// "Export Mask Images": a contour file (or the current contour layer) to a folder of PNG masks
-// or an .sl1 archive; no mesh involved.
+// "Export Mask Images": a contour file (or the current contour layer) to a folder of PNG masks,
+// an .sl1 archive or an Elegoo .goo file; no mesh involved.
 #include "filter_params.h"
 #include "filters_common.h"
 #include "slicereuse/formats/slice_files.h"
@@ -20,10 +20,11 @@ ParamList<ExportParams> export_params() {
   l.file(&ExportParams::contour_file, ParamType::FileOpen, "contour_file", "Contour file", "*.ctr *.srb", nullptr,
          "Contour file written by Slice Mesh with Encoding or Transfer Slicing to Mesh. Empty: the current layer, a "
          "contour file opened with File > Import Mesh (.ctr, .srb, .cli).")
-      .file(&ExportParams::output_path, ParamType::FileSave, "output_path", "Output folder, .sl1 or .sl1s", "*.sl1 *.sl1s",
+      .file(&ExportParams::output_path, ParamType::FileSave, "output_path", "Output folder, .sl1, .sl1s or .goo",
+            "*.sl1 *.sl1s *.goo",
             kMaskOutputWhenEmpty,
             "A folder for PNG images (created if missing; its parent must exist), or a file name ending in .sl1 or "
-            ".sl1s for a Prusa SL1/SL1S archive.")
+            ".sl1s for a Prusa SL1/SL1S archive, or in .goo for an Elegoo print file (landscape displays).")
       .include(&ExportParams::printer, printer_params());
   return l;
 }
@@ -64,7 +65,8 @@ FilterSpec export_masks_filter() {
   const std::string description = std::string(
       "<p>Rasterizes the layers of a contour file into one mask image per layer "
       "for mask-projection (DLP/LCD) printers: a folder of PNG images "
-      "(NNNNN.png), or a Prusa SL1/SL1S archive when the output path ends in .sl1 or .sl1s.</p>"
+      "(NNNNN.png), a Prusa SL1/SL1S archive when the output path ends in .sl1 or .sl1s, or an Elegoo "
+      ".goo print file (e.g. for the Saturn 3 Ultra) when it ends in .goo.</p>"
       "<p>Choose the printer by name (its display, orientation, mirrors and exposure as its "
       "own slicer writes them), or custom and give them. A binary pixel is lit when its centre lies "
       "inside the layer by the nonzero winding rule of the closed contours; with anti-aliasing a pixel's grey "

@@ -58,11 +58,11 @@ ParamList<PlateJobParams> plate_job_params() {
             "*.json", nullptr,
             "Also write the plates' placements, members and area used here (JSON). Empty (the default): not "
             "written.")
-      .file(&PlateJobParams::output_path, ParamType::FileSave, "output_path", "Output .sl1, .sl1s or folder",
-            "*.sl1 *.sl1s", kMaskOutputWhenEmpty,
-            "One print file per plate, numbered: plate.sl1 gives plate_1.sl1, plate_2.sl1, ...; a folder name "
-            "gives folders name_1, name_2, ... of PNG images. Each plate's layout picture is written beside it "
-            "(plate_1_layout.png).")
+      .file(&PlateJobParams::output_path, ParamType::FileSave, "output_path", "Output .sl1, .sl1s, .goo or folder",
+            "*.sl1 *.sl1s *.goo", kMaskOutputWhenEmpty,
+            "One print file per plate, numbered: plate.sl1 gives plate_1.sl1, plate_2.sl1, ... (.sl1 or .sl1s: "
+            "Prusa archives, .goo: Elegoo print files); a folder name gives folders name_1, name_2, ... of PNG "
+            "images. Each plate's layout picture is written beside it (plate_1_layout.png).")
       .include(&PlateJobParams::printer, printer_params());
   return l;
 }

@@ -35,10 +35,11 @@ ParamList<PrintJobParams> print_job_params() {
       .file(&PrintJobParams::contour_file, ParamType::FileSave, "contour_file", "Contour file", "*.ctr *.srb", nullptr,
             "Also write the layers' contour points here (text .ctr unless the name ends in .srb). Empty (the "
             "default): no contour file.")
-      .file(&PrintJobParams::output_path, ParamType::FileSave, "output_path", "Output .sl1, .sl1s or folder", "*.sl1 *.sl1s",
+      .file(&PrintJobParams::output_path, ParamType::FileSave, "output_path", "Output .sl1, .sl1s, .goo or folder",
+            "*.sl1 *.sl1s *.goo",
             kMaskOutputWhenEmpty,
-            "A file name ending in .sl1 or .sl1s for a Prusa SL1/SL1S archive, or a folder for PNG images (created if missing; its "
-            "parent must exist).")
+            "A file name ending in .sl1 or .sl1s for a Prusa SL1/SL1S archive, or in .goo for an Elegoo print file "
+            "(landscape displays), or a folder for PNG images (created if missing; its parent must exist).")
       .include(&PrintJobParams::printer, printer_params());
   return l;
 }

@@ -59,6 +59,31 @@ def test_reuse_and_direct_write_identical_print_jobs(make_family, tmp_path, shap
     assert sorted(p.name for p in (tmp_path / "direct").iterdir()) == sorted(f"{s}.sl1" for s in stems)
 
 
+@pytest.mark.parametrize("printer, extension", [("prusa_sl1s_speed", ".sl1s"), ("prusa_sl1", ".sl1"),
+                                                ("anycubic_photon_mono_x", ".sl1")])
+def test_anti_aliased_print_jobs_of_a_printer_by_reuse_equal_direct_slicing(make_family, tmp_path, printer,
+                                                                            extension):
+    """A real printer's anti-aliased print files by reuse equal direct slicing's byte for byte on
+    every layer, and carry grey levels."""
+    members = make_family("arch", 3)
+    profile = {"printer": printer, "antialiasing": True}
+    reused = sr.family(members[0], members[1:], THICKNESS, tmp_path / "reuse", profile=profile, verify=True,
+                       extension=extension)
+    direct = sr.family(members[0], members[1:], THICKNESS, tmp_path / "direct", profile=profile, direct=True,
+                       extension=extension)
+    for r, d in zip(reused["targets"], direct["targets"]):
+        assert r["output"].endswith(extension)
+        assert r["min_similarity"] == 1.0 and r["max_grey_difference"] == 0, r
+        images = layer_pngs(r["output"])
+        assert len(images) == r["layers"] == 80
+        assert images == layer_pngs(d["output"])
+        middle = images[sorted(images)[40]]
+        assert middle[24:26] == bytes([8, 0])  # 8-bit grey
+        with zipfile.ZipFile(r["output"]) as z:
+            assert f"printer_model = {'SL1S' if printer == 'prusa_sl1s_speed' else 'SL1' if printer == 'prusa_sl1' else ''}\n" \
+                in z.read("prusaslicer.ini").decode()
+
+
 def test_keep_contours_writes_each_members_contour_file(pymeshlab, make_family, tmp_path):
     members = make_family("arch", 3)
     result = sr.family(members[0], members[1:], THICKNESS, tmp_path, keep_contours=True)

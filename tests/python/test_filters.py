@@ -145,6 +145,24 @@ def test_a_printer_preset_by_name_makes_its_print_file(sliced, pymeshlab):
     assert not (tmp / "q.sl1s").exists()
 
 
+def test_an_elegoo_goo_file_holds_the_same_masks(sliced):
+    # Export Mask Images into .goo: the format's version, magic and ending; Compare Mask Stacks
+    # reads it against the .sl1 of the same layers: every mask equal.
+    ms, _, _, r, tmp, _ = sliced
+    profile = dict(width_px=256, height_px=192, pixel_size_x_um=300, pixel_size_y_um=300, antialiasing=True)
+    m = ms.apply_filter("export_mask_images", contour_file=str(tmp / "s.ctr"), output_path=str(tmp / "p.goo"),
+                        **profile)
+    assert m["layers"] == r["layers"]
+    data = (tmp / "p.goo").read_bytes()
+    assert data[:12] == b"V3.0\x07\x00\x00\x00DLP\x00"
+    assert data[-11:] == b"\x00\x00\x00\x07\x00\x00\x00DLP\x00"
+    assert struct.unpack(">IHH", data[195310:195318]) == (r["layers"], 256, 192)
+    ms.apply_filter("export_mask_images", contour_file=str(tmp / "s.ctr"), output_path=str(tmp / "p.sl1"),
+                    **profile)
+    c = ms.apply_filter("compare_mask_stacks", stack_a=str(tmp / "p.goo"), stack_b=str(tmp / "p.sl1"))
+    assert c["layers"] == r["layers"] and c["min_similarity"] == 1.0 and c["differing_pixels"] == 0
+
+
 def test_masks_and_compare_results(sliced):
     ms, source, target, r, tmp, _ = sliced
     profile = dict(width_px=256, height_px=192, pixel_size_x_um=300, pixel_size_y_um=300)

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "error_of.h"
 #include "slicereuse/util/atomic_file.h"
 #include "slicereuse/util/error.h"
 #include "temp_folder.h"
@@ -132,6 +133,16 @@ TEST_F(AtomicOutputs, ZipArchiveWrittenByLibzipIntoAStagedFile) {
   EXPECT_EQ(zip_get_num_entries(z, 0), 1);
   zip_discard(z);
   EXPECT_EQ(listing(), std::vector<std::string>{"job.sl1"});
+}
+
+TEST_F(AtomicOutputs, WriteAtRewritesWhatWasWrittenAndGoesOnAtTheEnd) {
+  AtomicFile file(path("h.bin"));
+  file.write("0000body", 8);
+  file.write_at(1, "HE", 2);
+  file.write("tail", 4);
+  EXPECT_ERROR(file.write_at(10, "xyz", 3), "bytes 10..13 are not within the 12 bytes written");
+  file.commit();
+  EXPECT_EQ(slurp(path("h.bin")), "0HE0bodytail");
 }
 
 TEST_F(AtomicOutputs, ErrorsNameThePath) {

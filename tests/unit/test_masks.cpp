@@ -371,7 +371,7 @@ TEST_F(MaskFiles, Sl1ConfigCarriesTheResinVolumeSummedWhileTheLayersAreMade) {
 TEST_F(MaskFiles, ANonFinitePointIsRefusedAndNothingIsWritten) {
   Slices s = sample_stack();
   s.xyz[3 * (s.points() - 2) + 1] = std::nan("");
-  for (const char* name : {"/n.sl1", "/n"}) {
+  for (const char* name : {"/n.sl1", "/n.goo", "/n"}) {
     const std::string e = test::error_of([&] { export_masks(s, small_display(), dir + name); });
     EXPECT_NE(e.find("is not a finite number"), std::string::npos) << e;
     EXPECT_NE(e.find("layer 2"), std::string::npos) << e;

@@ -99,14 +99,14 @@ StackComparison compare_mask_stacks(const std::string& stack_a, const std::strin
         [&](size_t i) {
           thread_local MaskImage ia, ib;
           const size_t k = first + i;
-          decode_mask_png(bytes_a[i].data(), bytes_a[i].size(), a.layer_name(k), ia);
+          a.decode(k, bytes_a[i], ia);
           LayerSimilarity& l = result.layers[k];
           l.layer = k;
-          // Equal files hold equal images (e.g. reused and direct .sl1 layers, which the
-          // encoder writes byte for byte alike): one decode checks them, the second is skipped
-          // and every difference stays 0.
+          // Equal bytes hold equal images (e.g. reused and direct .sl1 or .goo layers, which the
+          // encoders write byte for byte alike; a PNG and a .goo layer never begin alike): one
+          // decode checks them, the second is skipped and every difference stays 0.
           if (bytes_a[i] != bytes_b[i]) {
-            decode_mask_png(bytes_b[i].data(), bytes_b[i].size(), b.layer_name(k), ib);
+            b.decode(k, bytes_b[i], ib);
             if (ia.width != ib.width || ia.height != ib.height)
               throw Error("mask images of layer " + std::to_string(k) + " differ in size: '" +
                           a.layer_name(k) + "' is " + size_text(ia) + ", '" + b.layer_name(k) +

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <chrono>
@@ -13,10 +12,14 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <omp.h>
 
+#include "goo_format.h"
+#include "goo_preview.h"
+#include "goo_writer.h"
 #include "mask_stack.h"
 #include "sl1_writer.h"
 #include "slicereuse/masks/export_masks.h"
@@ -36,16 +39,6 @@ namespace {
 // Folder output names its images layer00000.png, layer00001.png, ...
 const char* const FOLDER_PREFIX = "layer";
 const char* const PHASE = "writing mask images";
-
-// A Prusa archive: .sl1 (SL1) and .sl1s (SL1S) are the same format; PrusaSlicer names the file
-// after the printer.
-bool is_sl1(const std::string& path) {
-  const size_t dot = path.find_last_of("./");
-  if (dot == std::string::npos || path[dot] != '.') return false;
-  std::string ext = path.substr(dot);
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".sl1" || ext == ".sl1s";
-}
 
 // What export needs of a layer besides its image, found in the same visit to its points (hot in
 // cache for the rasterizer then), not in passes of their own over the whole stack: the closed
@@ -242,15 +235,15 @@ void export_folder(Stack& stack, const PrinterProfile& p, const std::string& fol
   }
 }
 
-// Encodes layers on all cores, a window ahead of write_sl1, which asks for them in order: range
-// by range, the next one made when write_sl1 first asks for one of its layers.
-// Always 8-bit: PrusaSlicer's SL1 import decodes only 8-bit greyscale PNGs (1-bit layers would
-// import as empty).
-class Sl1Layers {
+// Encodes layers on all cores, a window ahead of the archive writer (write_sl1, write_goo), which
+// asks for them in order: range by range, the next one made when the writer first asks for one
+// of its layers. encode(s, local, k, bytes) makes layer `local` of range s, layer k of the stack.
+class OrderedLayers {
  public:
-  Sl1Layers(Stack& stack, const PrinterProfile& p, StackSummary& summary, size_t& open_contours,
-            const Progress& progress)
-      : stack_(stack), p_(p), summary_(summary), open_contours_(open_contours), progress_(progress) {}
+  using Encode = std::function<void(const Slices& s, size_t local, size_t k, std::vector<uint8_t>& bytes)>;
+
+  OrderedLayers(Stack& stack, size_t& open_contours, const Progress& progress, Encode encode)
+      : stack_(stack), open_contours_(open_contours), progress_(progress), encode_(std::move(encode)) {}
 
   const std::vector<uint8_t>& operator()(size_t k) {
     if (!items_ || k >= stack_.end(range_)) next_range();
@@ -270,20 +263,51 @@ class Sl1Layers {
     const size_t first = stack_.begin(range_);
     items_ = std::make_unique<OrderedParallel>(
         s.layers(), size_t(16) * size_t(omp_get_max_threads()),
-        [this, &s, first](size_t local, std::vector<uint8_t>& png) {
-          encode_layer(s, local, first + local, p_, 8, png, summary_);
-        });
+        [this, &s, first](size_t local, std::vector<uint8_t>& bytes) { encode_(s, local, first + local, bytes); });
   }
 
   Stack& stack_;
-  const PrinterProfile& p_;
-  StackSummary& summary_;
   size_t& open_contours_;
   const Progress& progress_;
+  const Encode encode_;
   Progress range_progress_;
   size_t range_ = 0;
   std::unique_ptr<OrderedParallel> items_;
 };
+
+// An .sl1: always 8-bit PNGs, since PrusaSlicer's SL1 import decodes only 8-bit greyscale PNGs
+// (1-bit layers would import as empty).
+void export_sl1(Stack& stack, const PrinterProfile& p, const std::string& path, StackSummary& summary,
+                size_t& open_contours, const Progress& progress) {
+  OrderedLayers encoder(stack, open_contours, progress,
+                        [&](const Slices& s, size_t local, size_t k, std::vector<uint8_t>& png) {
+                          encode_layer(s, local, k, p, 8, png, summary);
+                        });
+  write_sl1(path, Sl1Job{p, stack.layers(), stack.thickness(), [&] { return summary.used_material_ml(stack.thickness()); }},
+            std::ref(encoder));
+}
+
+// A .goo: each layer's record straight from its runs, which also go into the previews.
+void export_goo(Stack& stack, const PrinterProfile& p, const std::string& path, StackSummary& summary,
+                size_t& open_contours, const Progress& progress) {
+  const GooJob job{p, stack.layers(), stack.thickness()};
+  GooFootprint footprint(p);
+  OrderedLayers encoder(stack, open_contours, progress,
+                        [&](const Slices& s, size_t local, size_t k, std::vector<uint8_t>& record) {
+                          summary.add(k, summarize_layer(s, local));
+                          thread_local MaskRuns runs;
+                          if (p.antialiasing)
+                            rasterize_layer_antialiased_runs(s, local, p, runs);
+                          else
+                            rasterize_layer_runs(s, local, p, runs);
+                          footprint.add(runs);
+                          encode_goo_layer(job, k, runs, record);
+                        });
+  write_goo(path, job, std::ref(encoder), [&] {
+    return GooSummary{summary.used_material_ml(stack.thickness()), footprint.preview(kGooSmallPreview),
+                      footprint.preview(kGooBigPreview)};
+  });
+}
 
 MaskExportStats export_stack(Stack& stack, const PrinterProfile& profile, const std::string& output_path,
                              const Progress& progress) {
@@ -294,12 +318,13 @@ MaskExportStats export_stack(Stack& stack, const PrinterProfile& profile, const 
   report_progress(progress, 0, PHASE);
   StackSummary summary(stack.layers());
   MaskExportStats stats;
-  if (is_sl1(output_path)) {
-    Sl1Layers encoder(stack, profile, summary, stats.ignored_open_contours, progress);
-    write_sl1(output_path,
-              Sl1Job{profile, stack.layers(), stack.thickness(),
-                     [&] { return summary.used_material_ml(stack.thickness()); }},
-              std::ref(encoder));
+  // The output's kind: ".sl1" and ".sl1s" are the same format (PrusaSlicer names the file after
+  // the printer), anything but those and ".goo" a folder.
+  const std::string ext = lower_extension(output_path);
+  if (ext == ".sl1" || ext == ".sl1s") {
+    export_sl1(stack, profile, output_path, summary, stats.ignored_open_contours, progress);
+  } else if (ext == ".goo") {
+    export_goo(stack, profile, output_path, summary, stats.ignored_open_contours, progress);
   } else {
     export_folder(stack, profile, output_path, summary, stats.ignored_open_contours, progress);
   }

@@ -1,5 +1,7 @@
 #include "mask_stack.h"
 
+#include <fcntl.h>
+#include <unistd.h>
 #include <zip.h>
 
 #include <algorithm>
@@ -10,6 +12,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "goo_format.h"
 #include "slicereuse/util/error.h"
 
 namespace slicereuse {
@@ -64,6 +67,14 @@ void place(const std::string& stack, std::vector<std::pair<long long, std::strin
   }
 }
 
+// A file that begins as a .goo does (its magic at bytes 4..11), whatever its name.
+bool starts_as_goo(const std::string& path) {
+  std::unique_ptr<FILE, int (*)(FILE*)> f(std::fopen(path.c_str(), "rb"), std::fclose);
+  uint8_t head[12];
+  return f && std::fread(head, 1, sizeof head, f.get()) == sizeof head &&
+         std::memcmp(head + kGooMagicAt, kGooMagic, sizeof kGooMagic) == 0;
+}
+
 std::string zip_message(int code) {
   zip_error_t e;
   zip_error_init_with_code(&e, code);
@@ -73,6 +84,14 @@ std::string zip_message(int code) {
 }
 
 }  // namespace
+
+std::string lower_extension(const std::string& path) {
+  const size_t dot = path.find_last_of("./");
+  if (dot == std::string::npos || path[dot] != '.') return "";
+  std::string ext = path.substr(dot);
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
 
 std::string mask_layer_file_name(const std::string& prefix, size_t k) {
   char digits[32];
@@ -96,10 +115,28 @@ MaskStack::MaskStack(const std::string& path) : path_(path) {
     place(path, found, names_, nullptr, found_entry);
     return;
   }
+  if (lower_extension(path) == ".goo" || starts_as_goo(path)) {
+    goo_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (goo_ < 0) throw Error("cannot open '" + path + "': " + std::strerror(errno));
+    try {
+      goo_index_ = index_goo_file(goo_, path);
+    } catch (...) {
+      ::close(goo_);
+      goo_ = -1;
+      throw;
+    }
+    if (goo_index_.data_at.empty()) {
+      ::close(goo_);
+      goo_ = -1;
+      throw Error("mask stack '" + path + "' holds no layers");
+    }
+    names_.resize(goo_index_.data_at.size());
+    return;
+  }
   int code = 0;
   zip_ = zip_open(path.c_str(), ZIP_RDONLY, &code);
   if (!zip_)
-    throw Error("mask stack '" + path + "' is neither a folder nor a readable .sl1 archive: " +
+    throw Error("mask stack '" + path + "' is neither a folder nor a readable .sl1 archive nor a .goo file: " +
                 zip_message(code));
   const zip_int64_t n = zip_get_num_entries(zip_, 0);
   for (zip_int64_t i = 0; i < n; ++i) {
@@ -121,13 +158,26 @@ MaskStack::MaskStack(const std::string& path) : path_(path) {
 
 MaskStack::~MaskStack() {
   if (zip_) zip_discard(zip_);
+  if (goo_ >= 0) ::close(goo_);
 }
 
 std::string MaskStack::layer_name(size_t k) const {
+  if (goo_ >= 0) return path_ + ": layer " + std::to_string(k);
   return zip_ ? path_ + ":" + names_[k] : (fs::path(path_) / names_[k]).string();
 }
 
+void MaskStack::decode(size_t k, const std::vector<uint8_t>& bytes, MaskImage& out) const {
+  if (goo_ >= 0)
+    decode_goo_layer(bytes.data(), bytes.size(), goo_index_.width, goo_index_.height, layer_name(k), out);
+  else
+    decode_mask_png(bytes.data(), bytes.size(), layer_name(k), out);
+}
+
 void MaskStack::read(size_t k, std::vector<uint8_t>& bytes) {
+  if (goo_ >= 0) {
+    read_goo_layer(goo_, goo_index_, k, layer_name(k), bytes);
+    return;
+  }
   if (!zip_) {
     const std::string file = layer_name(k);
     std::unique_ptr<FILE, int (*)(FILE*)> f(std::fopen(file.c_str(), "rb"), std::fclose);

@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "mask_stack.h"
+#include "print_estimate.h"
 #include "slicereuse/util/atomic_file.h"
 #include "slicereuse/util/error.h"
 
@@ -30,23 +31,6 @@ std::string utc_timestamp(std::time_t now) {
   return buf;
 }
 
-// The printer's estimate: the first layers at the first exposure, the faded ones stepping down
-// linearly to the normal one, the rest at it, and one tilt (or lift) per layer.
-double print_seconds(const Sl1Job& j) {
-  const PrinterProfile& p = j.profile;
-  double s = double(j.layers) * p.layer_move_s;
-  for (size_t k = 0; k < j.layers; ++k) {
-    const size_t faded = k < size_t(p.bottom_layers) ? 0 : k - size_t(p.bottom_layers);
-    if (k < size_t(p.bottom_layers))
-      s += p.bottom_exposure_s;
-    else if (faded < size_t(p.faded_layers))
-      s += p.bottom_exposure_s + (p.exposure_s - p.bottom_exposure_s) * double(faded + 1) / double(p.faded_layers + 1);
-    else
-      s += p.exposure_s;
-  }
-  return s;
-}
-
 std::string config_ini(const Sl1Job& j, const std::string& job, std::time_t now, double used_material_ml) {
   const PrinterProfile& p = j.profile;
   return "action = print\n"
@@ -62,7 +46,7 @@ std::string config_ini(const Sl1Job& j, const std::string& job, std::time_t now,
          "numFast = " + std::to_string(j.layers) + "\n"
          "numSlow = 0\n"
          "printProfile = slicereuse\n"
-         "printTime = " + num(std::round(print_seconds(j))) + "\n"
+         "printTime = " + num(std::round(print_seconds(p, j.layers))) + "\n"
          "printerModel = " + p.printer_model + "\n"
          "printerProfile = slicereuse\n"
          "printerVariant = default\n"
@@ -74,7 +58,6 @@ std::string prusaslicer_ini(const Sl1Job& j) {
   const PrinterProfile& p = j.profile;
   const std::string w = num(p.width_px * p.pixel_size_x_um / 1000);
   const std::string h = num(p.height_px * p.pixel_size_y_um / 1000);
-  const double height = std::max(150.0, std::ceil(double(j.layers) * j.layer_height_mm));
   return "bed_shape = 0x0," + w + "x0," + w + "x" + h + ",0x" + h + "\n"
          "display_height = " + h + "\n"
          "display_mirror_x = " + std::to_string(int(p.mirror_x)) + "\n"
@@ -89,7 +72,7 @@ std::string prusaslicer_ini(const Sl1Job& j) {
          "initial_exposure_time = " + num(p.bottom_exposure_s) + "\n"
          "initial_layer_height = " + num(j.layer_height_mm) + "\n"
          "layer_height = " + num(j.layer_height_mm) + "\n"
-         "max_print_height = " + num(height) + "\n"
+         "max_print_height = " + num(print_height_mm(j.layers, j.layer_height_mm)) + "\n"
          "printer_model = " + p.printer_model + "\n"
          "printer_settings_id = slicereuse\n"
          "printer_technology = SLA\n"

@@ -171,6 +171,17 @@ void AtomicFile::write(const void* data, size_t n) {
   if (n && std::fwrite(data, 1, n, file_) != n) throw Error("cannot write '" + path_ + "': " + why());
 }
 
+void AtomicFile::write_at(uint64_t offset, const void* data, size_t n) {
+  if (!file_) throw Error("cannot write '" + path_ + "': file already closed");
+  const off_t end = ::ftello(file_);
+  if (end < 0 || offset > uint64_t(end) || n > uint64_t(end) - offset)
+    throw Error("cannot write '" + path_ + "': bytes " + std::to_string(offset) + ".." + std::to_string(offset + n) +
+                " are not within the " + std::to_string(end) + " bytes written");
+  if (::fseeko(file_, off_t(offset), SEEK_SET) != 0 || (n && std::fwrite(data, 1, n, file_) != n) ||
+      ::fseeko(file_, end, SEEK_SET) != 0)
+    throw Error("cannot write '" + path_ + "': " + why());
+}
+
 void AtomicFile::commit() {
   if (!file_) throw Error("cannot commit '" + path_ + "': file already closed");
   FILE* f = file_;

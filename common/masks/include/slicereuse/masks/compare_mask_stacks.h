@@ -1,6 +1,7 @@
 #pragma once
-// compare_mask_stacks: two mask stacks (folders of PNGs or .sl1 archives) -> per layer the
-// method's similarity S and the grey differences, and the same figures over the whole stack.
+// compare_mask_stacks: two mask stacks (folders of PNGs, .sl1 archives or .goo files, in any
+// pairing) -> per layer the method's similarity S and the grey differences, and the same
+// figures over the whole stack.
 //
 // Masks are 8-bit grey (binary masks 0 or 255, anti-aliased ones any level). For pixels a, b
 // of the same place in layer k of the two stacks:

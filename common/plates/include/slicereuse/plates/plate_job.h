@@ -18,7 +18,7 @@
 // Memory: the layers are made and exported a range at a time (SliceChunks, export_masks.h), a
 // range holding at most options.range_budget_bytes of contour points of all members (0: the
 // whole plate at once); every range equals the same layers made whole.
-// Output: the print file of the profile (export_masks: PNG folder, .sl1, .sl1s), atomic, and
+// Output: the print file of the profile (export_masks: PNG folder, .sl1, .sl1s, .goo), atomic, and
 // the figures. Throws Error for no members, an encoding without a layer thickness, or whatever
 // transfer, slicing or export refuse.
 #include <cstdint>

@@ -15,10 +15,13 @@
 //   A staged file gets the mode of the file it replaces, else 0666 minus the umask. A staged
 //   folder replaces a missing or empty folder in one rename; into a folder that has entries, its
 //   entries are renamed one by one (other entries there are kept).
-// AtomicFile: one file written through a stdio stream, a StagedOutputs of one file.
+// AtomicFile: one file written through a stdio stream, a StagedOutputs of one file. write_at
+//   rewrites bytes already written (a header whose figures are known only at the end) and then
+//   goes on writing where it was.
 // check_writable: refuses early an output path whose folder cannot take it.
 // Folder paths may end in '/' ("out/masks/" is the folder "out/masks" in the folder "out").
 // All throw Error naming the path (and the system's reason) on failure.
+#include <cstdint>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -53,6 +56,9 @@ class AtomicFile {
 
   // Writes n bytes; throws Error naming the path on a short write.
   void write(const void* data, size_t n);
+  // Writes n bytes at offset, which with n must lie within what was written; throws Error
+  // naming the path when it does not.
+  void write_at(uint64_t offset, const void* data, size_t n);
   // Flushes, closes and renames onto the final path.
   void commit();
 
