@@ -82,9 +82,12 @@ Footprint mesh_footprint(const Mesh& mesh, double theta_deg, double cell_mm) {
     const double lo_y = std::min({py[0], py[1], py[2]}) - slack, hi_y = std::max({py[0], py[1], py[2]}) + slack;
     const int j0 = std::clamp(int(std::floor((lo_y - f.y0) / cell_mm)), 0, f.height - 1);
     const int j1 = std::clamp(int(std::floor((hi_y - f.y0) / cell_mm)), 0, f.height - 1);
-    if (j0 == j1) {  // within one row of cells (most triangles of a fine mesh): its x extent
-      const int i0 = column(std::min({px[0], px[1], px[2]}) - slack), i1 = column(std::max({px[0], px[1], px[2]}) + slack);
-      std::fill(f.cells.begin() + long(j0) * f.width + i0, f.cells.begin() + long(j0) * f.width + i1 + 1, 1);
+    const int i0 = column(std::min({px[0], px[1], px[2]}) - slack), i1 = column(std::max({px[0], px[1], px[2]}) + slack);
+    if (j1 - j0 <= 1 && i1 - i0 <= 1) {
+      // Within 2 x 2 cells (most triangles of a fine mesh): the cells of its bounding box, at
+      // most one cell more than it touches, instead of clipping it to each row.
+      for (int j = j0; j <= j1; ++j)
+        for (int i = i0; i <= i1; ++i) f.cells[size_t(j) * f.width + i] = 1;
       continue;
     }
     for (int j = j0; j <= j1; ++j) {

@@ -4,7 +4,9 @@
 // mesh_footprint(mesh, theta_deg, cell_mm): the mesh turned by theta_deg about z (turn_of,
 // placement.h), its triangles projected onto x-y, and every grid cell that a projected triangle
 // touches marked: conservative, so every point of the projection lies in a marked cell (the
-// outline of the union of the triangles, holes and concave bays kept, not a bounding box).
+// outline of the union of the triangles, holes and concave bays kept, not a bounding box). A
+// triangle within 2 x 2 cells marks its bounding box's cells (at most one cell more than it
+// touches; most triangles of a fine mesh, which then cost no clipping).
 // Cell (i, j) covers [x0 + i cell, x0 + (i+1) cell] x [y0 + j cell, y0 + (j+1) cell], row-major
 // in cells[j * width + i]; (x0, y0) lies kFootprintSlack_mm below the turned mesh's smallest x
 // and y (at least that: half_turn_footprint), and the slack is also added around every triangle, so that the placed mesh (turned
