@@ -127,10 +127,10 @@ int main(int argc, char** argv) {
     t = std::chrono::steady_clock::now();
     const PlateJobStats d = export_plate(placed, direct, profile, out + ".direct" + preset.extension);
     const double direct_s = since(t);
-    std::printf("%-6zu %8zu %8zu %12zu %10.2f %10.2f %6.2f   (reuse: %zu member layers transferred, %zu sliced; "
-                "%zu ranges)\n",
-                k + 1, placed.size(), r.layers, r.points, reuse_s, direct_s, direct_s / reuse_s, r.transferred_layers,
-                r.resliced_layers, r.ranges);
+    std::printf("%-6zu %8zu %8zu %12zu %10.2f %10.2f %6.2f   (transfer %.2f s, slicing %.2f s; reuse: %zu member "
+                "layers transferred, %zu sliced; %zu ranges)\n",
+                k + 1, placed.size(), r.layers, r.points, reuse_s, direct_s, direct_s / reuse_s, r.slicing_seconds,
+                d.slicing_seconds, r.transferred_layers, r.resliced_layers, r.ranges);
     if (d.points != r.points) std::printf("  points differ: reuse %zu, direct %zu\n", r.points, d.points);
   }
   // PrusaSlicer's options for the same display (bench_plates.sh).
