@@ -19,6 +19,8 @@
 
 #include "mask_stack.h"
 #include "sl1_writer.h"
+#include "thumbnail_png.h"
+#include "top_view.h"
 #include "slicereuse/masks/export_masks.h"
 #include "slicereuse/masks/mask_png.h"
 #include "slicereuse/masks/printer_profile.h"
@@ -245,12 +247,13 @@ void export_folder(Stack& stack, const PrinterProfile& p, const std::string& fol
 // Encodes layers on all cores, a window ahead of write_sl1, which asks for them in order: range
 // by range, the next one made when write_sl1 first asks for one of its layers.
 // Always 8-bit: PrusaSlicer's SL1 import decodes only 8-bit greyscale PNGs (1-bit layers would
-// import as empty).
+// import as empty). Each layer is also drawn into the top view the thumbnails are made from.
 class Sl1Layers {
  public:
-  Sl1Layers(Stack& stack, const PrinterProfile& p, StackSummary& summary, size_t& open_contours,
-            const Progress& progress)
-      : stack_(stack), p_(p), summary_(summary), open_contours_(open_contours), progress_(progress) {}
+  Sl1Layers(Stack& stack, const PrinterProfile& p, StackSummary& summary, TopView& top_view,
+            size_t& open_contours, const Progress& progress)
+      : stack_(stack), p_(p), summary_(summary), top_view_(top_view), open_contours_(open_contours),
+        progress_(progress) {}
 
   const std::vector<uint8_t>& operator()(size_t k) {
     if (!items_ || k >= stack_.end(range_)) next_range();
@@ -272,12 +275,14 @@ class Sl1Layers {
         s.layers(), size_t(16) * size_t(omp_get_max_threads()),
         [this, &s, first](size_t local, std::vector<uint8_t>& png) {
           encode_layer(s, local, first + local, p_, 8, png, summary_);
+          top_view_.add(s, local, first + local);
         });
   }
 
   Stack& stack_;
   const PrinterProfile& p_;
   StackSummary& summary_;
+  TopView& top_view_;
   size_t& open_contours_;
   const Progress& progress_;
   Progress range_progress_;
@@ -295,10 +300,14 @@ MaskExportStats export_stack(Stack& stack, const PrinterProfile& profile, const 
   StackSummary summary(stack.layers());
   MaskExportStats stats;
   if (is_sl1(output_path)) {
-    Sl1Layers encoder(stack, profile, summary, stats.ignored_open_contours, progress);
+    TopView top_view(profile, stack.layers());
+    Sl1Layers encoder(stack, profile, summary, top_view, stats.ignored_open_contours, progress);
     write_sl1(output_path,
               Sl1Job{profile, stack.layers(), stack.thickness(),
-                     [&] { return summary.used_material_ml(stack.thickness()); }},
+                     [&] { return summary.used_material_ml(stack.thickness()); },
+                     [&](int width, int height, std::vector<uint8_t>& png) {
+                       thumbnail_png(top_view.finish(), width, height, png);
+                     }},
               std::ref(encoder));
   } else {
     export_folder(stack, profile, output_path, summary, stats.ignored_open_contours, progress);
