@@ -99,7 +99,8 @@ def similarity(a, b):
     """S of two .sl1 archives: 1 when every layer's PNG is the same bytes (cheap), otherwise
     compare_mask_stacks' smallest per-layer S."""
     with zipfile.ZipFile(a) as za, zipfile.ZipFile(b) as zb:
-        layers = lambda z: [z.read(n) for n in sorted(n for n in z.namelist() if n.endswith(".png"))]
+        # The layers: the PNGs at the root (the thumbnails are in thumbnail/).
+        layers = lambda z: [z.read(n) for n in sorted(n for n in z.namelist() if n.endswith(".png") and "/" not in n)]
         if layers(za) == layers(zb):
             return "1 (identical)"
     import slicereuse_pymeshlab as sr

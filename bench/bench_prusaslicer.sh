@@ -4,8 +4,8 @@
 # same display (1024x768 pixels at 75 um). PrusaSlicer runs its CLI (supports and pad off);
 # slicereuse runs meshlabserver with "Make Print Job" (direct slicing and masks, in memory),
 # start-up and mesh loading included. Prints the median seconds of each and the ratio.
-# Needs PrusaSlicer (apt-get install prusa-slicer), which scripts/setup does not install
-# (bench_family.sh runs this when it is there).
+# Needs PrusaSlicer (Debian's prusa-slicer, which scripts/setup installs; bench_family.sh runs
+# this when it is there).
 #   bench/bench_prusaslicer.sh [--faces N] [--thickness MM] [--runs R]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -40,8 +40,9 @@ ps=$(seconds prusa-slicer --export-sla --printer-technology SLA --layer-height "
   --initial-layer-height "$thickness" --display-pixels-x 1024 --display-pixels-y 768 --display-width 76.8 \
   --display-height 57.6 --display-orientation landscape --no-supports-enable --no-pad-enable -o ps.sl1 part.stl)
 ours=$(seconds "$root/scripts/meshlabserver" -i member_000.ply -s job.mlx)
-ps_layers=$(unzip -l ps.sl1 | grep -c '[0-9]\.png$')
-our_layers=$(unzip -l ours.sl1 | grep -c '[0-9]\.png$')
+# The layers: the numbered PNGs at the archive's root (ours also has thumbnail/*.png).
+ps_layers=$(unzip -Z1 ps.sl1 | grep -c '^[^/]*[0-9]\.png$')
+our_layers=$(unzip -Z1 ours.sl1 | grep -c '^[^/]*[0-9]\.png$')
 echo "part: arch, $faces faces, 14.484 mm; layers ${thickness} mm; .sl1 for 1024x768 at 75 um; median of $runs"
 printf "%-28s %8s %8s\n" "" layers seconds
 printf "%-28s %8s %8.2f\n" "PrusaSlicer $(prusa-slicer --help 2>/dev/null | grep -o 'PrusaSlicer-[0-9.]*' | head -n1)" "$ps_layers" "$ps"

@@ -263,7 +263,7 @@ TEST_F(FiltersThroughAFakeHost, EveryFilterRunsAndReturnsEveryFigureItLogs) {
   const FilterSpec& job_spec = spec_named("make_print_job");
   host.current = 1;
   const ParamValues job_values =
-      defaults(job_spec, {{"encoding_file", path("s.srb")}, {"output_path", path("t.sl1")}});
+      defaults(job_spec, {{"encoding_file", path("s.srb")}, {"output_path", path("job.sl1")}});
   const Result job = job_spec.run(job_values, host);
   std::set<std::string> job_keys = display;
   job_keys.insert({"layers", "points", "transferred_layers", "resliced_layers", "encoding_cached", "layer_ranges",
@@ -274,7 +274,7 @@ TEST_F(FiltersThroughAFakeHost, EveryFilterRunsAndReturnsEveryFigureItLogs) {
 
   const FilterSpec& compare_spec = spec_named("compare_mask_stacks");
   const Result compare = compare_spec.run(
-      defaults(compare_spec, {{"stack_a", path("t_masks")}, {"stack_b", path("t.sl1")}, {"report_file", path("c.csv")}}),
+      defaults(compare_spec, {{"stack_a", path("t_masks")}, {"stack_b", path("job.sl1")}, {"report_file", path("c.csv")}}),
       host);
   EXPECT_EQ(keys_of(compare),
             (std::set<std::string>{"layers", "min_similarity", "worst_layer", "differing_pixels", "max_grey_difference",

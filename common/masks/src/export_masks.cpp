@@ -22,6 +22,8 @@
 #include "goo_writer.h"
 #include "mask_stack.h"
 #include "sl1_writer.h"
+#include "thumbnail_png.h"
+#include "top_view.h"
 #include "slicereuse/masks/export_masks.h"
 #include "slicereuse/masks/mask_png.h"
 #include "slicereuse/masks/printer_profile.h"
@@ -276,14 +278,21 @@ class OrderedLayers {
 };
 
 // An .sl1: always 8-bit PNGs, since PrusaSlicer's SL1 import decodes only 8-bit greyscale PNGs
-// (1-bit layers would import as empty).
+// (1-bit layers would import as empty). Each layer is also drawn into the top view the
+// thumbnails are made from.
 void export_sl1(Stack& stack, const PrinterProfile& p, const std::string& path, StackSummary& summary,
                 size_t& open_contours, const Progress& progress) {
+  TopView top_view(p, stack.layers());
   OrderedLayers encoder(stack, open_contours, progress,
                         [&](const Slices& s, size_t local, size_t k, std::vector<uint8_t>& png) {
                           encode_layer(s, local, k, p, 8, png, summary);
+                          top_view.add(s, local, k);
                         });
-  write_sl1(path, Sl1Job{p, stack.layers(), stack.thickness(), [&] { return summary.used_material_ml(stack.thickness()); }},
+  write_sl1(path,
+            Sl1Job{p, stack.layers(), stack.thickness(), [&] { return summary.used_material_ml(stack.thickness()); },
+                   [&](int width, int height, std::vector<uint8_t>& png) {
+                     thumbnail_png(top_view.finish(), width, height, png);
+                   }},
             std::ref(encoder));
 }
 

@@ -3,8 +3,10 @@
 #include <zip.h>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <ctime>
 #include <exception>
@@ -18,9 +20,30 @@
 namespace slicereuse {
 namespace {
 
+// The shortest decimal that reads back as v, never with an exponent: the firmware's TOML reader
+// takes "1e-05" for a string, and a string for expTime or layerHeight is not used.
 std::string num(double v) {
-  char buf[32];
-  return std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
+  char buf[400];  // a finite double in fixed notation
+  return std::string(buf, std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed).ptr);
+}
+
+// The pictures PrusaSlicer writes into the archive for the SL1 and SL1S (their printer profiles'
+// thumbnails = 400x400,800x480), as thumbnail/thumbnail<W>x<H>.png.
+struct ThumbnailSize {
+  int width, height;
+};
+constexpr ThumbnailSize kThumbnails[] = {{400, 400}, {800, 480}};
+constexpr size_t kThumbnailCount = sizeof kThumbnails / sizeof kThumbnails[0];
+
+std::string thumbnail_entry(const ThumbnailSize& t) {
+  return "thumbnail/thumbnail" + std::to_string(t.width) + "x" + std::to_string(t.height) + ".png";
+}
+
+std::string thumbnails_setting() {
+  std::string list;
+  for (const ThumbnailSize& t : kThumbnails)
+    list += (list.empty() ? "" : ",") + std::to_string(t.width) + "x" + std::to_string(t.height);
+  return list;
 }
 
 std::string utc_timestamp(std::time_t now) {
@@ -58,7 +81,11 @@ std::string prusaslicer_ini(const Sl1Job& j) {
   const PrinterProfile& p = j.profile;
   const std::string w = num(p.width_px * p.pixel_size_x_um / 1000);
   const std::string h = num(p.height_px * p.pixel_size_y_um / 1000);
-  return "bed_shape = 0x0," + w + "x0," + w + "x" + h + ",0x" + h + "\n"
+  // Besides the display, the settings a PrusaSlicer profile would have to give these masks: no
+  // supports, pad, hollowing or size corrections (they are in the part already), so that a model
+  // imported with its profile and sliced again comes out the same.
+  return "absolute_correction = 0\n"
+         "bed_shape = 0x0," + w + "x0," + w + "x" + h + ",0x" + h + "\n"
          "display_height = " + h + "\n"
          "display_mirror_x = " + std::to_string(int(p.mirror_x)) + "\n"
          "display_mirror_y = " + std::to_string(int(p.mirror_y)) + "\n"
@@ -66,19 +93,27 @@ std::string prusaslicer_ini(const Sl1Job& j) {
          "display_pixels_x = " + std::to_string(p.width_px) + "\n"
          "display_pixels_y = " + std::to_string(p.height_px) + "\n"
          "display_width = " + w + "\n"
+         "elefant_foot_compensation = 0\n"
          "exposure_time = " + num(p.exposure_s) + "\n"
          "faded_layers = " + std::to_string(p.faded_layers) + "\n"
          "gamma_correction = " + num(p.antialiasing ? p.gamma : 0) + "\n"
+         "hollowing_enable = 0\n"
          "initial_exposure_time = " + num(p.bottom_exposure_s) + "\n"
          "initial_layer_height = " + num(j.layer_height_mm) + "\n"
          "layer_height = " + num(j.layer_height_mm) + "\n"
+         "material_correction = 1,1,1\n"
+         "material_print_speed = fast\n"
          "max_print_height = " + num(print_height_mm(j.layers, j.layer_height_mm)) + "\n"
+         "pad_enable = 0\n"
          "printer_model = " + p.printer_model + "\n"
          "printer_settings_id = slicereuse\n"
          "printer_technology = SLA\n"
          "printer_variant = default\n"
+         "relative_correction = 1,1\n"
          "sla_material_settings_id = slicereuse\n"
-         "sla_print_settings_id = slicereuse\n";
+         "sla_print_settings_id = slicereuse\n"
+         "supports_enable = 0\n"
+         "thumbnails = " + thumbnails_setting() + "\n";
 }
 
 struct ZipError {
@@ -154,6 +189,38 @@ std::string job_name(const std::string& path) {
   return name;
 }
 
+// The layers are the PNGs named <job>NNNNN.png, and each reader tells them from the thumbnails
+// its own way: PrusaSlicer's import skips every entry whose name contains "thumbnail" (in any
+// case), the firmware takes every PNG whose name starts with jobDir.
+void check_job_name(const std::string& path, const std::string& job) {
+  std::string lower = job;
+  for (char& c : lower) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (lower.find("thumbnail") != std::string::npos || thumbnail_entry(kThumbnails[0]).rfind(job, 0) == 0)
+    throw Error("cannot write '" + path + "': its layers would be named " + mask_layer_file_name(job, 0) +
+                ", ..., which the readers of the archive cannot tell from its thumbnails (PrusaSlicer's import "
+                "skips every entry whose name contains 'thumbnail', the printer takes every PNG whose name "
+                "starts with '" + job + "'): give the file another name");
+}
+
+// What the SL1 and SL1S firmware (Prusa's slafw, project config) would not print as written.
+void check_firmware_limits(const std::string& path, const Sl1Job& j) {
+  const PrinterProfile& p = j.profile;
+  if (p.printer_model != "SL1" && p.printer_model != "SL1S") return;
+  const std::string job = "cannot write '" + path + "' for the " + p.printer_model + ": ";
+  if (!(j.layer_height_mm >= 0.01))
+    throw Error(job + "its layer height " + num(j.layer_height_mm) +
+                " mm is under 0.01 mm, which the printer does not take (it would move 0.05 mm per layer)");
+  if (p.faded_layers < 2 || p.faded_layers > 200)
+    throw Error(job + "its " + std::to_string(p.faded_layers) +
+                " faded layers (numFade) are outside 2..200, which the printer would change");
+  if (!(p.exposure_s >= 0.1 && p.exposure_s <= 60))
+    throw Error(job + "its exposure time " + num(p.exposure_s) +
+                " s (expTime) is outside 0.1..60 s, which the printer would change");
+  if (!(p.bottom_exposure_s >= 0.1 && p.bottom_exposure_s <= 120))
+    throw Error(job + "its first layers' exposure time " + num(p.bottom_exposure_s) +
+                " s (expTimeFirst) is outside 0.1..120 s, which the printer would change");
+}
+
 void add_entry(zip_t* za, const std::string& name, zip_source_t* src, bool store,
                const std::string& path) {
   if (!src) throw Error("cannot write '" + path + "': " + zip_strerror(za));
@@ -171,19 +238,31 @@ void add_entry(zip_t* za, const std::string& name, zip_source_t* src, bool store
 void write_sl1(const std::string& path, const Sl1Job& job, const LayerPng& layer_png) {
   const std::time_t now = std::time(nullptr);
   const std::string name = job_name(path);
-  // Entry k < layers is layer k's PNG; entry `layers` is config.ini, made when libzip reaches
-  // it, after the last layer, when the material is known.
-  std::vector<uint8_t> config;
+  check_job_name(path, name);
+  check_firmware_limits(path, job);
+  // Entry k < layers is layer k's PNG; entry `layers` is config.ini, then come the thumbnails:
+  // made when libzip reaches them, after the last layer, when the material and the top view
+  // are known.
+  // libzip asks for an entry's bytes three times (its size, then its data): made once.
+  std::vector<uint8_t> made;
+  size_t made_entry = SIZE_MAX;
   const LayerPng entry_bytes = [&](size_t k) -> const std::vector<uint8_t>& {
     if (k < job.layers) return layer_png(k);
-    const std::string text = config_ini(job, name, now, job.used_material_ml ? job.used_material_ml() : 0.0);
-    config.assign(text.begin(), text.end());
-    return config;
+    if (k == made_entry) return made;
+    if (k == job.layers) {
+      const std::string text = config_ini(job, name, now, job.used_material_ml());
+      made.assign(text.begin(), text.end());
+    } else {
+      const ThumbnailSize& t = kThumbnails[k - job.layers - 1];
+      job.thumbnail_png(t.width, t.height, made);
+    }
+    made_entry = k;
+    return made;
   };
   // Declared before the archive: zip_discard (on any error) calls layer_cb to free each entry's
   // source, so the entries must outlive the archive.
   Layers layers{&entry_bytes, now, nullptr, {}};
-  std::vector<LayerEntry> entries(job.layers + 1);
+  std::vector<LayerEntry> entries(job.layers + 1 + kThumbnailCount);
   // libzip writes the archive on zip_close to a temporary file next to the staged one and
   // renames it onto it; the staged file then replaces path.
   StagedOutputs outputs;
@@ -200,12 +279,14 @@ void write_sl1(const std::string& path, const Sl1Job& job, const LayerPng& layer
   const std::string slicer = prusaslicer_ini(job);
   add_entry(za, "prusaslicer.ini", zip_source_buffer(za, slicer.data(), slicer.size(), 0), false,
             path);
-  for (size_t k = 0; k <= job.layers; ++k) {
+  // Layers and thumbnails are PNGs, deflated already: stored.
+  for (size_t k = 0; k < entries.size(); ++k) {
     entries[k].layers = &layers;
     entries[k].k = k;
-    const bool is_config = k == job.layers;
-    add_entry(za, is_config ? std::string("config.ini") : mask_layer_file_name(name, k),
-              zip_source_function(za, layer_cb, &entries[k]), !is_config, path);
+    const std::string entry = k < job.layers    ? mask_layer_file_name(name, k)
+                              : k == job.layers ? std::string("config.ini")
+                                                : thumbnail_entry(kThumbnails[k - job.layers - 1]);
+    add_entry(za, entry, zip_source_function(za, layer_cb, &entries[k]), k != job.layers, path);
   }
   if (zip_close(za) != 0) {
     if (layers.failure) std::rethrow_exception(layers.failure);

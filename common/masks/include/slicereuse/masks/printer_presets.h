@@ -3,7 +3,8 @@
 // a printer instead of typing its display. Each preset gives the display (pixels, pixel size,
 // orientation, mirrors), anti-aliasing as the printer's own slicer does it, what its print file
 // carries (printer model, exposure, bottom and faded layers), and the print file it takes.
-// Offsets stay the user's (a preset centres the part). docs/printers.md lists the sources.
+// Offsets stay the user's (a preset centres the part). docs/formats.md, "Printer profiles",
+// lists the sources.
 //   printer_presets()       every preset, in the order menus show them
 //   printer_preset(id)      the one named id, or Error listing the ids
 #include <string>

@@ -1,0 +1,19 @@
+#pragma once
+// thumbnail_png: a top view (top_view.h) as the picture PrusaSlicer puts into an .sl1 archive
+// (thumbnail/thumbnailWxH.png): an 8-bit RGBA PNG of width x height pixels (out replaced) with
+// the part framed to fill it (its covered cells' bounding box centred, proportions kept, a 5 %
+// margin on the tighter side), transparent around it, in resin orange (PrusaSlicer's colour of
+// Prusa Orange Tough, #FF8040) shaded by height: the top layers at full brightness, the first
+// at 40 %. Each pixel is the mean of 4 x 4 samples of the map, so the outline is anti-aliased
+// (alpha = the share of samples on the part) at any scale. Seen from above, not mirrored: +x to
+// the right, +y up. A map with no covered cell gives a fully transparent picture.
+#include <cstdint>
+#include <vector>
+
+#include "top_view.h"
+
+namespace slicereuse {
+
+void thumbnail_png(const HeightMap& view, int width, int height, std::vector<uint8_t>& out);
+
+}  // namespace slicereuse
