@@ -1,7 +1,7 @@
 #pragma once
 // printer_presets: named printer profiles with the real printers' figures, so that a user picks
 // a printer instead of typing its display. Each preset gives the display (pixels, pixel size,
-// orientation, mirrors), anti-aliasing as the printer's own slicer does it, what its print file
+// orientation, mirrors), the anti-aliasing gamma its own slicer uses, what its print file
 // carries (printer model, exposure, bottom and faded layers), and the print file it takes.
 // Offsets stay the user's (a preset centres the part). docs/formats.md, "Printer profiles",
 // lists the sources.
