@@ -262,8 +262,9 @@ TEST_F(GooFiles, ChunksAreEncodedAsTheSpecificationSays) {
 
 TEST_F(GooFiles, PreviewsShowWhereThePartStandsWithTheMirrorsUndone) {
   // The left half of the 20 x 20 mm plate, mirrored in x on the display: the previews still show
-  // it on the left. 580 cells across: the left 290 lit, which are preview pixels 0..144 of 290
-  // and 0..57 of 116 (5 cells each).
+  // it on the left. The top view has 200 cells across (one per 0.1 mm pixel), the left 100
+  // covered: every sample of preview pixels 0..144 of 290 (0..57 of 116) falls on them, none of
+  // the others'.
   PrinterProfile p = small_display();
   p.mirror_x = true;
   const test::SpecGoo g = export_and_read(make_slices({{rect(-10, -10, 0, 10)}}), p);

@@ -18,7 +18,6 @@
 #include <omp.h>
 
 #include "goo_format.h"
-#include "goo_preview.h"
 #include "goo_writer.h"
 #include "mask_stack.h"
 #include "sl1_writer.h"
@@ -300,7 +299,7 @@ void export_sl1(Stack& stack, const PrinterProfile& p, const std::string& path, 
 void export_goo(Stack& stack, const PrinterProfile& p, const std::string& path, StackSummary& summary,
                 size_t& open_contours, const Progress& progress) {
   const GooJob job{p, stack.layers(), stack.thickness()};
-  GooFootprint footprint(p);
+  TopView top_view(p, stack.layers());
   OrderedLayers encoder(stack, open_contours, progress,
                         [&](const Slices& s, size_t local, size_t k, std::vector<uint8_t>& record) {
                           summary.add(k, summarize_layer(s, local));
@@ -309,12 +308,12 @@ void export_goo(Stack& stack, const PrinterProfile& p, const std::string& path, 
                             rasterize_layer_antialiased_runs(s, local, p, runs);
                           else
                             rasterize_layer_runs(s, local, p, runs);
-                          footprint.add(runs);
+                          top_view.add(s, local, k);
                           encode_goo_layer(job, k, runs, record);
                         });
   write_goo(path, job, std::ref(encoder), [&] {
-    return GooSummary{summary.used_material_ml(stack.thickness()), footprint.preview(kGooSmallPreview),
-                      footprint.preview(kGooBigPreview)};
+    return GooSummary{summary.used_material_ml(stack.thickness()), goo_preview(top_view.finish(), kGooSmallPreview),
+                      goo_preview(top_view.finish(), kGooBigPreview)};
   });
 }
 
