@@ -6,18 +6,15 @@
 // gamma_correction key.
 #include <gtest/gtest.h>
 #include <omp.h>
-#include <zlib.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <random>
 #include <string>
 #include <vector>
 
 #include "mask_layers.h"
 #include "mask_stack.h"
-#include "slicereuse/masks/deflate_runs.h"
 #include "slicereuse/masks/export_masks.h"
 #include "slicereuse/masks/mask_png.h"
 #include "slicereuse/masks/printer_profile.h"
@@ -333,39 +330,6 @@ TEST(Antialiasing, RunsAreOrderedAndEncodeThePixelsAsTheDirectPngDoes) {
   EXPECT_THROW(rasterize_layer_antialiased_runs(s, 0, small_display(), runs), Error);  // antialiasing off
   std::vector<uint8_t> png;
   EXPECT_THROW(rasterize_layer_antialiased_png(s, 0, small_display(), png), Error);
-}
-
-TEST(Antialiasing, GreyPixelsAsLiteralsGiveTheRunsStream) {
-  // Runs of 1..6 equal bytes, equal neighbours merged, mostly single grey pixels between long
-  // black and white runs: sent as literals up to 3 long (as PngRows sends them) the stream must
-  // be add_run's, byte for byte, and inflate to the data.
-  std::mt19937 rng(11);
-  std::vector<std::pair<uint8_t, size_t>> runs;
-  std::vector<uint8_t> data;
-  for (int i = 0; i < 20000; ++i) {
-    const uint8_t byte = i % 5 == 0 ? 0 : i % 5 == 1 ? 255 : uint8_t(rng());
-    const size_t n = i % 5 < 2 ? 1 + rng() % 600 : 1 + rng() % 6;
-    if (!runs.empty() && runs.back().first == byte) continue;
-    runs.push_back({byte, n});
-    data.insert(data.end(), n, byte);
-  }
-  RunDeflater by_runs, by_literals;
-  std::vector<uint8_t> a, b;
-  for (const auto& [byte, n] : runs) {
-    by_runs.add_run(byte, n);
-    if (n > 3)
-      by_literals.add_run(byte, n);
-    else
-      for (size_t i = 0; i < n; ++i) by_literals.add_literal(byte);
-  }
-  by_runs.finish(a);
-  by_literals.finish(b);
-  EXPECT_EQ(a, b);
-  std::vector<uint8_t> back(data.size() + 1);
-  uLongf size = uLongf(back.size());
-  ASSERT_EQ(uncompress(back.data(), &size, b.data(), uLong(b.size())), Z_OK);
-  back.resize(size);
-  EXPECT_EQ(back, data);
 }
 
 TEST(Antialiasing, GammaMustBeAFiniteNumberNotBelowZero) {

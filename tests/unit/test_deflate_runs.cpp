@@ -96,8 +96,8 @@ TEST(RunDeflater, RunsWithoutBytesGiveTheSameStream) {
 }
 
 TEST(RunDeflater, AdlerOfManyAndHugeRunsMatchesZlibs) {
-  // Runs longer than the 2^24 bytes that are summed in one step (they fold the unreduced
-  // Adler-32 B sum first and go in pieces), between shorter runs and bytes added as bytes.
+  // Runs of up to 2^24 bytes and more, far longer than the runs whose Adler-32 sums go in one
+  // step (they go in steps, reduced after each), between shorter runs and bytes added as bytes.
   std::vector<uint8_t> data, z;
   RunDeflater r;
   std::mt19937_64 rng(5);
@@ -159,4 +159,43 @@ TEST(RunDeflater, StreamsOfEveryRunLengthAfterAFewBytesMatchZlibsAdler) {
     d.finish(z);
     ASSERT_EQ(inflate_all(z, data.size()), data) << n;
   }
+}
+
+TEST(RunDeflater, RunsSplitAnyWayAndAddedThroughRunsGiveTheMergedStream) {
+  // An anti-aliased mask's runs: single grey pixels between black and white runs of up to two
+  // rows (beyond three matches of 258), some grey levels twice in a row. Added as bytes, as
+  // runs split into pieces (empty ones in between), and through runs() in sessions of a few
+  // hundred runs (so that the symbols outgrow their first buffer within a session).
+  std::mt19937 rng(17);
+  std::vector<std::pair<uint8_t, size_t>> runs;
+  std::vector<uint8_t> data;
+  for (int i = 0; i < 30000; ++i) {
+    const uint8_t byte = i % 4 == 0 ? 0 : i % 4 == 2 ? 255 : uint8_t(1 + rng() % 254);
+    const size_t n = i % 2 == 0 ? 1 + rng() % 2050 : 1 + rng() % 2;
+    runs.push_back({byte, n});
+    data.insert(data.end(), n, byte);
+  }
+  std::vector<uint8_t> by_bytes, by_pieces, through_runs;
+  RunDeflater a, b, c;
+  a.add(data.data(), data.size());
+  a.finish(by_bytes);
+  for (const auto& [byte, n] : runs) {
+    const size_t first = rng() % (n + 1);
+    b.add_run(byte, first);
+    b.add_run(uint8_t(rng()), 0);
+    b.add_run(byte, n - first);
+  }
+  b.finish(by_pieces);
+  for (size_t i = 0; i < runs.size();) {
+    RunDeflater::Runs r = c.runs();
+    for (const size_t end = std::min(runs.size(), i + 1 + rng() % 500); i < end; ++i) {
+      r.add(runs[i].first, runs[i].second / 2);
+      r.add(runs[i].first, runs[i].second - runs[i].second / 2);
+    }
+    r.end();
+  }
+  c.finish(through_runs);
+  EXPECT_EQ(by_pieces, by_bytes);
+  EXPECT_EQ(through_runs, by_bytes);
+  EXPECT_EQ(inflate_all(by_bytes, data.size()), data);
 }

@@ -1,45 +1,22 @@
 #include "slicereuse/masks/deflate_runs.h"
 
-#include <zlib.h>
-
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <utility>
 
 namespace slicereuse {
 namespace {
 
 constexpr unsigned kEndOfBlock = 256;
-constexpr unsigned kMaxMatch = 258;
-constexpr unsigned kLengthBase[29] = {3,  4,  5,  6,  7,  8,  9,  10, 11,  13,  15,  17,  19,  23, 27,
-                                      31, 35, 43, 51, 59, 67, 83, 99, 115, 131, 163, 195, 227, 258};
+// Extra bits of length symbols 257..285 (RFC 1951 3.2.5).
 constexpr unsigned kLengthExtra[29] = {0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2,
                                        2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0};
 // The order in which the code-length code's lengths are sent (RFC 1951 3.2.7).
 constexpr unsigned kCodeLengthOrder[19] = {16, 17, 18, 0, 8, 7, 9, 6, 10, 5, 11, 4, 12, 3, 13, 2, 14, 1, 15};
 
-// Length symbol (257..285) of a match length, and its extra bits.
-struct LengthCode {
-  uint16_t symbol;
-  uint8_t extra_bits;
-  uint16_t extra;
-};
-
-const std::array<LengthCode, 259>& length_codes() {
-  static const std::array<LengthCode, 259> table = [] {
-    std::array<LengthCode, 259> t{};
-    for (unsigned len = 3; len <= 258; ++len) {
-      unsigned i = 28;
-      while (kLengthBase[i] > len) --i;
-      t[len] = {uint16_t(257 + i), uint8_t(kLengthExtra[i]), uint16_t(len - kLengthBase[i])};
-    }
-    return t;
-  }();
-  return table;
-}
-
-// Largest alphabet: 286 literal/length symbols (the code-length alphabet has 19).
-constexpr size_t kMaxSymbols = 286;
+// Largest alphabet: the literal/length symbols (the code-length alphabet has 19).
+constexpr size_t kMaxSymbols = RunDeflater::kSymbols;
 
 // Huffman code lengths for the frequencies of n <= kMaxSymbols symbols, none longer than limit:
 // a Huffman tree, rebuilt on halved frequencies while it is too deep. Symbols of frequency 0 get
@@ -50,24 +27,44 @@ void code_lengths(const uint64_t* freq_in, size_t n, unsigned limit, uint8_t* le
   uint64_t freq[kMaxSymbols];
   std::copy(freq_in, freq_in + n, freq);
   for (;;) {
-    // Symbols by (frequency, symbol), sorted as one key each: an anti-aliased mask uses most of
-    // the 286 symbols, too many for an insertion sort.
-    uint64_t by_frequency[kMaxSymbols];
-    size_t m = 0;
-    for (size_t s = 0; s < n; ++s)
-      if (freq[s]) by_frequency[m++] = freq[s] << 9 | s;
-    std::sort(by_frequency, by_frequency + m);
+    // Symbols by (frequency, symbol). An anti-aliased mask uses most of the 286 symbols, most
+    // of them (its grey levels) rarely: those of frequency below kCounted are placed by a
+    // counting sort (symbols in increasing order within a frequency), the few others after
+    // them by a sort of (frequency, symbol) keys.
+    constexpr size_t kCounted = 256;
+    uint16_t at[kCounted] = {};
+    uint64_t frequent[kMaxSymbols];
+    size_t m = 0, n_frequent = 0;
+    for (size_t s = 0; s < n; ++s) {
+      if (freq[s] == 0) continue;
+      ++m;
+      if (freq[s] < kCounted)
+        ++at[freq[s]];
+      else
+        frequent[n_frequent++] = freq[s] << 9 | s;
+    }
+    for (size_t f = 0, sum = 0; f < kCounted; ++f) sum += std::exchange(at[f], uint16_t(sum));
     uint16_t leaf[kMaxSymbols];
-    for (size_t i = 0; i < m; ++i) leaf[i] = uint16_t(by_frequency[i] & 511);
+    for (size_t s = 0; s < n; ++s)
+      if (freq[s] != 0 && freq[s] < kCounted) leaf[at[freq[s]]++] = uint16_t(s);
+    std::sort(frequent, frequent + n_frequent);
+    for (size_t i = 0; i < n_frequent; ++i) leaf[m - n_frequent + i] = uint16_t(frequent[i] & 511);
     // Nodes 0..m-1 are the sorted leaves, m.. the joined ones; parent of each.
     uint64_t weight[2 * kMaxSymbols];
     uint16_t parent[2 * kMaxSymbols];
     for (size_t i = 0; i < m; ++i) weight[i] = freq[leaf[i]];
     size_t next_leaf = 0, next_joined = m, made = m;
+    // The lighter of the next leaf and the next joined node, ties to the leaf (a priority
+    // queue numbers leaves before joined nodes); chosen without a branch, as the choice
+    // follows no pattern.
     auto smallest = [&] {
-      // Ties go to the leaf: a priority queue numbers leaves before joined nodes.
-      if (next_leaf < m && (next_joined == made || weight[next_leaf] <= weight[next_joined])) return next_leaf++;
-      return next_joined++;
+      const uint64_t leaf_weight = next_leaf < m ? weight[next_leaf] : UINT64_MAX;
+      const uint64_t joined_weight = next_joined < made ? weight[next_joined] : UINT64_MAX;
+      const bool is_leaf = leaf_weight <= joined_weight;
+      const size_t node = is_leaf ? next_leaf : next_joined;
+      next_leaf += is_leaf;
+      next_joined += !is_leaf;
+      return node;
     };
     for (; made + 1 < 2 * m; ++made) {
       const size_t a = smallest(), b = smallest();
@@ -94,18 +91,20 @@ void code_lengths(const uint64_t* freq_in, size_t n, unsigned limit, uint8_t* le
 // Canonical codes (RFC 1951 3.2.2), bit-reversed because deflate sends Huffman codes most
 // significant bit first into an LSB-first stream.
 void canonical_codes(const uint8_t* length, size_t n, uint16_t* codes) {
+  static const std::array<uint8_t, 256> reversed = [] {
+    std::array<uint8_t, 256> r{};
+    for (unsigned b = 0; b < 256; ++b)
+      for (unsigned i = 0; i < 8; ++i) r[b] |= uint8_t(((b >> i) & 1u) << (7 - i));
+    return r;
+  }();
   unsigned count[16] = {0}, next[16] = {0};
   for (size_t s = 0; s < n; ++s) ++count[length[s]];
   count[0] = 0;
   for (unsigned bits = 1, code = 0; bits < 16; ++bits) next[bits] = code = (code + count[bits - 1]) << 1;
   for (size_t s = 0; s < n; ++s) {
-    codes[s] = 0;
-    if (length[s]) {
-      const unsigned code = next[length[s]]++;
-      unsigned r = 0;
-      for (unsigned i = 0; i < length[s]; ++i) r |= ((code >> i) & 1u) << (length[s] - 1 - i);
-      codes[s] = uint16_t(r);
-    }
+    const unsigned code = next[length[s]]++;  // (length 0: a count nobody reads)
+    const unsigned r16 = unsigned(reversed[code & 255]) << 8 | reversed[(code >> 8) & 255];
+    codes[s] = length[s] ? uint16_t(r16 >> (16 - length[s])) : 0;
   }
 }
 
@@ -175,85 +174,90 @@ size_t length_runs(const uint8_t* lengths, size_t n_lengths, LengthRun* runs) {
 }  // namespace
 
 void RunDeflater::add(const uint8_t* data, size_t n) {
-  fold_adler();
-  const uint32_t adler = uint32_t(adler32(uint32_t(adler_b_ << 16 | adler_a_), data, uInt(n)));
-  adler_a_ = adler & 0xffff;
-  adler_b_ = adler >> 16;
-  size_t i = 0;
-  while (i < n) {
-    if (data[i] == last_) {
-      // Extend the run a word at a time while all 8 bytes match.
-      const uint64_t pattern = 0x0101010101010101ULL * uint8_t(last_);
-      size_t j = i;
-      uint64_t word;
-      while (j + 8 <= n && (std::memcpy(&word, data + j, 8), word == pattern)) j += 8;
-      while (j < n && data[j] == last_) ++j;
-      runs_.back() += uint64_t(j - i) << 8;
-      i = j;
-    } else {
-      last_ = data[i++];
-      runs_.push_back(uint64_t(1) << 8 | uint64_t(last_));
-    }
+  Runs runs(*this);
+  for (size_t i = 0; i < n;) {
+    // A run of data[i], found a word at a time while all 8 bytes match.
+    const uint8_t byte = data[i];
+    const uint64_t pattern = 0x0101010101010101ULL * byte;
+    size_t j = i + 1;
+    uint64_t word;
+    while (j + 8 <= n && (std::memcpy(&word, data + j, 8), word == pattern)) j += 8;
+    while (j < n && data[j] == byte) ++j;
+    runs.add(byte, j - i);
+    i = j;
   }
+  runs.end();
 }
 
 void RunDeflater::add_run(uint8_t byte, size_t n) {
-  if (n == 0) return;
-  if (n > kMaxRun) {  // longer than any mask image: in pieces that keep the bound
-    for (; n > kMaxRun; n -= kMaxRun) add_run(byte, kMaxRun);
-    add_run(byte, n);
-    return;
-  }
-  // Adler-32 over n bytes b: A' = A + n*b, B' = B + n*A + b*n*(n+1)/2, mod 65521 (see adler_b_).
-  adler_b_ += n * adler_a_ + uint64_t(byte) * (n * (n + 1) / 2);
-  adler_a_ += n * byte;
-  if (adler_a_ >= (uint64_t(1) << 32) || adler_b_ >= (uint64_t(1) << 62)) fold_adler();
-  if (byte == last_) {
-    runs_.back() += uint64_t(n) << 8;
-  } else {
-    runs_.push_back(uint64_t(n) << 8 | byte);
-    last_ = byte;
-  }
+  Runs runs(*this);
+  runs.add(byte, n);
+  runs.end();
 }
 
-void RunDeflater::fold_adler() {
-  adler_a_ %= 65521;
-  adler_b_ %= 65521;
+uint16_t* RunDeflater::make_room(uint16_t* at) {
+  const size_t i = size_t(at - symbols_.data());
+  symbols_.resize(std::max<size_t>(4096, 2 * symbols_.size()));
+  return symbols_.data() + i;
 }
+
+void RunDeflater::reset() {
+  used_ = 0;
+  std::fill(freq_, freq_ + kSymbols, uint64_t(0));
+  open_byte_ = 256;
+  open_n_ = 0;
+  adler_a_ = 1;
+  adler_b_ = 0;
+}
+
+// end_run() for a run of more than kShort bytes, or without room for kRoom symbols: Adler-32
+// reduced before and after each step of up to 2^24 bytes (which then adds less than 2^32 to A
+// and 2^40 + 255 * 2^47 < 2^56 to B), and room made for all of the run's symbols.
+RunDeflater::Runs::State RunDeflater::Runs::long_run(RunDeflater& d, State s, unsigned byte, uint64_t n) {
+  s.a %= 65521;
+  s.b %= 65521;
+  for (uint64_t left = n; left > 0;) {
+    const uint64_t step = std::min(left, uint64_t(1) << 24);
+    s.b += step * s.a + byte * (step * (step + 1) / 2);
+    s.a += step * byte;
+    s.a %= 65521;
+    s.b %= 65521;
+    left -= step;
+  }
+  const uint64_t repeats = n - 1, full = repeats / kMaxMatch, rest = repeats - full * kMaxMatch;
+  while (uint64_t(s.limit - s.at) < full + 3) {
+    s.at = d.make_room(s.at);
+    s.limit = d.symbols_.data() + d.symbols_.size();
+  }
+  constexpr uint16_t kFull = deflate_runs::kLengthSymbols[kMaxMatch];
+  *s.at++ = uint16_t(byte);
+  s.at = std::fill_n(s.at, full, kFull);
+  d.freq_[kFull] += full;
+  if (rest >= 3) {
+    *s.at++ = deflate_runs::kLengthSymbols[rest];
+    ++d.freq_[deflate_runs::kLengthSymbols[rest] & 511];
+    ++d.freq_[byte];
+  } else {
+    s.at = std::fill_n(s.at, rest, uint16_t(byte));
+    d.freq_[byte] += 1 + rest;
+  }
+  return s;
+}
+
+namespace {
+
+// Where a symbol's table entry keeps how many bits it sends (see finish).
+constexpr int kCountShift = 56;
+
+}  // namespace
 
 void RunDeflater::finish(std::vector<uint8_t>& out) {
-  fold_adler();
-  const auto& lengths_of = length_codes();
-  // A run of byte b and length n is the literal b, then its n - 1 repeats as matches of 258 and
-  // a last match of the rest, or the rest as literals when it is shorter than 3. Counted into
-  // locals and per rest, not per deflate symbol: increments of the same few counters, one run
-  // after the other, would wait for each other. Strings of literals count byte by byte.
-  uint64_t freq[kMaxSymbols] = {};
-  uint64_t per_rest[kMaxMatch] = {}, full_matches = 0;
+  Runs last(*this);
+  last.end_run();
+  last.end();
+  uint64_t freq[kSymbols];
   size_t symbols = 0;
-  const uint8_t* literal = literals_.data();
-  for (const uint64_t run : runs_) {
-    if (run & kLiterals) {
-      const uint64_t n = run & ~kLiterals;
-      for (uint64_t j = 0; j < n; ++j) ++freq[literal[j]];
-      literal += n;
-      symbols += n;
-      continue;
-    }
-    const uint64_t repeats = (run >> 8) - 1, full = repeats / kMaxMatch;
-    const unsigned rest = unsigned(repeats - full * kMaxMatch);
-    freq[run & 0xff] += 1 + (rest < 3 ? rest : 0);
-    full_matches += full;
-    ++per_rest[rest];
-  }
-  freq[lengths_of[kMaxMatch].symbol] += full_matches;
-  symbols += full_matches + per_rest[1] + 2 * per_rest[2];
-  for (unsigned rest = 0; rest < kMaxMatch; ++rest) {
-    symbols += per_rest[rest];  // each run's literal
-    if (rest < 3) continue;
-    freq[lengths_of[rest].symbol] += per_rest[rest];
-    symbols += per_rest[rest];  // and its last match
-  }
+  for (size_t i = 0; i < kSymbols; ++i) symbols += freq[i] = freq_[i];
   freq[kEndOfBlock] = 1;
   freq[0] |= 1;  // at least two codes, so the code is complete for every inflater
   uint8_t lit_length[kMaxSymbols];
@@ -299,53 +303,38 @@ void RunDeflater::finish(std::vector<uint8_t>& out) {
     if (r.symbol == 17) w.put(r.extra, 3);
     if (r.symbol == 18) w.put(r.extra, 7);
   }
-  // Each match length's bits in one piece, looked up once per length rather than through three
-  // tables per run: its length code, extra bits and distance code 0 (distance 1), at most
-  // 15 + 5 + 1 bits. Lengths 0..2 are no match (zero bits).
-  uint32_t match_bits[kMaxMatch + 1] = {};
-  uint8_t match_nbits[kMaxMatch + 1] = {};
-  for (unsigned len = 3; len <= kMaxMatch; ++len) {
-    const LengthCode& lc = lengths_of[len];
-    match_bits[len] = uint32_t(lit_code[lc.symbol]) | uint32_t(lc.extra) << lit_length[lc.symbol];
-    match_nbits[len] = uint8_t(lit_length[lc.symbol] + lc.extra_bits + 1);
+  // Per symbol in one word: its code, the code's length from bit 48 (where a length's extra
+  // bits go), and from bit 56 all its bits: code, extra bits and, for a length, distance code 0
+  // (one 0 bit), at most 15 + 5 + 1.
+  uint64_t code[512] = {};
+  for (unsigned sym = 0; sym < kMaxSymbols; ++sym) {
+    const unsigned extra = sym > 256 ? kLengthExtra[sym - 257] + 1 : 0;
+    code[sym] = lit_code[sym] | uint64_t(lit_length[sym]) << 48 | uint64_t(lit_length[sym] + extra) << kCountShift;
   }
-  // Between drains: a literal and a match (15 + 21 bits), or a literal and two more (3 * 15).
-  // The rest after the full matches is chosen without a branch (a mask's runs alternate between
-  // the two kinds unpredictably).
-  literal = literals_.data();
-  for (const uint64_t run : runs_) {
-    if (run & kLiterals) {
-      const uint64_t n = run & ~kLiterals;
-      for (uint64_t j = 0; j < n; ++j) w.put(lit_code[literal[j]], lit_length[literal[j]]);
-      literal += n;
-      continue;
-    }
-    const unsigned byte = unsigned(run & 0xff);
-    const uint64_t repeats = (run >> 8) - 1, full = repeats / kMaxMatch;
-    const unsigned rest = unsigned(repeats - full * kMaxMatch);
-    const uint64_t lit = lit_code[byte];
-    const unsigned lit_bits = lit_length[byte];
-    w.add(lit, lit_bits);
-    for (uint64_t i = 0; i < full; ++i) w.put(match_bits[kMaxMatch], match_nbits[kMaxMatch]);
-    const bool match = rest >= 3;
-    const unsigned literal_bits = (match ? 0 : rest) * lit_bits;  // rest < 3 literals
-    w.add(match ? match_bits[rest] : (lit | lit << lit_bits) & ((uint64_t(1) << literal_bits) - 1),
-          match ? match_nbits[rest] : literal_bits);
+  // Two symbols (at most 42 bits) between drains.
+  auto bits = [&code](uint16_t sym, unsigned& count) {
+    const uint64_t c = code[sym & 511];
+    count = unsigned(c >> kCountShift);
+    return (c & 0xffff) | uint64_t(sym >> 9) << ((c >> 48) & 0xff);
+  };
+  const uint16_t* sym = symbols_.data();
+  const uint16_t* const end = sym + used_;
+  for (; sym + 2 <= end; sym += 2) {
+    unsigned n0, n1;
+    const uint64_t b0 = bits(sym[0], n0), b1 = bits(sym[1], n1);
+    w.add(b0 | b1 << n0, n0 + n1);
     w.drain();
+  }
+  for (; sym < end; ++sym) {
+    unsigned n0;
+    const uint64_t b0 = bits(*sym, n0);
+    w.put(b0, n0);
   }
   w.put(lit_code[kEndOfBlock], lit_length[kEndOfBlock]);
   out.resize(start + w.flush());
-  const uint32_t adler = uint32_t(adler_b_ << 16 | adler_a_);
+  const uint32_t adler = uint32_t((adler_b_ % 65521) << 16 | (adler_a_ % 65521));
   for (int shift = 24; shift >= 0; shift -= 8) out.push_back(uint8_t(adler >> shift));
   reset();
-}
-
-void RunDeflater::reset() {
-  runs_.clear();
-  literals_.clear();
-  last_ = -1;
-  adler_a_ = 1;
-  adler_b_ = 0;
 }
 
 }  // namespace slicereuse

@@ -114,13 +114,14 @@ void encode_mask_png(const uint8_t* pixels, int width, int height, int bits,
   png_end(data_begin, out);
 }
 
-PngRows::PngRows(int width, int height, std::vector<uint8_t>& out) : deflater_(thread_deflater()), out_(out) {
+PngRows::PngRows(int width, int height, std::vector<uint8_t>& out)
+    : deflater_(thread_deflater()), runs_(deflater_.runs()), out_(out) {
   check_size(width, height, 8);
   data_begin_ = png_begin(width, height, 8, out);
 }
 
 void PngRows::finish() {
-  flush();
+  runs_.end();
   deflater_.finish(out_);
   png_end(data_begin_, out_);
 }
@@ -131,19 +132,19 @@ void encode_mask_png(const MaskRuns& runs, std::vector<uint8_t>& out) {
       runs.levels.size() != size_t(runs.row_begin.back()))
     throw Error("cannot encode mask runs: their row index does not match the image height or the runs");
   PngRows png(runs.width, runs.height, out);
-  for (int r = 0; r < runs.height; ++r) {
-    png.row();
-    size_t at = 0;
-    for (uint32_t i = runs.row_begin[size_t(r)]; i < runs.row_begin[size_t(r) + 1]; ++i) {
-      const size_t a = runs.columns[2 * size_t(i)], b = runs.columns[2 * size_t(i) + 1];
-      if (a < at || b < a || b > size_t(runs.width))
-        throw Error("cannot encode mask runs: row " + std::to_string(r) + " has runs out of order or outside the image");
-      png.pixels(0, a - at);
-      png.pixels(runs.levels[i], b - a);
-      at = b;
-    }
-    png.pixels(0, size_t(runs.width) - at);
-  }
+  for (int r = 0; r < runs.height; ++r)
+    png.row([&](auto&& pixels) {
+      size_t at = 0;
+      for (uint32_t i = runs.row_begin[size_t(r)]; i < runs.row_begin[size_t(r) + 1]; ++i) {
+        const size_t a = runs.columns[2 * size_t(i)], b = runs.columns[2 * size_t(i) + 1];
+        if (a < at || b < a || b > size_t(runs.width))
+          throw Error("cannot encode mask runs: row " + std::to_string(r) + " has runs out of order or outside the image");
+        pixels(0, a - at);
+        pixels(runs.levels[i], b - a);
+        at = b;
+      }
+      pixels(0, size_t(runs.width) - at);
+    });
   png.finish();
 }
 

@@ -1,12 +1,11 @@
 #pragma once
 // PngRows: an 8-bit greyscale mask PNG (mask_png.h) written into out (replaced) from runs of
-// equal pixels as a rasterizer makes them, without keeping the pixels or the runs: row()
-// starts the next row (its filter byte, type 0), pixels(level, n) adds the row's next n pixels,
-// finish() ends the file. Equal neighbours are merged before they reach the thread's
-// RunDeflater (a row's trailing black, the next filter byte and that row's leading black are
-// one run), and runs of up to 3 pixels (an anti-aliased mask's grey pixels) go to it as
-// literals: the same stream. One PngRows per thread at a time; encode_mask_png of MaskRuns is
-// one.
+// equal pixels as a rasterizer makes them, without keeping the pixels or the runs. Each
+// row(fill) adds the next row: its filter byte (type 0), then fill(pixels) calls pixels(level,
+// n) for the row's pixels left to right, n of them at a time (n may be 0). finish() ends the
+// file. The runs go straight to the thread's RunDeflater, which merges equal neighbours (a
+// row's trailing black, the next filter byte and that row's leading black are one run). One
+// PngRows per thread at a time; encode_mask_png of MaskRuns is one.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -19,32 +18,21 @@ class PngRows {
  public:
   // Throws Error for a size encode_mask_png refuses.
   PngRows(int width, int height, std::vector<uint8_t>& out);
-  void row() { pixels(0, 1); }
-  void pixels(uint8_t level, size_t n) {
-    if (n == 0) return;
-    if (level != byte_) {
-      flush();
-      byte_ = level;
-      count_ = 0;
-    }
-    count_ += n;
+  template <class Fill>
+  void row(Fill&& fill) {
+    // A local copy of the deflater's runs for the row: its state stays in registers.
+    RunDeflater::Runs runs = runs_;
+    runs.add(0, 1);
+    fill([&runs](uint8_t level, size_t n) { runs.add(level, n); });
+    runs_ = runs;
   }
   void finish();
 
  private:
-  // Up to 3 equal bytes are literals whichever way they are sent, and cheaper as literals.
-  void flush() {
-    if (count_ > 3)
-      deflater_.add_run(byte_, count_);
-    else
-      for (size_t i = 0; i < count_; ++i) deflater_.add_literal(byte_);
-  }
-
   RunDeflater& deflater_;
+  RunDeflater::Runs runs_;
   std::vector<uint8_t>& out_;
   size_t data_begin_ = 0;
-  uint8_t byte_ = 0;
-  size_t count_ = 0;
 };
 
 }  // namespace slicereuse
