@@ -10,6 +10,7 @@
 #include "print_estimate.h"
 #include "slicereuse/util/atomic_file.h"
 #include "slicereuse/util/error.h"
+#include "slicereuse/util/format.h"
 
 namespace slicereuse {
 namespace {
@@ -58,14 +59,6 @@ void moves(BigEndian& w) {
     w.f32(v);
 }
 
-std::string utc_time(std::time_t now) {
-  std::tm tm;
-  gmtime_r(&now, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M:%S", &tm);
-  return buf;
-}
-
 void preview(BigEndian& w, const std::vector<uint16_t>& pixels, int n) {
   if (pixels.size() != size_t(n) * size_t(n))
     throw Error(".goo writer: a preview image of " + std::to_string(pixels.size()) + " pixels, expected " +
@@ -89,7 +82,7 @@ std::vector<uint8_t> header(const GooJob& job, const GooSummary& s, std::time_t 
   w.bytes(kGooMagic, 8);
   w.text("slicereuse", 32);                                               // software
   w.text("", 24);                                                         // its version: none
-  w.text(utc_time(now), 24);
+  w.text(utc_time(now, "%Y-%m-%d %H:%M:%S"), 24);
   w.text(p.printer_model.empty() ? "custom" : p.printer_model, 32);  // printer name
   w.text("MSLA", 32);                                                     // printer type
   w.text("slicereuse", 32);                                               // resin profile

@@ -16,6 +16,7 @@
 #include "print_estimate.h"
 #include "slicereuse/util/atomic_file.h"
 #include "slicereuse/util/error.h"
+#include "slicereuse/util/format.h"
 
 namespace slicereuse {
 namespace {
@@ -46,21 +47,13 @@ std::string thumbnails_setting() {
   return list;
 }
 
-std::string utc_timestamp(std::time_t now) {
-  std::tm tm;
-  gmtime_r(&now, &tm);
-  char buf[64];
-  std::strftime(buf, sizeof buf, "%Y-%m-%d at %H:%M:%S UTC", &tm);
-  return buf;
-}
-
 std::string config_ini(const Sl1Job& j, const std::string& job, std::time_t now, double used_material_ml) {
   const PrinterProfile& p = j.profile;
   return "action = print\n"
          "expTime = " + num(p.exposure_s) + "\n"
          "expTimeFirst = " + num(p.bottom_exposure_s) + "\n"
          "expUserProfile = 0\n"
-         "fileCreationTimestamp = " + utc_timestamp(now) + "\n"
+         "fileCreationTimestamp = " + utc_time(now, "%Y-%m-%d at %H:%M:%S UTC") + "\n"
          "hollow = 0\n"
          "jobDir = " + job + "\n"
          "layerHeight = " + num(j.layer_height_mm) + "\n"

@@ -17,4 +17,12 @@ std::string format(const char* fmt, ...) {
   return s;
 }
 
+std::string utc_time(std::time_t when, const char* fmt) {
+  std::tm tm;
+  gmtime_r(&when, &tm);
+  char buf[64];
+  const size_t n = std::strftime(buf, sizeof buf, fmt, &tm);
+  return std::string(buf, n);
+}
+
 }  // namespace slicereuse
