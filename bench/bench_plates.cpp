@@ -75,7 +75,10 @@ int main(int argc, char** argv) {
     if (std::string(rest[i]) == "--thickness") args.thickness = std::atof(rest[i + 1]);
   std::filesystem::create_directories(args.out);
   const PrinterPreset& preset = printer_preset(printer);
-  const PrinterProfile& profile = preset.profile;
+  // Anti-aliased at gamma 1, as PrusaSlicer draws the same plate (its gamma_correction default).
+  PrinterProfile profile = preset.profile;
+  profile.antialiasing = true;
+  profile.gamma = 1;
   const Platform platform = printer_platform(profile);
 
   const Mesh base = test::make_family_base(args.family);
@@ -136,9 +139,10 @@ int main(int argc, char** argv) {
   // PrusaSlicer's options for the same display (bench_plates.sh).
   FILE* f = std::fopen((args.out + "/prusa_display_args").c_str(), "w");
   std::fprintf(f, "--display-pixels-x %d --display-pixels-y %d --display-width %.6f --display-height %.6f "
-                  "--display-orientation %s\n",
+                  "--display-orientation %s --%sdisplay-mirror-x --%sdisplay-mirror-y --gamma-correction 1\n",
                profile.width_px, profile.height_px, profile.width_px * profile.pixel_size_x_um / 1000,
-               profile.height_px * profile.pixel_size_y_um / 1000, profile.portrait ? "portrait" : "landscape");
+               profile.height_px * profile.pixel_size_y_um / 1000, profile.portrait ? "portrait" : "landscape",
+               profile.mirror_x ? "" : "no-", profile.mirror_y ? "" : "no-");
   std::fclose(f);
   return 0;
 }
