@@ -115,13 +115,13 @@ struct FilterSpec {
   Arity arity;
   unsigned filter_class;    // FilterClass bits
   bool needs_faces;         // precondition: the current mesh must have faces
-  std::vector<ParamSpec> params;
+  std::vector<ParamSpec> params{};
   // Post-condition: the filter colours the vertices of the meshes its Mesh parameters name
   // (Host::set_vertex_colors), so the host must redraw them with their colours.
   bool colors_vertices = false;
   // Runs the filter: reads and checks the values (filter_params.h), does the work through the
   // host, returns the figures. Throws Error with a message that names the problem.
-  std::function<Result(const ParamValues&, Host&)> run;
+  std::function<Result(const ParamValues&, Host&)> run{};
 };
 
 const std::vector<FilterSpec>& filter_specs();
