@@ -1,8 +1,8 @@
 #include "json_value.h"
 
-#include <charconv>
-#include <cmath>
-#include <cstdint>
+#include <nlohmann/json.hpp>
+
+#include <string>
 
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
@@ -12,162 +12,42 @@ namespace {
 
 constexpr int kMaxDepth = 64;
 
-class Parser {
- public:
-  Parser(const std::string& text, const std::string& name) : p_(text.data()), end_(p_ + text.size()), name_(name) {}
-
-  JsonValue document() {
-    JsonValue v = value(0);
-    blanks();
-    if (p_ != end_) fail("text after the end of the JSON document");
-    return v;
-  }
-
- private:
-  [[noreturn]] void fail(const std::string& what) const {
-    throw Error(format("'%s', line %zu: %s", name_.c_str(), line_, what.c_str()));
-  }
-
-  void blanks() {
-    while (p_ != end_ && (*p_ == ' ' || *p_ == '\t' || *p_ == '\r' || *p_ == '\n')) {
-      if (*p_ == '\n') ++line_;
-      ++p_;
-    }
-  }
-
-  bool take(char c) {
-    blanks();
-    if (p_ != end_ && *p_ == c) {
-      ++p_;
-      return true;
-    }
-    return false;
-  }
-
-  void expect(char c, const char* what) {
-    if (!take(c)) fail(std::string("expected ") + what);
-  }
-
-  bool word(const char* w) {
-    const size_t n = std::char_traits<char>::length(w);
-    if (size_t(end_ - p_) >= n && std::equal(w, w + n, p_)) {
-      p_ += n;
-      return true;
-    }
-    return false;
-  }
-
-  JsonValue value(int depth) {
-    if (depth > kMaxDepth) fail("nested deeper than 64 levels");
-    blanks();
-    if (p_ == end_) fail("unexpected end of the file");
-    JsonValue v;
-    if (*p_ == '{') {
-      ++p_;
-      v.type = JsonValue::Type::Object;
-      if (take('}')) return v;
-      do {
-        blanks();
-        if (p_ == end_ || *p_ != '"') fail("expected a key in quotes");
-        std::string key = string();
-        expect(':', "':' after a key");
-        if (v.fields.count(key)) fail("key \"" + key + "\" given twice");
-        v.fields.emplace(std::move(key), value(depth + 1));
-      } while (take(','));
-      expect('}', "',' or '}' in an object");
-    } else if (*p_ == '[') {
-      ++p_;
-      v.type = JsonValue::Type::Array;
-      if (take(']')) return v;
-      do v.items.push_back(value(depth + 1));
-      while (take(','));
-      expect(']', "',' or ']' in an array");
-    } else if (*p_ == '"') {
-      v.type = JsonValue::Type::String;
-      v.text = string();
-    } else if (word("true")) {
+// nlohmann::json's document as a JsonValue tree, nesting limited (a hostile file could nest
+// deeply enough to exhaust the stack of a recursive walk).
+JsonValue convert(const nlohmann::json& j, int depth, const std::string& name) {
+  if (depth > kMaxDepth) throw Error(format("'%s': nested deeper than %d levels", name.c_str(), kMaxDepth));
+  JsonValue v;
+  switch (j.type()) {
+    case nlohmann::json::value_t::null:
+    case nlohmann::json::value_t::discarded:
+      break;
+    case nlohmann::json::value_t::boolean:
       v.type = JsonValue::Type::Bool;
-      v.boolean = true;
-    } else if (word("false")) {
-      v.type = JsonValue::Type::Bool;
-    } else if (word("null")) {
-    } else {
+      v.boolean = j.get<bool>();
+      break;
+    case nlohmann::json::value_t::number_integer:
+    case nlohmann::json::value_t::number_unsigned:
+    case nlohmann::json::value_t::number_float:
       v.type = JsonValue::Type::Number;
-      const auto [next, ec] = std::from_chars(p_, end_, v.number);
-      if (ec != std::errc() || next == p_ || !std::isfinite(v.number)) fail("expected a value");
-      p_ = next;
-    }
-    return v;
+      v.number = j.get<double>();
+      break;
+    case nlohmann::json::value_t::string:
+      v.type = JsonValue::Type::String;
+      v.text = j.get<std::string>();
+      break;
+    case nlohmann::json::value_t::array:
+      v.type = JsonValue::Type::Array;
+      for (const nlohmann::json& item : j) v.items.push_back(convert(item, depth + 1, name));
+      break;
+    case nlohmann::json::value_t::object:
+      v.type = JsonValue::Type::Object;
+      for (const auto& [key, item] : j.items()) v.fields.emplace(key, convert(item, depth + 1, name));
+      break;
+    case nlohmann::json::value_t::binary:
+      throw Error("'" + name + "': binary values are not JSON text");
   }
-
-  unsigned hex4() {
-    if (end_ - p_ < 4) fail("a \\u escape needs 4 hex digits");
-    unsigned u = 0;
-    const auto [next, ec] = std::from_chars(p_, p_ + 4, u, 16);
-    if (ec != std::errc() || next != p_ + 4) fail("a \\u escape needs 4 hex digits");
-    p_ += 4;
-    return u;
-  }
-
-  void utf8(std::string& s, uint32_t c) {
-    if (c < 0x80) {
-      s += char(c);
-    } else if (c < 0x800) {
-      s += char(0xC0 | (c >> 6));
-      s += char(0x80 | (c & 0x3F));
-    } else if (c < 0x10000) {
-      s += char(0xE0 | (c >> 12));
-      s += char(0x80 | ((c >> 6) & 0x3F));
-      s += char(0x80 | (c & 0x3F));
-    } else {
-      s += char(0xF0 | (c >> 18));
-      s += char(0x80 | ((c >> 12) & 0x3F));
-      s += char(0x80 | ((c >> 6) & 0x3F));
-      s += char(0x80 | (c & 0x3F));
-    }
-  }
-
-  std::string string() {
-    ++p_;  // the opening quote
-    std::string s;
-    while (true) {
-      if (p_ == end_) fail("a string does not end");
-      const char c = *p_++;
-      if (c == '"') return s;
-      if (c == '\n' || (unsigned char)c < 0x20) fail("a control character inside a string");
-      if (c != '\\') {
-        s += c;
-        continue;
-      }
-      if (p_ == end_) fail("a string does not end");
-      switch (const char e = *p_++) {
-        case '"': case '\\': case '/': s += e; break;
-        case 'b': s += '\b'; break;
-        case 'f': s += '\f'; break;
-        case 'n': s += '\n'; break;
-        case 'r': s += '\r'; break;
-        case 't': s += '\t'; break;
-        case 'u': {
-          uint32_t c1 = hex4();
-          if (c1 >= 0xD800 && c1 < 0xDC00 && end_ - p_ >= 6 && p_[0] == '\\' && p_[1] == 'u') {
-            p_ += 2;
-            const uint32_t c2 = hex4();
-            if (c2 < 0xDC00 || c2 >= 0xE000) fail("a \\u surrogate pair is broken");
-            c1 = 0x10000 + ((c1 - 0xD800) << 10) + (c2 - 0xDC00);
-          }
-          utf8(s, c1);
-          break;
-        }
-        default: fail(std::string("unknown escape \\") + e + " in a string");
-      }
-    }
-  }
-
-  const char* p_;
-  const char* end_;
-  std::string name_;
-  size_t line_ = 1;
-};
+  return v;
+}
 
 const char* type_name(JsonValue::Type t) {
   switch (t) {
@@ -214,6 +94,18 @@ const std::vector<JsonValue>& JsonValue::as_array(const std::string& where) cons
   return items;
 }
 
-JsonValue parse_json(const std::string& text, const std::string& name) { return Parser(text, name).document(); }
+JsonValue parse_json(const std::string& text, const std::string& name) {
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    // what() starts with the exception's id ("[json.exception.parse_error.101] "): left out.
+    std::string what = e.what();
+    const size_t id_end = what.find("] ");
+    if (what.rfind("[json.exception", 0) == 0 && id_end != std::string::npos) what = what.substr(id_end + 2);
+    throw Error("'" + name + "': " + what);
+  }
+  return convert(doc, 0, name);
+}
 
 }  // namespace slicereuse::detail

@@ -1,9 +1,9 @@
 #pragma once
-// json_value: a small JSON reader for the placements file (placements_file.cpp); internal.
-// parse_json(text, name) -> the document's value tree. Numbers are read as std::from_chars
-// reads them (exactly what %.17g wrote); strings take the escapes \" \\ \/ \b \f \n \r \t and
-// \uXXXX (written as UTF-8, surrogate pairs joined). Throws Error "'name', line N: what" on the
-// first syntax error; nesting deeper than 64 is refused.
+// json_value: the placements file's JSON (placements_file.cpp) as a tree with typed access that
+// names the place of a wrong value; internal.
+// parse_json(text, name) -> the document's value tree, parsed by nlohmann::json (numbers as
+// strtod reads them: exactly what %.17g wrote). Throws Error "'name': parse error at line N,
+// column C: what" on a syntax error; nesting deeper than 64 is refused.
 // Value::at(key, where) / as_*(where) throw Error naming `where` (e.g. "plate 2, member 3")
 // when the key is missing or the type differs.
 #include <map>
