@@ -51,6 +51,23 @@ def _load_mesh(ms, path):
     return ms.current_mesh_id()
 
 
+def _check_files(paths):
+    for path in paths:
+        if not Path(path).is_file():
+            raise FileNotFoundError(f"mesh file not found: {path}")
+
+
+def _slice_source(pymeshlab, source, out, layer_thickness, binary=True):
+    """Slices source once with encoding; returns the encoding's path, named as the encoding
+    beside the source's contour file <stem>.srb / .ctr would be (docs/formats.md, "File names")."""
+    ms = pymeshlab.MeshSet()
+    _load_mesh(ms, source)
+    encoding = str(Path(out) / (Path(source).stem + ("_enc.srb" if binary else ".enc")))
+    ms.apply_filter("slice_mesh_with_encoding", layer_thickness=layer_thickness,
+                    contour_file="", encoding_file=encoding, file_format=int(binary))
+    return encoding
+
+
 def family(source, targets, layer_thickness, out, profile=None, binary=True, progress=None,
            direct=False, verify=False, keep_contours=False, details=False, extension=".sl1"):
     """The production pipeline: one print job per family member, out/<member stem><extension>
@@ -74,9 +91,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     "cpu_seconds", the process's CPU time (all threads) for the same span as "seconds" (for
     benchmarks on a shared machine, where CPU time is less disturbed than wall time).
     progress(step, steps, text) is called before each step."""
-    for path in [source, *targets]:
-        if not Path(path).is_file():
-            raise FileNotFoundError(f"mesh file not found: {path}")
+    _check_files([source, *targets])
     stems = [Path(t).stem for t in targets]
     repeated = {s for s in stems if stems.count(s) > 1}
     if repeated:
@@ -99,14 +114,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     encoding = ""
     if not direct:
         tick(f"slicing {Path(source).name}")
-        ms = pymeshlab.MeshSet()
-        _load_mesh(ms, source)
-        # Named as the encoding beside the source's contour file <stem>.srb / .ctr would be
-        # (docs/formats.md, "File names").
-        encoding = str(out / (Path(source).stem + ("_enc.srb" if binary else ".enc")))
-        ms.apply_filter("slice_mesh_with_encoding", layer_thickness=layer_thickness,
-                        contour_file="", encoding_file=encoding, file_format=int(binary))
-        del ms
+        encoding = _slice_source(pymeshlab, source, out, layer_thickness, binary)
     else:
         tick("slicing every member directly")
 
@@ -164,9 +172,7 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
     "members", "area_used"[, "min_similarity", "max_grey_difference"]}, ...]}; "seconds" covers
     loading the targets, arranging, transferring or slicing and writing every plate (not slicing
     the source)."""
-    for path in [source, *targets]:
-        if not Path(path).is_file():
-            raise FileNotFoundError(f"mesh file not found: {path}")
+    _check_files([source, *targets])
     pymeshlab = load()
     profile = profile or {}
     out = Path(out)
@@ -182,12 +188,7 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
     encoding = ""
     if not direct:
         tick(f"slicing {Path(source).name}")
-        ms = pymeshlab.MeshSet()
-        _load_mesh(ms, source)
-        encoding = str(out / (Path(source).stem + "_enc.srb"))
-        ms.apply_filter("slice_mesh_with_encoding", layer_thickness=layer_thickness, contour_file="",
-                        encoding_file=encoding, file_format=1)
-        del ms
+        encoding = _slice_source(pymeshlab, source, out, layer_thickness)
     tick(f"{len(targets)} members onto plates")
     start = time.perf_counter()
     ms = pymeshlab.MeshSet()
