@@ -258,3 +258,35 @@ TEST_F(Sl1Archive, WhatThePrintersFirmwareWouldNotPrintAsWrittenIsRefused) {
   custom.faded_layers = 0;
   export_masks(make_slices({{rect(-1, -1, 1, 1)}}, 0.001), custom, path("fine.sl1"));
 }
+
+// SOURCE_DATE_EPOCH set for the scope, restored (unset) after: the creation time print files record.
+class SourceDateEpoch {
+ public:
+  explicit SourceDateEpoch(const char* value) { setenv("SOURCE_DATE_EPOCH", value, 1); }
+  ~SourceDateEpoch() { unsetenv("SOURCE_DATE_EPOCH"); }
+};
+
+TEST_F(Sl1Archive, SourceDateEpochMakesPrintFilesByteIdenticalWheneverTheyAreMade) {
+  // What family.py's batches rely on: a member made again on another worker, or a second later,
+  // gives the same bytes as the first time (config.ini's time and the entries' times included).
+  const SourceDateEpoch epoch("1764000000");  // 2025-11-24 16:00:00 UTC
+  for (const char* name : {"a.sl1", "a.goo", "b.sl1", "b.goo"})
+    export_masks(l_stack(), printer_preset(std::string(name).back() == 'o' ? "elegoo_saturn_3_ultra" : "prusa_sl1")
+                               .profile,
+                 path(name));
+  EXPECT_EQ(test::slurp(path("a.sl1")), test::slurp(path("b.sl1")));
+  EXPECT_EQ(test::slurp(path("a.goo")), test::slurp(path("b.goo")));
+  EXPECT_NE(test::zip_entry(path("a.sl1"), "config.ini").find("fileCreationTimestamp = 2025-11-24 at 16:00:00 UTC\n"),
+            std::string::npos);
+}
+
+TEST_F(Sl1Archive, AMalformedSourceDateEpochIsRefusedInWords) {
+  for (const char* bad : {"yesterday", "-5", "1.5", "1e9"}) {
+    const SourceDateEpoch epoch(bad);
+    EXPECT_EQ(test::error_of([&] { export_masks(l_stack(), small_display(), path("bad.sl1")); }),
+              std::string("SOURCE_DATE_EPOCH is '") + bad +
+                  "': it must be the creation time as a whole number of seconds since 1970-01-01 UTC, or unset")
+        << bad;
+    EXPECT_FALSE(std::filesystem::exists(path("bad.sl1")));
+  }
+}

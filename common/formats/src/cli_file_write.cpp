@@ -4,13 +4,13 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <ctime>
 #include <limits>
 #include <string>
 
 #include "slicereuse/formats/cli_file.h"
 #include "slicereuse/util/atomic_file.h"
 #include "slicereuse/util/error.h"
+#include "slicereuse/util/format.h"
 
 namespace slicereuse {
 namespace {
@@ -80,14 +80,9 @@ Box dimension(const Slices& s) {
 
 std::string header(const Slices& s, CliEncoding encoding) {
   const Box b = dimension(s);
-  std::time_t now = std::time(nullptr);
-  std::tm utc{};
-  gmtime_r(&now, &utc);
-  char date[16];
-  std::strftime(date, sizeof date, "%d%m%y", &utc);
   std::string h = "$$HEADERSTART\n";
   h += encoding == CliEncoding::Binary ? "$$BINARY\n" : "$$ASCII\n";
-  h += "$$UNITS/1\n$$VERSION/200\n$$DATE/" + std::string(date) + "\n";
+  h += "$$UNITS/1\n$$VERSION/200\n$$DATE/" + utc_time(creation_time(), "%d%m%y") + "\n";
   h += "$$DIMENSION/" + real(b.lo[0]) + "," + real(b.lo[1]) + "," + real(b.lo[2]) + "," +
        real(b.hi[0]) + "," + real(b.hi[1]) + "," + real(b.hi[2]) + "\n";
   h += "$$LAYERS/" + std::to_string(s.layers()) + "\n";

@@ -240,7 +240,7 @@ void encode_goo_layer(const GooJob& job, size_t k, const MaskRuns& runs, std::ve
 void write_goo(const std::string& path, const GooJob& job, const GooLayerRecord& layer_record,
                const std::function<GooSummary()>& summary) {
   check_job(path, job);
-  const std::time_t now = std::time(nullptr);
+  const std::time_t now = creation_time();
   AtomicFile file(path);
   // The header's volume and previews are known after the last layer: its place is kept and it
   // is written there at the end.

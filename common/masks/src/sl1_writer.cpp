@@ -229,7 +229,7 @@ void add_entry(zip_t* za, const std::string& name, zip_source_t* src, bool store
 }  // namespace
 
 void write_sl1(const std::string& path, const Sl1Job& job, const LayerPng& layer_png) {
-  const std::time_t now = std::time(nullptr);
+  const std::time_t now = creation_time();
   const std::string name = job_name(path);
   check_job_name(path, name);
   check_firmware_limits(path, job);
