@@ -118,7 +118,6 @@ struct ZipError {
 // One layer entry: its bytes are asked for only when libzip reaches it on close.
 struct Layers {
   const LayerPng* layer_png;
-  std::time_t mtime;
   std::exception_ptr failure;
   ZipError error;
 };
@@ -143,8 +142,7 @@ zip_int64_t layer_cb(void* ud, void* data, zip_uint64_t len, zip_source_cmd_t cm
         zip_stat_init(st);
         e.bytes = &(*ls.layer_png)(e.k);
         st->size = e.bytes->size();
-        st->mtime = ls.mtime;
-        st->valid = ZIP_STAT_SIZE | ZIP_STAT_MTIME;
+        st->valid = ZIP_STAT_SIZE;
         return sizeof(zip_stat_t);
       }
       case ZIP_SOURCE_OPEN:
@@ -214,7 +212,8 @@ void check_firmware_limits(const std::string& path, const Sl1Job& j) {
                 " s (expTimeFirst) is outside 0.1..120 s, which the printer would change");
 }
 
-void add_entry(zip_t* za, const std::string& name, zip_source_t* src, bool store,
+// Every entry carries the archive's creation time (creation_time): made again, it is the same bytes.
+void add_entry(zip_t* za, const std::string& name, zip_source_t* src, bool store, std::time_t when,
                const std::string& path) {
   if (!src) throw Error("cannot write '" + path + "': " + zip_strerror(za));
   const zip_int64_t i = zip_file_add(za, name.c_str(), src, ZIP_FL_ENC_UTF_8);
@@ -222,7 +221,8 @@ void add_entry(zip_t* za, const std::string& name, zip_source_t* src, bool store
     zip_source_free(src);
     throw Error("cannot write '" + path + "': entry '" + name + "': " + zip_strerror(za));
   }
-  if (store && zip_set_file_compression(za, zip_uint64_t(i), ZIP_CM_STORE, 0) != 0)
+  if ((store && zip_set_file_compression(za, zip_uint64_t(i), ZIP_CM_STORE, 0) != 0) ||
+      zip_file_set_mtime(za, zip_uint64_t(i), when, 0) != 0)
     throw Error("cannot write '" + path + "': " + zip_strerror(za));
 }
 
@@ -254,7 +254,7 @@ void write_sl1(const std::string& path, const Sl1Job& job, const LayerPng& layer
   };
   // Declared before the archive: zip_discard (on any error) calls layer_cb to free each entry's
   // source, so the entries must outlive the archive.
-  Layers layers{&entry_bytes, now, nullptr, {}};
+  Layers layers{&entry_bytes, nullptr, {}};
   std::vector<LayerEntry> entries(job.layers + 1 + kThumbnailCount);
   // libzip writes the archive on zip_close to a temporary file next to the staged one and
   // renames it onto it; the staged file then replaces path.
@@ -270,7 +270,7 @@ void write_sl1(const std::string& path, const Sl1Job& job, const LayerPng& layer
   std::unique_ptr<zip_t, void (*)(zip_t*)> archive(za, zip_discard);
 
   const std::string slicer = prusaslicer_ini(job);
-  add_entry(za, "prusaslicer.ini", zip_source_buffer(za, slicer.data(), slicer.size(), 0), false,
+  add_entry(za, "prusaslicer.ini", zip_source_buffer(za, slicer.data(), slicer.size(), 0), false, now,
             path);
   // Layers and thumbnails are PNGs, deflated already: stored.
   for (size_t k = 0; k < entries.size(); ++k) {
@@ -279,7 +279,7 @@ void write_sl1(const std::string& path, const Sl1Job& job, const LayerPng& layer
     const std::string entry = k < job.layers    ? mask_layer_file_name(name, k)
                               : k == job.layers ? std::string("config.ini")
                                                 : thumbnail_entry(kThumbnails[k - job.layers - 1]);
-    add_entry(za, entry, zip_source_function(za, layer_cb, &entries[k]), k != job.layers, path);
+    add_entry(za, entry, zip_source_function(za, layer_cb, &entries[k]), k != job.layers, now, path);
   }
   if (zip_close(za) != 0) {
     if (layers.failure) std::rethrow_exception(layers.failure);
