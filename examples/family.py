@@ -3,18 +3,29 @@
     scripts/python examples/family.py --layer-thickness H --out DIR [--printer ID] [--antialiasing]
                                       [--format EXT] [--direct] [--verify] [--keep-contours]
                                       [--plates [--spacing MM] [--placements FILE]]
+                                      [--workers N | --scheduler tcp://HOST:PORT [--send-encoding]]
+                                      [--resume]
                                       MESH0 MESH1 ...
 
 Default: slices MESH0 once with encoding, then for each member MESH1 ...: loads it, transfers
 the slicing (exact: the result equals slicing it) and writes DIR/<member file stem>.sl1 (or the
---format given), all in
-memory, with no contour file unless --keep-contours. --direct: the same outputs by slicing every
-member directly (the baseline). --verify: also slices each member directly and compares the
-masks (min_similarity 1 and max_grey_difference 0 mean identical). Prints one JSON object:
-{"source": MESH0, "seconds": total, "targets": [{"mesh", "layers", "points", "resliced_layers",
-"seconds", "output"[, "min_similarity", "max_grey_difference"]}, ...]}; a member's seconds cover
-loading it, transferring or slicing it and writing its .sl1. A progress bar goes to a terminal's
-stderr.
+--format given), all in memory, with no contour file unless --keep-contours. --direct: the same
+outputs by slicing every member directly (the baseline). --verify: also slices each member
+directly and compares the masks (min_similarity 1 and max_grey_difference 0 mean identical).
+Prints one JSON object: {"source": MESH0, "seconds": total, "source_seconds", "engine",
+"failed", "targets": [{"mesh", "layers", "points", "resliced_layers", "seconds", "output",
+"worker"[, "min_similarity", "max_grey_difference"][, "resumed"]} or {"mesh", "worker",
+"error"}, ...]}; a member's seconds cover loading it, transferring or slicing it and writing its
+.sl1, "worker" says which worker process made it. A progress bar goes to a terminal's stderr.
+
+Members are tasks of a Dask cluster (python/slicereuse_batch.py): by default an embedded
+LocalCluster of --workers worker processes on this machine (default: one per core; --workers 0:
+everything in this process); --scheduler an existing cluster (`dask scheduler` and `dask worker`
+elsewhere, README "Family batches on a cluster"), whose workers write to DIR at the same path.
+Outputs appear complete or not at all; --resume skips members whose outputs an earlier run made
+complete and valid (checked by content, with the same inputs and parameters). A member that
+fails is reported in its entry as "error" with the message, the others are made, and the exit
+status is 1.
 
 --plates: the lab's job instead, many members per print: MESH1 ... are arranged on build plates
 of the printer (footprints --spacing mm apart, 2 by default, and from the display's edges,
@@ -65,6 +76,14 @@ def main():
                     help="arrange the members on build plates: one print file per plate, plus plates.json")
     ap.add_argument("--spacing", type=float, default=2.0, help="--plates: spacing between members in mm")
     ap.add_argument("--placements", help="--plates: a placements file to use instead of arranging")
+    ap.add_argument("--workers", type=int, help="worker processes of the embedded Dask LocalCluster "
+                    "(default: one per core); 0: make everything in this process")
+    ap.add_argument("--scheduler", help="run on this Dask cluster instead (tcp://HOST:PORT)")
+    ap.add_argument("--send-encoding", action="store_true",
+                    help="send the source's encoding to each worker once, instead of workers reading it from --out "
+                         "(for workers elsewhere, when the shared folder is slow)")
+    ap.add_argument("--resume", action="store_true",
+                    help="skip members whose outputs an earlier run made complete and valid")
     ap.add_argument("meshes", nargs="+", metavar="MESH", help="the sliced mesh, then its family members")
     args = ap.parse_args()
     if args.layer_thickness <= 0:
@@ -84,6 +103,15 @@ def main():
         ap.error("--spacing and --placements go with --plates")
     if args.plates and args.keep_contours:
         ap.error("--keep-contours is for one print file per member, not --plates")
+    if args.workers is not None and args.workers < 0:
+        ap.error("--workers must be 0 (this process) or more")
+    if args.workers is not None and args.scheduler:
+        ap.error("--workers is for the embedded cluster; a --scheduler's cluster has its own workers")
+    if args.send_encoding and (args.plates or args.direct):
+        ap.error("--send-encoding is for members made by reuse, one print file each")
+    engine = {"workers": args.workers, "scheduler": args.scheduler, "resume": args.resume}
+    if args.send_encoding:
+        engine["send_encoding"] = True
     try:
         sr.load()
         bar = progress_bar if sys.stderr.isatty() else None
@@ -91,16 +119,20 @@ def main():
         if args.plates:
             result = sr.plates(args.meshes[0], args.meshes[1:], args.layer_thickness, args.out, profile=profile,
                                progress=bar, direct=args.direct, verify=args.verify, spacing_mm=args.spacing,
-                               placements=args.placements, extension=extension)
+                               placements=args.placements, extension=extension, **engine)
         else:
             result = sr.family(args.meshes[0], args.meshes[1:], args.layer_thickness, args.out,
                                profile=profile, binary=not args.text, extension=extension, progress=bar,
-                               direct=args.direct, verify=args.verify, keep_contours=args.keep_contours)
+                               direct=args.direct, verify=args.verify, keep_contours=args.keep_contours,
+                               **engine)
     except Exception as e:  # pymeshlab.PyMeshLabException, OSError, RuntimeError, ValueError
         if sys.stderr.isatty():
             sys.stderr.write("\n")
         sys.exit(f"family: error: {e}")
     print(json.dumps(result))
+    if result["failed"]:
+        total = len(result["targets"] if "targets" in result else result["plates"])
+        sys.exit(f"family: {result['failed']} of {total} failed; their entries say why")
 
 
 if __name__ == "__main__":

@@ -14,10 +14,13 @@ ms.apply_filter(name, **params); the result is a dict. Errors raise pymeshlab.Py
 catching one, keep that MeshSet alive (or run a filter on it that succeeds) before loading meshes
 into another: pymeshlab 2025.7.post1 otherwise logs into the freed MeshSet (see README).
 """
+import contextlib
 import json
 import os
 import time
 from pathlib import Path
+
+import slicereuse_batch as batch
 
 ROOT = Path(__file__).resolve().parent.parent
 PLUGIN = Path(os.environ.get("SLICEREUSE_PLUGIN",
@@ -57,19 +60,25 @@ def _check_files(paths):
             raise FileNotFoundError(f"mesh file not found: {path}")
 
 
-def _slice_source(pymeshlab, source, out, layer_thickness, binary=True):
-    """Slices source once with encoding; returns the encoding's path, named as the encoding
-    beside the source's contour file <stem>.srb / .ctr would be (docs/formats.md, "File names")."""
-    ms = pymeshlab.MeshSet()
-    _load_mesh(ms, source)
-    encoding = str(Path(out) / (Path(source).stem + ("_enc.srb" if binary else ".enc")))
-    ms.apply_filter("slice_mesh_with_encoding", layer_thickness=layer_thickness,
-                    contour_file="", encoding_file=encoding, file_format=int(binary))
+def _encode_source(source, out, layer_thickness, epoch, resume, binary=True):
+    """Slices source once with encoding, as a batch job (complete or absent, recorded); with
+    resume, an encoding an earlier run made from the same source and thickness is kept. Returns
+    the encoding's path, named as the encoding beside the source's contour file <stem>.srb /
+    .ctr would be (docs/formats.md, "File names")."""
+    encoding = Path(out) / (Path(source).stem + ("_enc.srb" if binary else ".enc"))
+    job = {"name": encoding.name, "out": str(out), "outputs": [str(encoding)], "epoch": epoch,
+           "base": {"mesh": str(source)}, "binary": binary, "layer_thickness": layer_thickness,
+           "key": batch.key_of(source=batch.file_identity(source), layer_thickness=layer_thickness, binary=binary)}
+    if not (resume and batch.valid_record(job)):
+        made = batch.attempt(_make_encoding, job, "", batch.IN_PROCESS)
+        if "error" in made:
+            raise RuntimeError(f"slicing {source}: {made['error']}")
     return encoding
 
 
 def family(source, targets, layer_thickness, out, profile=None, binary=True, progress=None,
-           direct=False, verify=False, keep_contours=False, details=False, extension=".sl1"):
+           direct=False, verify=False, keep_contours=False, details=False, extension=".sl1",
+           workers=0, scheduler=None, resume=False, send_encoding=False):
     """The production pipeline: one print job per family member, out/<member stem><extension>
     (".sl1", ".sl1s", ".goo", or "" for a folder of PNG images).
 
@@ -84,144 +93,262 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     difference of a pixel's grey levels: 1 and 0 for identical masks); not counted in the
     target's seconds.
     keep_contours=True: also writes out/<stem>.srb (.ctr when binary is False).
-    Returns {"source", "seconds", "targets": [{"mesh", "layers", "points", "resliced_layers",
-    "seconds", "output"[, "min_similarity", "max_grey_difference"]}, ...]}; a target's seconds
-    cover loading it, transferring or slicing it and writing its print file. details=True adds the
-    filter's own "slicing_seconds" (transfer or slicing) and "masks_seconds" per target, and
-    "cpu_seconds", the process's CPU time (all threads) for the same span as "seconds" (for
-    benchmarks on a shared machine, where CPU time is less disturbed than wall time).
-    progress(step, steps, text) is called before each step."""
+
+    Where the members are made (slicereuse_batch.py): workers=0 (the default) in this process;
+    workers=N an embedded Dask LocalCluster of N worker processes (None: one per core);
+    scheduler="tcp://host:port" an existing Dask cluster whose workers write to out at the same
+    path; they read the source's encoding from out when they run on this machine, else (or with
+    send_encoding=True) it is sent once to each worker. Every member is a task whose outputs
+    appear complete or not at all, recorded in
+    out/.slicereuse-batch/; resume=True skips members (and the source's slicing) whose outputs
+    are complete and valid from an earlier run with the same inputs and parameters. A member
+    that fails is reported with its message, and the others are made.
+
+    Returns {"source", "seconds", "source_seconds", "engine", "failed", "targets": [{"mesh", "layers", "points",
+    "resliced_layers", "seconds", "output", "worker"[, "min_similarity", "max_grey_difference"]
+    [, "resumed"]} or {"mesh", "worker", "error"}, ...]} in the order of targets; a target's
+    seconds cover loading it, transferring or slicing it and writing its print file; "worker"
+    made it ("in-process", or the Dask worker's name); "resumed": made by an earlier run;
+    "source_seconds": of "seconds", slicing the source (0 when kept or direct).
+    details=True adds the filter's own "slicing_seconds" (transfer or slicing) and
+    "masks_seconds" per target, and "cpu_seconds", the process's CPU time (all threads) for the
+    same span as "seconds" (for benchmarks on a shared machine, where CPU time is less disturbed
+    than wall time). progress(step, steps, text) is called after each step."""
     _check_files([source, *targets])
     stems = [Path(t).stem for t in targets]
     repeated = {s for s in stems if stems.count(s) > 1}
     if repeated:
         raise ValueError(f"members with the same file name would write the same output: {sorted(repeated)}")
-    pymeshlab = load()
+    load()
     # make_print_job's printer parameters (printer by id, or custom values; antialiasing, gamma,
     # offsets); the filter's defaults for the others.
     profile = profile or {}
-    out = Path(out)
-    out.mkdir(parents=True, exist_ok=True)
-    steps, step = 1 + len(targets) * (2 if verify else 1), 0
-
-    def tick(text):
-        nonlocal step
-        if progress:
-            progress(step, steps, text)
-        step += 1
-
+    out = Path(out).resolve()
+    (out / batch.RECORDS).mkdir(parents=True, exist_ok=True)
+    epoch = batch.batch_epoch()
     start = time.perf_counter()
+    steps, step = 1 + len(targets), 0
+
     encoding = ""
     if not direct:
-        tick(f"slicing {Path(source).name}")
-        encoding = _slice_source(pymeshlab, source, out, layer_thickness, binary)
-    else:
-        tick("slicing every member directly")
+        encoding = _encode_source(source, out, layer_thickness, epoch, resume, binary)
+        step += 1
+        if progress:
+            progress(step, steps, f"sliced {Path(source).name}")
+    source_seconds = time.perf_counter() - start
 
-    results = []
+    parameters = dict(encoding=batch.file_identity(encoding) if encoding else None,
+                      layer_thickness=layer_thickness, profile=profile, verify=verify, details=details)
+    jobs = []
     for target, stem in zip(targets, stems):
-        name = Path(target).name
-        tick(f"{name}: {'slicing' if direct else 'transferring'} and masks")
-        t0, c0 = time.perf_counter(), time.process_time()
-        ms = pymeshlab.MeshSet()
-        _load_mesh(ms, target)
         output = out / f"{stem}{extension}"
-        contours = str(out / (stem + (".srb" if binary else ".ctr"))) if keep_contours else ""
-        # z_start is left at the filter's default: the mesh's lowest vertex.
-        r = ms.apply_filter("make_print_job", encoding_file=encoding, layer_thickness=layer_thickness,
-                            contour_file=contours, output_path=str(output), **profile)
-        entry = {"mesh": str(target), "layers": r["layers"], "points": r["points"],
-                 "resliced_layers": r["resliced_layers"], "seconds": time.perf_counter() - t0,
-                 "output": str(output)}
-        if details:
-            entry.update(slicing_seconds=r["slicing_seconds"], masks_seconds=r["masks_seconds"],
-                         cpu_seconds=time.process_time() - c0)
-        if verify:
-            tick(f"{name}: verifying against direct slicing")
-            check = out / f"{stem}.direct{extension}"
-            ms.apply_filter("make_print_job", encoding_file="", layer_thickness=layer_thickness,
-                            contour_file="", output_path=str(check), **profile)
-            c = ms.apply_filter("compare_mask_stacks", stack_a=str(output), stack_b=str(check),
-                                report_file="")
-            entry.update(min_similarity=c["min_similarity"], max_grey_difference=c["max_grey_difference"])
-        results.append(entry)
-        del ms
-    if not direct:  # the plugin's cached encoding is not needed after the last member
-        pymeshlab.MeshSet().apply_filter("free_cached_memory")
+        contours = out / (stem + (".srb" if binary else ".ctr")) if keep_contours else None
+        check = out / f"{stem}.direct{extension}" if verify else None
+        jobs.append({"name": output.name, "out": str(out), "epoch": epoch, "base": {"mesh": str(target)},
+                     "outputs": [str(p) for p in (output, contours, check) if p],
+                     "key": batch.key_of(target=batch.file_identity(target), **parameters),
+                     "target": str(target), "output": str(output), "contours": str(contours or ""),
+                     "check": str(check or ""), "layer_thickness": layer_thickness, "profile": profile,
+                     "details": details})
+    entries = {}
+    if resume:
+        for job in jobs:
+            kept = batch.valid_record(job)
+            if kept:
+                entries[job["name"]] = dict(kept, resumed=True)
+    step += len(entries)
+    todo = [job for job in jobs if job["name"] not in entries]
+    with batch.engine(workers, scheduler, setup=load) as engine:
+        if todo:
+            shared = engine.share(encoding, send_encoding) if encoding else ""
+            entries.update(batch.run(engine, _make_member, todo, shared, progress, done=step, steps=steps))
+        engine.finish(_free_cached_memory)
+        where = engine.description
     if progress:
         progress(steps, steps, "done")
-    return {"source": str(source), "seconds": time.perf_counter() - start, "targets": results}
+    targets_out = [entries[job["name"]] for job in jobs]
+    return {"source": str(source), "seconds": time.perf_counter() - start, "source_seconds": source_seconds,
+            "engine": where, "failed": sum("error" in e for e in targets_out), "targets": targets_out}
 
+
+_failed_meshsets = []
+
+
+@contextlib.contextmanager
+def _meshset():
+    """A MeshSet for one job. One whose filter failed is kept alive until the process ends:
+    pymeshlab 2025.7.post1 writes into it later otherwise (see README)."""
+    ms = _pymeshlab.MeshSet()
+    try:
+        yield ms
+    except _pymeshlab.PyMeshLabException as e:
+        _failed_meshsets.append(ms)
+        # The filter's own message, without pymeshlab's "Failed to apply filter: name\nDetails: ".
+        raise RuntimeError(str(e).split("\nDetails: ", 1)[-1]) from None
+    except Exception:
+        _failed_meshsets.append(ms)
+        raise
+
+
+def _make_encoding(job, _shared):
+    with _meshset() as ms:
+        _load_mesh(ms, job["base"]["mesh"])
+        ms.apply_filter("slice_mesh_with_encoding", layer_thickness=job["layer_thickness"], contour_file="",
+                        encoding_file=job["outputs"][0], file_format=int(job["binary"]))
+    return {}
+
+
+def _make_member(job, encoding):
+    """One member's print job (a family() task): loads it and runs make_print_job by transfer of
+    encoding (a path; "" slices it directly); with job["check"], also slices it directly into that
+    file and compares."""
+    with _meshset() as ms:
+        t0, c0 = time.perf_counter(), time.process_time()
+        _load_mesh(ms, job["target"])
+        # z_start is left at the filter's default: the mesh's lowest vertex.
+        r = ms.apply_filter("make_print_job", encoding_file=encoding, layer_thickness=job["layer_thickness"],
+                            contour_file=job["contours"], output_path=job["output"], **job["profile"])
+        entry = {"layers": r["layers"], "points": r["points"], "resliced_layers": r["resliced_layers"],
+                 "seconds": time.perf_counter() - t0, "output": job["output"]}
+        if job["details"]:
+            entry.update(slicing_seconds=r["slicing_seconds"], masks_seconds=r["masks_seconds"],
+                         cpu_seconds=time.process_time() - c0)
+        if job["check"]:
+            ms.apply_filter("make_print_job", encoding_file="", layer_thickness=job["layer_thickness"],
+                            contour_file="", output_path=job["check"], **job["profile"])
+            c = ms.apply_filter("compare_mask_stacks", stack_a=job["output"], stack_b=job["check"], report_file="")
+            entry.update(min_similarity=c["min_similarity"], max_grey_difference=c["max_grey_difference"])
+    return entry
+
+
+def _free_cached_memory():
+    """The plugin's cached encoding is not needed after a batch's last member."""
+    load().MeshSet().apply_filter("free_cached_memory")
 
 
 def plates(source, targets, layer_thickness, out, profile=None, progress=None, direct=False, verify=False,
-           spacing_mm=2.0, placements=None, extension=".sl1"):
-    """The lab's job: the targets arranged on build plates of the printer (make_plate_job), one
-    print file per plate, out/plate_<k><extension> (".sl1", ".sl1s", ".goo", or "" for folders of
-    PNG images), its top view out/plate_<k>_layout.png, and out/plates.json, the placements
-    (docs/formats.md, "Placements file").
+           spacing_mm=2.0, placements=None, extension=".sl1", workers=0, scheduler=None, resume=False):
+    """The lab's job: the targets arranged on build plates of the printer, one print file per
+    plate, out/plate_<k><extension> (".sl1", ".sl1s", ".goo", or "" for folders of PNG images),
+    its top view out/plate_<k>_layout.png, and out/plates.json, the placements (docs/formats.md,
+    "Placements file").
 
     Default: slices source once with encoding (out/<source stem>_enc.srb) and transfers it onto
     every placed target (exact); direct=True slices every target directly instead, from the
     lowest vertex of all targets (the family's members sit on one build plate, the source's).
-    placements: a placements file to use instead of arranging (its members named by file name).
-    verify=True: also makes each plate by direct slicing from out/plates.json into
+    First all targets are arranged (arrange_on_plates) or, with placements (a placements file, its
+    members named by file name), placed as it says; then every plate is a task (make_plate_job
+    with that plate only) that loads its own members: workers, scheduler and resume as for
+    family(). verify=True: also makes each plate by direct slicing into
     out/plate.direct_<k><extension> and compares (min_similarity 1 and max_grey_difference 0 mean
-    identical); not counted in "seconds".
-    Returns {"source", "members", "seconds", "arrange_seconds", "plates": [{"output", "layout",
-    "members", "area_used"[, "min_similarity", "max_grey_difference"]}, ...]}; "seconds" covers
-    loading the targets, arranging, transferring or slicing and writing every plate (not slicing
-    the source)."""
+    identical); not counted in a plate's seconds.
+    Returns {"source", "members", "seconds", "arrange_seconds", "engine", "failed", "plates":
+    [{"output", "layout", "members", "area_used", "layers", "points", "seconds", "worker"[,
+    "min_similarity", "max_grey_difference"][, "resumed"]} or {"output", "layout", "members",
+    "area_used", "worker", "error"}, ...]}; "seconds" covers arranging and making every plate (not
+    slicing the source)."""
     _check_files([source, *targets])
-    pymeshlab = load()
+    by_name = {Path(t).name: str(t) for t in targets}
+    if len(by_name) != len(targets):
+        names = [Path(t).name for t in targets]
+        raise ValueError("members with the same file name would have the same name on a plate: "
+                         f"{sorted({n for n in names if names.count(n) > 1})}")
+    load()
     profile = profile or {}
-    out = Path(out)
-    out.mkdir(parents=True, exist_ok=True)
-    steps, step = 2 + (1 if verify else 0), 0
-
-    def tick(text):
-        nonlocal step
-        if progress:
-            progress(step, steps, text)
-        step += 1
-
-    encoding = ""
-    if not direct:
-        tick(f"slicing {Path(source).name}")
-        encoding = _slice_source(pymeshlab, source, out, layer_thickness)
-    tick(f"{len(targets)} members onto plates")
+    out = Path(out).resolve()
+    (out / batch.RECORDS).mkdir(parents=True, exist_ok=True)
+    epoch = batch.batch_epoch()
+    encoding = "" if direct else _encode_source(source, out, layer_thickness, epoch, resume)
     start = time.perf_counter()
-    ms = pymeshlab.MeshSet()
-    for t in targets:
-        _load_mesh(ms, t)
+
     summary = out / "plates.json"
-    r = ms.apply_filter("make_plate_job", encoding_file=encoding, layer_thickness=layer_thickness,
-                        spacing_mm=spacing_mm, placements_file=str(placements or ""),
-                        placements_output=str(summary), output_path=str(out / f"plate{extension}"), **profile)
-    seconds = time.perf_counter() - start
-    written = json.loads(summary.read_text())
-    result = {"source": str(source), "members": r["members"], "seconds": seconds,
-              "arrange_seconds": r["arrange_seconds"], "plates": []}
-    for plate in written["plates"]:
+    arrange = {"name": summary.name, "out": str(out), "outputs": [str(summary)], "epoch": epoch,
+               "base": {"members": len(targets)}, "targets": [str(t) for t in targets],
+               "placements": str(placements or ""), "spacing_mm": spacing_mm, "profile": profile,
+               "output": str(out / f"plate{extension}"),
+               "key": batch.key_of(targets=[batch.file_identity(t) for t in targets], spacing_mm=spacing_mm,
+                                   placements=batch.file_identity(placements) if placements else None,
+                                   profile=profile, extension=extension)}
+    arranged = resume and batch.valid_record(arrange)
+    if not arranged:
+        arranged = batch.attempt(_arrange, arrange, "", batch.IN_PROCESS)
+        if "error" in arranged:
+            raise RuntimeError(arranged["error"])
+    layout = json.loads(summary.read_text())
+    steps = len(layout["plates"]) + 1
+    if progress:
+        progress(1, steps, f"{len(targets)} members on {len(layout['plates'])} plates")
+
+    parameters = dict(placements=batch.file_identity(summary), encoding=batch.file_identity(encoding)
+                      if encoding else None, layer_thickness=layer_thickness, profile=profile, verify=verify)
+    jobs = []
+    for k, plate in enumerate(layout["plates"], 1):
         output = plate["output"]
-        result["plates"].append({"output": output, "members": [m["name"] for m in plate["members"]],
-                                 "area_used": plate["area_used"],
-                                 "layout": str(Path(output).with_suffix("")) + "_layout.png"})
-    if verify:
-        tick("verifying every plate against direct slicing")
-        ms.apply_filter("make_plate_job", encoding_file="", layer_thickness=layer_thickness,
-                        spacing_mm=spacing_mm, placements_file=str(summary), placements_output="",
-                        output_path=str(out / f"plate.direct{extension}"), **profile)
-        for k, plate in enumerate(result["plates"], 1):
-            check = out / f"plate.direct_{k}{extension}"
-            c = ms.apply_filter("compare_mask_stacks", stack_a=plate["output"], stack_b=str(check), report_file="")
-            plate.update(min_similarity=c["min_similarity"], max_grey_difference=c["max_grey_difference"])
-    del ms
-    if not direct:
-        pymeshlab.MeshSet().apply_filter("free_cached_memory")
+        check = out / f"plate.direct_{k}{extension}" if verify else None
+        members = [m["name"] for m in plate["members"]]
+        jobs.append({"name": Path(output).name, "out": str(out), "epoch": epoch,
+                     "base": {"output": output, "layout": str(Path(output).with_suffix("")) + "_layout.png",
+                              "members": members, "area_used": plate["area_used"]},
+                     "outputs": [str(p) for p in (output, check) if p],
+                     "key": batch.key_of(plate=k, **parameters), "plate": k, "summary": str(summary),
+                     "paths": [by_name[m] for m in members], "layer_thickness": layer_thickness,
+                     "z_start": arranged["z_start"], "profile": profile, "check": str(check or ""),
+                     "plate_output": str(out / f"plate{extension}"),
+                     "check_output": str(out / f"plate.direct{extension}")})
+    entries = {}
+    if resume:
+        for job in jobs:
+            kept = batch.valid_record(job)
+            if kept:
+                entries[job["name"]] = dict(kept, resumed=True)
+    todo = [job for job in jobs if job["name"] not in entries]
+    with batch.engine(workers, scheduler, setup=load) as engine:
+        if todo:
+            shared = engine.share(encoding) if encoding else ""
+            entries.update(batch.run(engine, _make_plate, todo, shared, progress, done=1 + len(entries), steps=steps))
+        engine.finish(_free_cached_memory)
+        where = engine.description
     if progress:
         progress(steps, steps, "done")
-    return result
+    plates_out = [entries[job["name"]] for job in jobs]
+    return {"source": str(source), "members": arranged["members"], "seconds": time.perf_counter() - start,
+            "arrange_seconds": arranged["arrange_seconds"], "engine": where,
+            "failed": sum("error" in e for e in plates_out), "plates": plates_out}
+
+
+def _arrange(job, _shared):
+    """The plates' placements (a plates() task, in the driver): every target loaded, arranged by
+    arrange_on_plates or placed as job["placements"] says, into job["outputs"][0] with the layout
+    pictures; also the lowest vertex of all targets, where direct slicing of every plate starts."""
+    with _meshset() as ms:
+        lowest = float("inf")
+        for t in job["targets"]:
+            _load_mesh(ms, t)
+            lowest = min(lowest, ms.current_mesh().bounding_box().min()[2])
+        r = ms.apply_filter("arrange_on_plates", spacing_mm=job["spacing_mm"], placements_file=job["placements"],
+                            placements_output=job["outputs"][0], output_path=job["output"], **job["profile"])
+    return {"members": r["members"], "arrange_seconds": r["arrange_seconds"], "z_start": lowest}
+
+
+def _make_plate(job, encoding):
+    """One plate's print file (a plates() task): loads the plate's members only and makes that
+    plate by transfer of encoding (a path; "" slices directly from job["z_start"]); with
+    job["check"], also by direct slicing into that file, compared."""
+    with _meshset() as ms:
+        t0 = time.perf_counter()
+        for path in job["paths"]:
+            _load_mesh(ms, path)
+        common = dict(layer_thickness=job["layer_thickness"], z_start=job["z_start"], placements_file=job["summary"],
+                      plate=job["plate"], placements_output="", **job["profile"])
+        r = ms.apply_filter("make_plate_job", encoding_file=encoding, output_path=job["plate_output"], **common)
+        entry = {"layers": r["layers"], "points": r["points"], "seconds": time.perf_counter() - t0}
+        if job["check"]:
+            ms.apply_filter("make_plate_job", encoding_file="", output_path=job["check_output"], **common)
+            c = ms.apply_filter("compare_mask_stacks", stack_a=job["base"]["output"], stack_b=job["check"],
+                                report_file="")
+            entry.update(min_similarity=c["min_similarity"], max_grey_difference=c["max_grey_difference"])
+    return entry
+
 
 if __name__ == "__main__":
     load()

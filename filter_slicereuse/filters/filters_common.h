@@ -26,6 +26,7 @@ FilterSpec print_job_filter();
 FilterSpec cross_parameterize_filter();
 FilterSpec free_cached_memory_filter();
 FilterSpec plate_job_filter();
+FilterSpec arrange_plates_filter();
 
 // The method's reference, closing every description.
 extern const char* const kReference;

@@ -11,7 +11,8 @@ namespace slicereuse::plugin {
 const std::vector<FilterSpec>& filter_specs() {
   static const std::vector<FilterSpec> specs = {slice_filter(),      transfer_filter(),          export_masks_filter(),
                                                 compare_masks_filter(), print_job_filter(),
-                                                cross_parameterize_filter(), free_cached_memory_filter(), plate_job_filter()};
+                                                cross_parameterize_filter(), free_cached_memory_filter(), plate_job_filter(),
+                                                arrange_plates_filter()};
   return specs;
 }
 

@@ -11,7 +11,7 @@ import slicereuse_pymeshlab as sr
 from conftest import ROOT, THICKNESS, raises_filter_error
 
 SHAPES = ["arch", "ear", "handle", "box", "sphere", "torus"]
-TARGET_KEYS = {"mesh", "layers", "points", "resliced_layers", "seconds", "output"}
+TARGET_KEYS = {"mesh", "layers", "points", "resliced_layers", "seconds", "output", "worker"}
 CASES = [(shape, z) for z in (None, "band") for shape in SHAPES] + [("arch", "everywhere")]
 
 
@@ -34,6 +34,7 @@ def test_reuse_and_direct_write_identical_print_jobs(make_family, tmp_path, shap
     assert reused["source"] == direct["source"] == str(members[0])
     for r, d, member in zip(reused["targets"], direct["targets"], members[1:]):
         assert r["mesh"] == d["mesh"] == str(member)
+        assert r["worker"] == d["worker"] == "in-process"
         assert set(r) == TARGET_KEYS | {"min_similarity", "max_grey_difference"} and set(d) == TARGET_KEYS
         assert r["output"] == str(tmp_path / "reuse" / f"{member.stem}.sl1")
         assert r["points"] == d["points"] > 0, (r, d)
@@ -52,12 +53,13 @@ def test_reuse_and_direct_write_identical_print_jobs(make_family, tmp_path, shap
             assert r["resliced_layers"] > 0 and transferred > 2 * r["resliced_layers"], r
         else:
             assert transferred == 0, r
-    # No contour files in between: the encoding and the .sl1 archives only.
-    names = sorted(p.name for p in (tmp_path / "reuse").iterdir())
+    # No contour files in between: the encoding and the .sl1 archives only (and the batch's records).
+    names = sorted(p.name for p in (tmp_path / "reuse").iterdir() if p.name != ".slicereuse-batch")
     stems = [m.stem for m in members[1:]]
     assert names == sorted([f"{members[0].stem}_enc.srb"] + [f"{s}.sl1" for s in stems] +
                            [f"{s}.direct.sl1" for s in stems])
-    assert sorted(p.name for p in (tmp_path / "direct").iterdir()) == sorted(f"{s}.sl1" for s in stems)
+    assert sorted(p.name for p in (tmp_path / "direct").iterdir()) == sorted([".slicereuse-batch"] +
+                                                                             [f"{s}.sl1" for s in stems])
 
 
 @pytest.mark.parametrize("printer, extension", [("prusa_sl1s_speed", ".sl1s"), ("prusa_sl1", ".sl1"),
@@ -108,7 +110,8 @@ def test_cli_prints_one_json_object(make_family, tmp_path):
                           "--verify", *map(str, members)], capture_output=True, text=True)
     assert out.returncode == 0, out.stderr
     result = json.loads(out.stdout)
-    assert set(result) == {"source", "seconds", "targets"}
+    assert set(result) == {"source", "seconds", "source_seconds", "engine", "failed", "targets"}
+    assert result["failed"] == 0 and result["engine"].startswith("LocalCluster of ")
     assert len(result["targets"]) == 2
     for t in result["targets"]:
         assert set(t) == TARGET_KEYS | {"min_similarity", "max_grey_difference"}

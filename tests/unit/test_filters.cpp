@@ -22,6 +22,7 @@
 #include "slicereuse/slicing/slice_layers.h"
 #include "slicereuse/transfer/transfer_contours.h"
 #include "temp_folder.h"
+#include "test_files.h"
 
 namespace slicereuse::plugin {
 namespace {
@@ -105,7 +106,7 @@ TEST(Filters, NamesAreUniqueAndEveryParameterIsDeclaredOnce) {
     std::set<std::string> params;
     for (const ParamSpec& p : f.params) EXPECT_TRUE(params.insert(p.name).second) << f.name << ": " << p.name;
   }
-  EXPECT_EQ(filter_specs().size(), 8u);
+  EXPECT_EQ(filter_specs().size(), 9u);
   EXPECT_EQ(find_filter_spec(-1), nullptr);
 }
 
@@ -358,6 +359,39 @@ TEST_F(FiltersThroughAFakeHost, MakePlateJobPutsTheShownMeshesOnPlatesAndReadsIt
       defaults(compare_spec, {{"stack_a", path("plate_1.sl1")}, {"stack_b", path("direct_1.sl1")}}), host);
   EXPECT_EQ(std::get<double>(compare.at("min_similarity")), 1.0);
   EXPECT_EQ(count(compare, "max_grey_difference"), 0);
+
+  // Arrange on Plates writes the same placements and layout without slicing; Make Plate Job's
+  // plate 1 of them, with only that plate's members loaded, is the same print file.
+  const FilterSpec& arrange_spec = spec_named("arrange_on_plates");
+  const Result arranged = arrange_spec.run(
+      defaults(arrange_spec, {{"placements_output", path("arranged.json")}, {"output_path", path("arranged.sl1")}}),
+      host);
+  EXPECT_EQ(keys_of(arranged), (std::set<std::string>{"plates", "members", "arrange_seconds", "seconds", "area_used_1"}));
+  EXPECT_EQ(count(arranged, "members"), 2);
+  EXPECT_EQ(std::get<double>(arranged.at("area_used_1")), std::get<double>(plate.at("area_used_1")));
+  EXPECT_EQ(test::slurp(path("arranged_1_layout.png")), test::slurp(path("plate_1_layout.png")));
+  EXPECT_FALSE(std::filesystem::exists(path("arranged_1.sl1")));
+  const Result one = plate_spec.run(defaults(plate_spec,
+                                             {{"encoding_file", path("s.srb")},
+                                              {"placements_file", path("arranged.json")},
+                                              {"output_path", path("one.sl1")}},
+                                             {{"plate", 1}}),
+                                    host);
+  EXPECT_EQ(count(one, "plates"), 1);
+  const Result same = compare_spec.run(
+      defaults(compare_spec, {{"stack_a", path("plate_1.sl1")}, {"stack_b", path("one_1.sl1")}}), host);
+  EXPECT_EQ(std::get<double>(same.at("min_similarity")), 1.0);
+  EXPECT_EQ(count(same, "max_grey_difference"), 0);
+  EXPECT_EQ(test::error_of([&] {
+              plate_spec.run(defaults(plate_spec, {{"placements_file", path("arranged.json")},
+                                                   {"output_path", path("two.sl1")}}, {{"plate", 2}}),
+                             host);
+            }),
+            "the placements have 1 plate: there is no plate 2");
+  EXPECT_NE(test::error_of([&] {
+              plate_spec.run(defaults(plate_spec, {{"output_path", path("lone.sl1")}}, {{"plate", 1}}), host);
+            }).find("give placements_file"),
+            std::string::npos);
 
   // Every mesh, the renumbered copy included: it is no member of the encoding's family.
   EXPECT_NE(test::error_of([&] {

@@ -24,6 +24,7 @@
 #include "slicereuse/plates/plate_file_names.h"
 #include "slicereuse/plates/placements_file.h"
 #include "slicereuse/plates/plate_job.h"
+#include "slicereuse/util/format.h"
 #include "slicereuse/slicing/slice_layers.h"
 #include "temp_folder.h"
 
@@ -318,6 +319,35 @@ TEST_F(PlacementsFileTest, ReadsBackExactlyThePlacementsUsed) {
   names.erase(names.begin());
   names.pop_back();
   EXPECT_NE(test::error_of([&] { arrangement_of(f, names); }).find("member 'ball' (plate"), std::string::npos);
+}
+
+// One plate of a file (what family.py's per-plate tasks load): its members only, as one plate.
+TEST_F(PlacementsFileTest, OnePlateOfAFileHoldsExactlyThatPlatesMembers) {
+  const Members s = mixed_members();
+  const Platform platform = printer_platform(display(300, 200));
+  const Arrangement a = arrange_plates(s.pointers(), s.names, platform, {});
+  ASSERT_GE(a.members.size(), 2u);
+  const PlacementsFile f = placements_of(a, s.names, 2, platform);
+  for (size_t k = 0; k < a.members.size(); ++k) {
+    std::vector<std::string> names;
+    for (size_t m : a.members[k]) names.push_back(s.names[m]);
+    const Arrangement one = arrangement_of(f, names, k + 1);
+    ASSERT_EQ(one.members.size(), 1u);
+    EXPECT_EQ(one.area_used[0], a.area_used[k]);
+    for (size_t i = 0; i < names.size(); ++i) {
+      EXPECT_EQ(one.members[0][i], i);
+      EXPECT_EQ(one.plate[i], 0u);
+      EXPECT_EQ(one.placement[i].tx_mm, a.placement[a.members[k][i]].tx_mm);
+      EXPECT_EQ(one.placement[i].theta_deg, a.placement[a.members[k][i]].theta_deg);
+    }
+  }
+  std::vector<std::string> first;
+  for (size_t m : a.members[0]) first.push_back(s.names[m]);
+  first.push_back(s.names[a.members[1][0]]);
+  EXPECT_EQ(test::error_of([&] { arrangement_of(f, first, 1); }),
+            "the placements do not place member '" + s.names[a.members[1][0]] + "' on plate 1");
+  EXPECT_EQ(test::error_of([&] { arrangement_of(f, first, a.members.size() + 1); }),
+            format("the placements have %zu plates: there is no plate %zu", a.members.size(), a.members.size() + 1));
 }
 
 TEST_F(PlacementsFileTest, RefusesBrokenFilesNamingTheProblem) {

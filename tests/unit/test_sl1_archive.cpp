@@ -42,6 +42,7 @@ Slices l_stack() {
 struct Entry {
   std::string name;
   bool stored;
+  time_t mtime;
 };
 
 std::vector<Entry> entries(const std::string& archive) {
@@ -53,7 +54,7 @@ std::vector<Entry> entries(const std::string& archive) {
   for (zip_int64_t i = 0; i < zip_get_num_entries(z, 0); ++i) {
     zip_stat_t st;
     zip_stat_index(z, zip_uint64_t(i), 0, &st);
-    list.push_back({st.name, st.comp_method == ZIP_CM_STORE});
+    list.push_back({st.name, st.comp_method == ZIP_CM_STORE, st.mtime});
   }
   zip_discard(z);
   return list;
@@ -269,15 +270,19 @@ class SourceDateEpoch {
 TEST_F(Sl1Archive, SourceDateEpochMakesPrintFilesByteIdenticalWheneverTheyAreMade) {
   // What family.py's batches rely on: a member made again on another worker, or a second later,
   // gives the same bytes as the first time (config.ini's time and the entries' times included).
+  // The same file name in two folders: an archive's jobDir (and so its entries' names) is its stem.
   const SourceDateEpoch epoch("1764000000");  // 2025-11-24 16:00:00 UTC
-  for (const char* name : {"a.sl1", "a.goo", "b.sl1", "b.goo"})
-    export_masks(l_stack(), printer_preset(std::string(name).back() == 'o' ? "elegoo_saturn_3_ultra" : "prusa_sl1")
-                               .profile,
-                 path(name));
-  EXPECT_EQ(test::slurp(path("a.sl1")), test::slurp(path("b.sl1")));
-  EXPECT_EQ(test::slurp(path("a.goo")), test::slurp(path("b.goo")));
-  EXPECT_NE(test::zip_entry(path("a.sl1"), "config.ini").find("fileCreationTimestamp = 2025-11-24 at 16:00:00 UTC\n"),
+  for (const char* folder : {"first", "second"}) {
+    std::filesystem::create_directory(path(folder));
+    export_masks(l_stack(), printer_preset("prusa_sl1").profile, path(folder) + "/part.sl1");
+    export_masks(l_stack(), printer_preset("elegoo_saturn_3_ultra").profile, path(folder) + "/part.goo");
+  }
+  EXPECT_EQ(test::slurp(path("first/part.sl1")), test::slurp(path("second/part.sl1")));
+  EXPECT_EQ(test::slurp(path("first/part.goo")), test::slurp(path("second/part.goo")));
+  EXPECT_NE(test::zip_entry(path("first/part.sl1"), "config.ini")
+                .find("fileCreationTimestamp = 2025-11-24 at 16:00:00 UTC\n"),
             std::string::npos);
+  for (const Entry& e : entries(path("first/part.sl1"))) EXPECT_EQ(e.mtime, time_t(1764000000)) << e.name;
 }
 
 TEST_F(Sl1Archive, AMalformedSourceDateEpochIsRefusedInWords) {

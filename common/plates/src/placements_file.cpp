@@ -44,14 +44,18 @@ PlacementsFile placements_of(const Arrangement& a, const std::vector<std::string
   return f;
 }
 
-Arrangement arrangement_of(const PlacementsFile& file, const std::vector<std::string>& names) {
+Arrangement arrangement_of(const PlacementsFile& file, const std::vector<std::string>& names, size_t plate) {
+  if (plate > file.plates.size())
+    throw Error(format("the placements have %zu plate%s: there is no plate %zu", file.plates.size(),
+                       file.plates.size() == 1 ? "" : "s", plate));
   std::map<std::string, size_t> index;
   for (size_t m = 0; m < names.size(); ++m)
     if (!index.emplace(names[m], m).second) throw Error("two members are named '" + names[m] + "'");
   Arrangement a;
   a.placement.resize(names.size());
   a.plate.assign(names.size(), SIZE_MAX);
-  for (size_t k = 0; k < file.plates.size(); ++k) {
+  const size_t first = plate ? plate - 1 : 0, end = plate ? plate : file.plates.size();
+  for (size_t k = first; k < end; ++k) {
     a.members.emplace_back();
     for (size_t i = 0; i < file.plates[k].names.size(); ++i) {
       const std::string& name = file.plates[k].names[i];
@@ -60,14 +64,16 @@ Arrangement arrangement_of(const PlacementsFile& file, const std::vector<std::st
         throw Error(format("the placements place member '%s' (plate %zu), which is not among the members given",
                            name.c_str(), k + 1));
       if (a.plate[it->second] != SIZE_MAX) throw Error("the placements place member '" + name + "' twice");
-      a.plate[it->second] = k;
+      a.plate[it->second] = k - first;
       a.placement[it->second] = file.plates[k].placements[i];
-      a.members[k].push_back(it->second);
+      a.members.back().push_back(it->second);
     }
     a.area_used.push_back(file.plates[k].area_used);
   }
   for (size_t m = 0; m < names.size(); ++m)
-    if (a.plate[m] == SIZE_MAX) throw Error("the placements do not place member '" + names[m] + "'");
+    if (a.plate[m] == SIZE_MAX)
+      throw Error(plate ? format("the placements do not place member '%s' on plate %zu", names[m].c_str(), plate)
+                        : "the placements do not place member '" + names[m] + "'");
   return a;
 }
 

@@ -9,9 +9,11 @@
 // syntax error, or the plate and member of a missing or mistyped field, a non-finite number, a
 // member named twice, or a plate without members. Fields the reader does not know are ignored
 // (a host may add its own figures).
-// arrangement_of(plates, names): the Arrangement (arrange_plates.h) of the members `names` that
-// the file describes; throws Error naming a member the file places that is not among names, or
-// a member of names it does not place.
+// arrangement_of(plates, names, plate): the Arrangement (arrange_plates.h) of the members `names`
+// that the file describes: of every plate (plate 0), or of plate `plate` only (from 1; then the
+// Arrangement has that one plate, and names are its members); throws Error naming a plate the
+// file does not have, a member the file places that is not among names, or a member of names it
+// does not place.
 #include <string>
 #include <vector>
 
@@ -36,7 +38,7 @@ struct PlacementsFile {
 PlacementsFile placements_of(const Arrangement& a, const std::vector<std::string>& names, double spacing_mm,
                              const Platform& platform, const std::vector<std::string>& outputs = {});
 
-Arrangement arrangement_of(const PlacementsFile& file, const std::vector<std::string>& names);
+Arrangement arrangement_of(const PlacementsFile& file, const std::vector<std::string>& names, size_t plate = 0);
 
 void write_placements_file(const std::string& path, const PlacementsFile& file);
 

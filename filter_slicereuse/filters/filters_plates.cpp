@@ -1,0 +1,318 @@
+// The plate filters (issue #17). "Arrange on Plates": the loaded meshes arranged on build plates
+// (or placed as a placements file says), the placements file and each plate's layout picture
+// written, nothing sliced. "Make Plate Job": the same, then each plate's print file (or only one
+// plate's: what family.py's per-plate tasks run) by reuse of a source's encoding or by direct
+// slicing, its layout picture beside it. Both share plan_plates.
+#include <map>
+
+#include "filter_params.h"
+#include "filters_common.h"
+#include "slicereuse/plates/arrange_plates.h"
+#include "slicereuse/plates/placements_file.h"
+#include "slicereuse/plates/plate_file_names.h"
+#include "slicereuse/plates/plate_job.h"
+#include "slicereuse/plates/plate_layout.h"
+#include "slicereuse/util/error.h"
+#include "slicereuse/util/memory_budget.h"
+
+namespace slicereuse::plugin {
+namespace {
+
+struct PlateJobParams {
+  bool visible_only;
+  std::string encoding_file;
+  double layer_thickness;
+  double z_start;
+  double spacing_mm;
+  double rotation_step_deg;
+  std::string placements_file;
+  std::string placements_output;
+  std::string output_path;
+  int plate;
+  PrinterSettings printer;
+};
+
+// The parameters both filters have, with the same names, labels and tooltips.
+template <class P>
+void add_visible_only(ParamList<P>& l) {
+  l.flag(&P::visible_only, "visible_only", "Visible meshes only", true,
+         "The members are the loaded meshes with faces that are shown (the eye in the layer dialog); off: every "
+         "loaded mesh with faces. pymeshlab and meshlabserver show every mesh they load.");
+}
+
+template <class P>
+void add_arrangement(ParamList<P>& l) {
+  const ArrangeOptions d;
+  l.number(&P::spacing_mm, "spacing_mm", "Spacing (mm)", d.spacing_mm, Range::at_least(0, "mm"),
+           "Distance kept between the members' footprints, and from the display's edges, in mm.")
+      .number(&P::rotation_step_deg, "rotation_step_deg", "Rotation step (degrees)", d.rotation_step_deg,
+              Range::between(1, 360, "degrees"), "Members are tried turned about z by multiples of this angle; 360: "
+                                                 "never turned.")
+      .file(&P::placements_file, ParamType::FileOpen, "placements_file", "Placements file", "*.json", nullptr,
+            "A placements file (JSON, as the plate filters write it) that says which member goes on which plate "
+            "and where, by the members' layer names, instead of arranging them. Empty (the default): arrange.");
+}
+
+template <class P>
+void add_placements_output(ParamList<P>& l, const char* when_empty, const char* tooltip) {
+  l.file(&P::placements_output, ParamType::FileSave, "placements_output", "Write placements to", "*.json", when_empty,
+         tooltip);
+}
+
+template <class P>
+void add_output_path(ParamList<P>& l, const char* tooltip) {
+  l.file(&P::output_path, ParamType::FileSave, "output_path", "Output .sl1, .sl1s, .goo or folder",
+         "*.sl1 *.sl1s *.goo", kMaskOutputWhenEmpty, tooltip);
+}
+
+ParamList<PlateJobParams> plate_job_params() {
+  ParamList<PlateJobParams> l;
+  add_visible_only(l);
+  l.file(&PlateJobParams::encoding_file, ParamType::FileOpen, "encoding_file", "Source encoding file", "*.enc *.srb",
+         nullptr,
+         "Encoding file written by Slice Mesh with Encoding for a member of the family: every member's layers are "
+         "transferred from it (exact). Empty: every member is sliced directly.")
+      .number(&PlateJobParams::layer_thickness, "layer_thickness", "Layer thickness (mm)", 0.1, Range::above(0, "mm"),
+              "Used when slicing directly (no encoding file): distance between slicing planes, in mm. With an "
+              "encoding file, the encoding's layers are used.")
+      .number(&PlateJobParams::z_start, "z_start", "Start height (mm)", kLowestVertexZStart, Range::any(),
+              "Used when slicing directly: bottom of the first layer, in mm; at or below -1e29 (the default): the "
+              "lowest vertex of all members.");
+  add_arrangement(l);
+  add_placements_output(l, nullptr,
+                        "Also write the plates' placements, members and area used here (JSON). Empty (the default): "
+                        "not written.");
+  add_output_path(l, "One print file per plate, numbered: plate.sl1 gives plate_1.sl1, plate_2.sl1, ... (.sl1 or "
+                     ".sl1s: Prusa archives, .goo: Elegoo print files); a folder name gives folders name_1, name_2, "
+                     "... of PNG images. Each plate's layout picture is written beside it (plate_1_layout.png).");
+  l.whole(&PlateJobParams::plate, "plate", "Only plate", 0, Range::at_least(0, ""),
+          "0 (the default): every plate. 1, 2, ...: only that plate of the placements file, whose members are the "
+          "loaded meshes, into its numbered print file (plate_2.sl1 for 2), as a job split over many machines "
+          "makes each plate.");
+  l.include(&PlateJobParams::printer, printer_params());
+  return l;
+}
+
+// Layer names as members' names; a name loaded twice gets "#2", "#3", ... so each is unique.
+std::vector<std::string> unique_names(const std::vector<Host::NamedMesh>& meshes) {
+  std::map<std::string, int> seen;
+  std::vector<std::string> names;
+  for (const Host::NamedMesh& m : meshes) {
+    const int n = ++seen[m.name];
+    names.push_back(n == 1 ? m.name : m.name + "#" + std::to_string(n));
+  }
+  return names;
+}
+
+// The members and where they go: the loaded meshes with faces (shown only, with visible_only),
+// named by unique_names, arranged or placed as the placements file says (plate > 0: only that
+// plate of it, whose members are the loaded meshes).
+struct PlatePlan {
+  std::vector<Host::NamedMesh> loaded;
+  std::vector<std::string> names;
+  std::vector<const Mesh*> members;
+  Platform platform;
+  Arrangement arrangement;
+  double arrange_seconds = 0;
+};
+
+template <class P>
+PlatePlan plan_plates(const P& p, size_t plate, const PrinterProfile& profile, Host& host, const Progress& progress) {
+  PlatePlan plan;
+  plan.loaded = host.meshes_with_faces(p.visible_only);
+  if (plan.loaded.empty())
+    throw Error(p.visible_only ? "no shown mesh with faces: show (or load) the members to put on the plates"
+                               : "no loaded mesh has faces: load the members to put on the plates");
+  plan.names = unique_names(plan.loaded);
+  for (const Host::NamedMesh& m : plan.loaded) plan.members.push_back(&m.mesh);
+  plan.platform = printer_platform(profile);
+  const auto start = std::chrono::steady_clock::now();
+  ArrangeOptions ao;
+  ao.spacing_mm = p.spacing_mm;
+  ao.rotation_step_deg = p.rotation_step_deg;
+  plan.arrangement = p.placements_file.empty()
+                         ? arrange_plates(plan.members, plan.names, plan.platform, ao, progress)
+                         : arrangement_of(read_placements_file(p.placements_file), plan.names, plate);
+  plan.arrange_seconds = seconds_since(start);
+  return plan;
+}
+
+// Plate k's members moved to their placements, and their names.
+std::vector<Mesh> placed_members(const PlatePlan& plan, size_t k, std::vector<std::string>* names) {
+  std::vector<Mesh> placed;
+  for (size_t m : plan.arrangement.members[k]) {
+    placed.push_back(place_mesh(*plan.members[m], plan.arrangement.placement[m]));
+    names->push_back(plan.names[m]);
+  }
+  return placed;
+}
+
+Result run_plate_job(const PlateJobParams& p, Host& host) {
+  const auto start = std::chrono::steady_clock::now();
+  const PrinterProfile profile = p.printer.profile();
+  log_printer(host, "Make Plate Job", p.printer);
+  if (p.plate > 0 && p.placements_file.empty())
+    throw Error(format("plate is %d: only a plate of a placements file can be made alone; give placements_file, "
+                       "or plate 0 for every plate",
+                       p.plate));
+  if (p.plate > 0 && !p.placements_output.empty())
+    throw Error(format("plate is %d: the placements are the placements file's already; leave placements_output "
+                       "empty",
+                       p.plate));
+  const size_t first = p.plate > 0 ? size_t(p.plate) : 1;  // the number of the first plate made
+  check_outputs({{"placements_output", p.placements_output}, {"output_path", plate_file_name(p.output_path, first)}});
+  const Progress progress = host.progress();
+  const PlatePlan plan = plan_plates(p, size_t(p.plate), profile, host, sub_progress(progress, 0, 0.1));
+  const Arrangement& arrangement = plan.arrangement;
+  const std::vector<std::string>& names = plan.names;
+  const std::vector<const Mesh*>& members = plan.members;
+  const double arrange_seconds = plan.arrange_seconds;
+
+  PlateJobOptions jo;
+  jo.slicing = slice_options(p.layer_thickness, p.z_start);
+  jo.slicing.encoding = false;
+  jo.range_budget_bytes = available_memory() / 4;
+  bool cached = false;
+  std::shared_ptr<const CachedEncoding> entry;
+  if (!p.encoding_file.empty()) {
+    entry = encoding_cache().get(p.encoding_file, *members[0], &cached, sub_progress(progress, 0.1, 0.15));
+    jo.encoding = &entry->encoding;
+    jo.edge_ends = &entry->edge_ends;
+  }
+
+  const size_t plates = arrangement.members.size();
+  std::vector<std::string> outputs;
+  PlateJobStats total;
+  size_t layers = 0;
+  for (size_t k = 0; k < plates; ++k) {
+    const auto plate_start = std::chrono::steady_clock::now();
+    std::vector<std::string> plate_names;
+    const std::vector<Mesh> placed = placed_members(plan, k, &plate_names);
+    outputs.push_back(plate_file_name(p.output_path, first + k));
+    const double from = 0.15 + 0.85 * double(k) / double(plates), to = 0.15 + 0.85 * double(k + 1) / double(plates);
+    const PlateJobStats st = export_plate(placed, jo, profile, outputs.back(), sub_progress(progress, from, to));
+    write_plate_layout(plate_layout_file_name(outputs.back()), placed, plate_names, plan.platform);
+    layers = std::max(layers, st.layers);
+    total.points += st.points;
+    total.transferred_layers += st.transferred_layers;
+    total.resliced_layers += st.resliced_layers;
+    total.slicing_seconds += st.slicing_seconds;
+    total.ranges += st.ranges - 1;
+    host.log(format("Make Plate Job: plate %zu: %zu members, %.1f %% of the platform, %zu layers, to %s, %.3f s", first + k,
+                    placed.size(), 100 * arrangement.area_used[k], st.layers, outputs.back().c_str(),
+                    seconds_since(plate_start)));
+    log_display_warning(host, "Make Plate Job", st.masks, profile);
+  }
+  if (!p.placements_output.empty())
+    write_placements_file(p.placements_output,
+                          placements_of(arrangement, names, p.spacing_mm, plan.platform, outputs));
+
+  const double seconds = seconds_since(start);
+  host.log(format("Make Plate Job: %zu members on %zu plates (%s %.3f s), %zu points, %zu member layers transferred, "
+                  "%zu sliced, %.3f s",
+                  members.size(), plates, p.placements_file.empty() ? "arranged in" : "placed by the file in",
+                  arrange_seconds, total.points, total.transferred_layers, total.resliced_layers, seconds));
+  Result result = {{"plates", int64_t(plates)},
+                   {"members", int64_t(members.size())},
+                   {"layers", int64_t(layers)},
+                   {"points", int64_t(total.points)},
+                   {"transferred_layers", int64_t(total.transferred_layers)},
+                   {"resliced_layers", int64_t(total.resliced_layers)},
+                   {"encoding_cached", int64_t(cached)},
+                   {"arrange_seconds", arrange_seconds},
+                   {"slicing_seconds", total.slicing_seconds},
+                   {"seconds", seconds}};
+  for (size_t k = 0; k < plates; ++k) result[format("area_used_%zu", first + k)] = arrangement.area_used[k];
+  return result;
+}
+
+struct ArrangeParams {
+  bool visible_only;
+  double spacing_mm;
+  double rotation_step_deg;
+  std::string placements_file;
+  std::string placements_output;
+  std::string output_path;
+  PrinterSettings printer;
+};
+
+ParamList<ArrangeParams> arrange_params() {
+  ParamList<ArrangeParams> l;
+  add_visible_only(l);
+  add_arrangement(l);
+  add_placements_output(l, "choose the placements file to write (.json)",
+                        "The plates' placements, members and area used (JSON), for Make Plate Job's placements_file.");
+  add_output_path(l, "The print files the placements name, one per plate (plate.sl1 gives plate_1.sl1, "
+                     "plate_2.sl1, ...; a folder name gives name_1, name_2, ...); nothing is written there but "
+                     "each plate's layout picture beside it (plate_1_layout.png).");
+  l.include(&ArrangeParams::printer, printer_params());
+  return l;
+}
+
+Result run_arrange(const ArrangeParams& p, Host& host) {
+  const auto start = std::chrono::steady_clock::now();
+  const PrinterProfile profile = p.printer.profile();
+  log_printer(host, "Arrange on Plates", p.printer);
+  check_outputs({{"placements_output", p.placements_output},
+                 {"output_path", plate_layout_file_name(plate_file_name(p.output_path, 1))}});
+  const PlatePlan plan = plan_plates(p, 0, profile, host, host.progress());
+  const size_t plates = plan.arrangement.members.size();
+  std::vector<std::string> outputs;
+  for (size_t k = 0; k < plates; ++k) {
+    std::vector<std::string> plate_names;
+    const std::vector<Mesh> placed = placed_members(plan, k, &plate_names);
+    outputs.push_back(plate_file_name(p.output_path, k + 1));
+    write_plate_layout(plate_layout_file_name(outputs.back()), placed, plate_names, plan.platform);
+    host.log(format("Arrange on Plates: plate %zu: %zu members, %.1f %% of the platform, layout in %s", k + 1,
+                    placed.size(), 100 * plan.arrangement.area_used[k],
+                    plate_layout_file_name(outputs.back()).c_str()));
+  }
+  write_placements_file(p.placements_output,
+                        placements_of(plan.arrangement, plan.names, p.spacing_mm, plan.platform, outputs));
+  host.log(format("Arrange on Plates: %zu members on %zu plates (%s %.3f s), placements in %s", plan.members.size(),
+                  plates, p.placements_file.empty() ? "arranged in" : "placed by the file in", plan.arrange_seconds,
+                  p.placements_output.c_str()));
+  Result result = {{"plates", int64_t(plates)},
+                   {"members", int64_t(plan.members.size())},
+                   {"arrange_seconds", plan.arrange_seconds},
+                   {"seconds", seconds_since(start)}};
+  for (size_t k = 0; k < plates; ++k) result[format("area_used_%zu", k + 1)] = plan.arrangement.area_used[k];
+  return result;
+}
+
+}  // namespace
+
+FilterSpec arrange_plates_filter() {
+  const std::string description = std::string(
+      "<p>Arranges many members of a family on build plates, as <i>Make Plate Job</i> does, without slicing: "
+      "the members (the shown meshes with faces, or every loaded one) are placed on the printer's display "
+      "without overlap, each member's footprint kept <i>spacing</i> from the others and from the display's "
+      "edges, turned about z where that packs more; members that do not fit go to the next plate.</p>"
+      "<p>Writes the placements file, to look at or edit and to give to <i>Make Plate Job</i> (every plate, "
+      "or one plate per run on many machines), and a top-view picture of each plate with each member's "
+      "outline and name beside the print file it names (<i>_layout.png</i>).</p>") +
+      kReference;
+  return typed_filter({FilterId::ArrangePlates, "Arrange on Plates", "arrange_on_plates", description, Arity::None,
+                       kLayerClass, false},
+                      arrange_params(), run_arrange);
+}
+
+FilterSpec plate_job_filter() {
+  const std::string description = std::string(
+      "<p>Puts many members of a family on build plates and makes one print file per plate, as a lab "
+      "prints them: the members (the shown meshes with faces, or every loaded one) are arranged on the "
+      "printer's display without overlap, each member's footprint (the outline of its projection, not a "
+      "bounding box) kept <i>spacing</i> from the others and from the display's edges, turned about z where "
+      "that packs more; members that do not fit go to the next plate. A placements file can say where "
+      "they go instead.</p>"
+      "<p>Each plate's layer is the union of its members' layers at that height, each member transferred "
+      "from the source's encoding onto its placed vertices (exact, as <i>Make Print Job</i>) or sliced "
+      "directly; members of different heights simply end. Next to each print file, a top-view picture of "
+      "the plate with each member's outline and name (<i>_layout.png</i>).</p>") +
+      kReference;
+  return typed_filter({FilterId::MakePlateJob, "Make Plate Job", "make_plate_job", description, Arity::None,
+                       kLayerClass, false},
+                      plate_job_params(), run_plate_job);
+}
+
+}  // namespace slicereuse::plugin
