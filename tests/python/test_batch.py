@@ -117,6 +117,27 @@ def test_a_dask_cluster_makes_the_same_bytes_as_this_process(make_family, tmp_pa
     assert not list(Path(tempfile.gettempdir(), "slicereuse-shared").glob("*.srb"))
 
 
+def test_plates_on_a_dask_cluster_are_the_same_bytes_and_resume(make_family, tmp_path, cluster):
+    """family.py --plates: the arrangement is made once, then every plate is a task; on the
+    cluster the plates' print files, layouts and placements are the in-process run's, byte for
+    byte, and each equals direct slicing; --resume keeps every plate of a complete run."""
+    members = make_family("arch", 8)
+    args = ["--plates", "--verify", "--layer-thickness", "0.1", "--printer", "method", *members]
+    here = json.loads(family_py("--workers", "0", *args, out=tmp_path / "here").stdout)
+    assert len(here["plates"]) >= 2 and here["members"] == 7  # the method's small display
+    there = json.loads(family_py("--scheduler", cluster.address, *args, out=tmp_path / "cluster").stdout)
+
+    def made(folder):  # the placements name each plate's print file by its path
+        f = files(tmp_path / folder)
+        return dict(f, **{"plates.json": f["plates.json"].replace(str(tmp_path / folder).encode(), b"OUT")})
+    assert made("cluster") == made("here")
+    assert there["failed"] == 0 and {p["worker"] for p in there["plates"]} <= {"w1", "w2"}
+    assert all(p["min_similarity"] == 1.0 and p["max_grey_difference"] == 0 for p in there["plates"])
+    again = json.loads(family_py("--resume", "--workers", "0", *args, out=tmp_path / "here").stdout)
+    assert all(p.get("resumed") for p in again["plates"]), again
+    assert made("here") == made("cluster")
+
+
 def test_a_worker_killed_while_it_holds_a_task_loses_nothing(make_family, tmp_path, cluster):
     """One of two workers is killed (SIGKILL) while it runs a member: the batch completes, its task
     made again on the other worker, every output complete and equal to the in-process run's, and
