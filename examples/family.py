@@ -19,8 +19,8 @@ Prints one JSON object: {"source": MESH0, "seconds": total, "source_seconds", "e
 .sl1, "worker" says which worker process made it. A progress bar goes to a terminal's stderr.
 
 Members are tasks of a Dask cluster (python/slicereuse_batch.py): by default an embedded
-LocalCluster of --workers worker processes on this machine (default: one per core; --workers 0:
-everything in this process); --scheduler an existing cluster (`dask scheduler` and `dask worker`
+LocalCluster of --workers worker processes on this machine (default: one per two cores, each
+with two threads, the best measured here; --workers 0: everything in this process); --scheduler an existing cluster (`dask scheduler` and `dask worker`
 elsewhere, README "Family batches on a cluster"), whose workers write to DIR at the same path.
 Outputs appear complete or not at all; --resume skips members whose outputs an earlier run made
 complete and valid (checked by content, with the same inputs and parameters). A member that
@@ -77,7 +77,7 @@ def main():
     ap.add_argument("--spacing", type=float, default=2.0, help="--plates: spacing between members in mm")
     ap.add_argument("--placements", help="--plates: a placements file to use instead of arranging")
     ap.add_argument("--workers", type=int, help="worker processes of the embedded Dask LocalCluster "
-                    "(default: one per core); 0: make everything in this process")
+                    "(default: one per two cores); 0: make everything in this process")
     ap.add_argument("--scheduler", help="run on this Dask cluster instead (tcp://HOST:PORT)")
     ap.add_argument("--send-encoding", action="store_true",
                     help="send the source's encoding to each worker once, instead of workers reading it from --out "

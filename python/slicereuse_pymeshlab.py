@@ -95,10 +95,10 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     keep_contours=True: also writes out/<stem>.srb (.ctr when binary is False).
 
     Where the members are made (slicereuse_batch.py): workers=0 (the default) in this process;
-    workers=N an embedded Dask LocalCluster of N worker processes (None: one per core);
+    workers=N an embedded Dask LocalCluster of N worker processes (None: one per two cores, slicereuse_batch.default_workers);
     scheduler="tcp://host:port" an existing Dask cluster whose workers write to out at the same
-    path; they read the source's encoding from out when they run on this machine, else (or with
-    send_encoding=True) it is sent once to each worker. Every member is a task whose outputs
+    path; they read the source's encoding from out, or with send_encoding=True it is sent once
+    to each worker. Every member is a task whose outputs
     appear complete or not at all, recorded in
     out/.slicereuse-batch/; resume=True skips members (and the source's slicing) whose outputs
     are complete and valid from an earlier run with the same inputs and parameters. A member

@@ -109,7 +109,8 @@ def test_a_dask_cluster_makes_the_same_bytes_as_this_process(make_family, tmp_pa
         assert result["failed"] == 0 and len(result["targets"]) == 5
         assert all(t["min_similarity"] == 1.0 and t["max_grey_difference"] == 0 for t in result["targets"])
         if name == "local":
-            assert result["engine"] == f"LocalCluster of {os.cpu_count()} worker processes"
+            n = batch.default_workers()
+            assert result["engine"] == f"LocalCluster of {n} worker process{'es' if n > 1 else ''}"
         else:
             assert result["engine"] == f"Dask scheduler {cluster.address}"
             assert {t["worker"] for t in result["targets"]} <= {"w1", "w2"}, result
