@@ -150,25 +150,33 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
                      "target": str(target), "output": str(output), "contours": str(contours or ""),
                      "check": str(check or ""), "layer_thickness": layer_thickness, "profile": profile,
                      "details": details})
+    targets_out, where = _run_jobs(jobs, _make_member, encoding, send_encoding, resume, workers, scheduler,
+                                   progress, step, steps)
+    return {"source": str(source), "seconds": time.perf_counter() - start, "source_seconds": source_seconds,
+            "engine": where, "failed": sum("error" in e for e in targets_out), "targets": targets_out}
+
+
+def _run_jobs(jobs, make, encoding, send_encoding, resume, workers, scheduler, progress, done, steps):
+    """family()'s and plates()'s tasks: with resume, the jobs an earlier run made (valid_record)
+    are kept, marked "resumed"; make(job, encoding) runs the others on the engine (workers,
+    scheduler), which shares encoding ("" none) with them; progress counts on from done.
+    Returns (the entries in the order of jobs, the engine's description)."""
     entries = {}
     if resume:
         for job in jobs:
             kept = batch.valid_record(job)
             if kept:
                 entries[job["name"]] = dict(kept, resumed=True)
-    step += len(entries)
     todo = [job for job in jobs if job["name"] not in entries]
     with batch.engine(workers, scheduler, setup=load) as engine:
         if todo:
             shared = engine.share(encoding, send_encoding) if encoding else ""
-            entries.update(batch.run(engine, _make_member, todo, shared, progress, done=step, steps=steps))
+            entries.update(batch.run(engine, make, todo, shared, progress, done=done + len(entries), steps=steps))
         engine.finish(_free_cached_memory)
         where = engine.description
     if progress:
         progress(steps, steps, "done")
-    targets_out = [entries[job["name"]] for job in jobs]
-    return {"source": str(source), "seconds": time.perf_counter() - start, "source_seconds": source_seconds,
-            "engine": where, "failed": sum("error" in e for e in targets_out), "targets": targets_out}
+    return [entries[job["name"]] for job in jobs], where
 
 
 _failed_meshsets = []
@@ -295,22 +303,7 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
                      "z_start": arranged["z_start"], "profile": profile, "check": str(check or ""),
                      "plate_output": str(out / f"plate{extension}"),
                      "check_output": str(out / f"plate.direct{extension}")})
-    entries = {}
-    if resume:
-        for job in jobs:
-            kept = batch.valid_record(job)
-            if kept:
-                entries[job["name"]] = dict(kept, resumed=True)
-    todo = [job for job in jobs if job["name"] not in entries]
-    with batch.engine(workers, scheduler, setup=load) as engine:
-        if todo:
-            shared = engine.share(encoding) if encoding else ""
-            entries.update(batch.run(engine, _make_plate, todo, shared, progress, done=1 + len(entries), steps=steps))
-        engine.finish(_free_cached_memory)
-        where = engine.description
-    if progress:
-        progress(steps, steps, "done")
-    plates_out = [entries[job["name"]] for job in jobs]
+    plates_out, where = _run_jobs(jobs, _make_plate, encoding, False, resume, workers, scheduler, progress, 1, steps)
     return {"source": str(source), "members": arranged["members"], "seconds": time.perf_counter() - start,
             "arrange_seconds": arranged["arrange_seconds"], "engine": where,
             "failed": sum("error" in e for e in plates_out), "plates": plates_out}
