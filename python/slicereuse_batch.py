@@ -169,8 +169,15 @@ def creation_time(epoch):
 
 
 def batch_epoch():
-    """The creation time every file of a batch records: $SOURCE_DATE_EPOCH, else now."""
-    return int(os.environ.get("SOURCE_DATE_EPOCH") or time.time())
+    """The creation time every file of a batch records: $SOURCE_DATE_EPOCH, else now. Refuses a
+    value that is not a whole number of seconds as the print files' writers do (util/format.h)."""
+    given = os.environ.get("SOURCE_DATE_EPOCH")
+    if not given:
+        return int(time.time())
+    if not (given.isascii() and given.isdigit() and len(given) <= 12):
+        raise ValueError(f"SOURCE_DATE_EPOCH is '{given}': it must be the creation time as a whole number of "
+                         "seconds since 1970-01-01 UTC, or unset")
+    return int(given)
 
 
 # ---- The shared input, sent once to each worker ----

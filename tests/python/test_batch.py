@@ -219,6 +219,18 @@ def test_a_failing_member_is_reported_and_the_others_are_made(make_family, tmp_p
     assert not (tmp_path / "out" / "ear.sl1").exists() and partial_files(tmp_path) == []
 
 
+def test_a_batch_refuses_a_malformed_creation_time(monkeypatch):
+    """batch_epoch: SOURCE_DATE_EPOCH as the print files' writers read it, refused in their words."""
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "1764000000")
+    assert batch.batch_epoch() == 1764000000
+    for bad in ["yesterday", "-5", "1.5", "1e9", "1234567890123"]:
+        monkeypatch.setenv("SOURCE_DATE_EPOCH", bad)
+        with pytest.raises(ValueError) as e:
+            batch.batch_epoch()
+        assert str(e.value) == (f"SOURCE_DATE_EPOCH is '{bad}': it must be the creation time as a whole number of "
+                                "seconds since 1970-01-01 UTC, or unset")
+
+
 def test_a_record_proves_its_outputs_by_content(tmp_path):
     """valid_record: the job's key and every output's size and content; a worker that does not see
     the output folder says so."""
