@@ -132,3 +132,35 @@ def test_family_py_plates_verifies_every_plate(make_family, tmp_path):
         assert p["output"].endswith(".sl1") and (tmp_path / p["layout"]).is_file()
     written = json.loads((tmp_path / "plates.json").read_text())
     assert [[m["name"] for m in p["members"]] for p in written["plates"]] == [p["members"] for p in result["plates"]]
+
+
+def test_meshlabserver_arranges_then_makes_each_plate_alone(meshlabserver, make_family, tmp_path):
+    """The float host: Arrange on Plates writes the placements and layouts without slicing; Make
+    Plate Job from them makes every plate at once, and each plate again alone (plate k, only its
+    members loaded), with the same masks and layout."""
+    members = make_family("arch", 8)
+    slice_ = ("slice.mlx", {"layer_thickness": THICKNESS, "contour_file": "", "encoding_file": tmp_path / "s.srb"})
+    _run(meshlabserver, tmp_path, [members[0]], [slice_])
+    arrange = ("arrange_plates.mlx", {"placements_output": tmp_path / "plates.json",
+                                      "output_path": tmp_path / "plate.sl1", "printer": 0})
+    every = ("plate_job.mlx", {"encoding_file": tmp_path / "s.srb", "placements_file": tmp_path / "plates.json",
+                               "placements_output": "", "output_path": tmp_path / "all.sl1", "printer": 0})
+    (_, a), (_, e) = _run(meshlabserver, tmp_path, members[1:], [arrange, every])
+    assert a["members"] == e["members"] == 7 and a["plates"] == e["plates"] >= 2  # the method's small display
+    assert not (tmp_path / "plate_1.sl1").exists()
+    written = json.loads((tmp_path / "plates.json").read_text())
+    assert [p["output"] for p in written["plates"]] == [str(tmp_path / f"plate_{k}.sl1")
+                                                         for k in range(1, a["plates"] + 1)]
+    by_name = {m.name: m for m in members}
+    for k, plate in enumerate(written["plates"], 1):
+        alone = ("plate_job.mlx", {"encoding_file": tmp_path / "s.srb", "placements_file": tmp_path / "plates.json",
+                                   "placements_output": "", "output_path": tmp_path / "one.sl1", "plate": k,
+                                   "printer": 0})
+        [(_, r)] = _run(meshlabserver, tmp_path, [by_name[m["name"]] for m in plate["members"]], [alone])
+        assert r["plates"] == 1 and r["members"] == len(plate["members"]) and r[f"area_used_{k}"] == a[f"area_used_{k}"]
+        compare = ("compare.mlx", {"stack_a": tmp_path / f"one_{k}.sl1", "stack_b": tmp_path / f"all_{k}.sl1",
+                                   "report_file": ""})
+        [(_, c)] = _run(meshlabserver, tmp_path, [members[1]], [compare])
+        assert c["min_similarity"] == 1.0 and c["max_grey_difference"] == 0, c
+        layout = (tmp_path / f"plate_{k}_layout.png").read_bytes()
+        assert layout == (tmp_path / f"one_{k}_layout.png").read_bytes() == (tmp_path / f"all_{k}_layout.png").read_bytes()
