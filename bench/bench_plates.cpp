@@ -4,7 +4,9 @@
 // plate's placed members as one binary STL (plate_1.stl) and PrusaSlicer's display options for
 // the profile (prusa_display_args), for bench_plates.sh's PrusaSlicer run on the same plate.
 //   bench_plates [--printer ID] [--faces N] [--thickness MM] [--members M] [--plates P] [--out DIR]
-// --members: members besides the source (default 20); --plates: how many plates to time (default 1).
+// --members: members besides the source (default 20); --plates: how many plates to time (default
+// all). Freed buffers are kept for the next plate (ReuseBuffers), as Make Plate Job keeps them:
+// the first plate fills fresh pages, the others reuse them; the median is over the plates timed.
 #include <omp.h>
 
 #include <chrono>
@@ -22,6 +24,7 @@
 #include "slicereuse/plates/plate_job.h"
 #include "slicereuse/transfer/transfer_contours.h"
 #include "slicereuse/util/format.h"
+#include "slicereuse/util/buffer.h"
 #include "slicereuse/util/memory_budget.h"
 
 using namespace slicereuse;
@@ -60,7 +63,7 @@ void write_stl(const std::string& path, const std::vector<Mesh>& meshes) {
 
 int main(int argc, char** argv) {
   std::string printer = "prusa_sl1s_speed";
-  int plates_to_time = 1, members = 20;
+  int plates_to_time = 1 << 30, members = 20;
   std::vector<char*> rest{argv[0]};
   for (int i = 1; i < argc; ++i) {
     const std::string k = argv[i];
@@ -74,6 +77,7 @@ int main(int argc, char** argv) {
   for (size_t i = 1; i + 1 < rest.size(); i += 2)
     if (std::string(rest[i]) == "--thickness") args.thickness = std::atof(rest[i + 1]);
   std::filesystem::create_directories(args.out);
+  const ReuseBuffers keep;
   const PrinterPreset& preset = printer_preset(printer);
   // Anti-aliased at gamma 1, as PrusaSlicer draws the same plate (its gamma_correction default).
   PrinterProfile profile = preset.profile;
@@ -109,6 +113,7 @@ int main(int argc, char** argv) {
   std::printf("source sliced with encoding once: %zu layers, %zu points, %.2f s\n", encoding.layers(), encoding.points(),
               since(t));
 
+  std::vector<double> reuse_times, direct_times;
   std::printf("%-6s %8s %8s %12s %10s %10s %6s\n", "plate", "members", "layers", "points", "reuse s", "direct s", "S");
   for (size_t k = 0; k < a.members.size() && int(k) < plates_to_time; ++k) {
     std::vector<Mesh> placed;
@@ -130,12 +135,17 @@ int main(int argc, char** argv) {
     t = std::chrono::steady_clock::now();
     const PlateJobStats d = export_plate(placed, direct, profile, out + ".direct" + preset.extension);
     const double direct_s = since(t);
+    reuse_times.push_back(reuse_s);
+    direct_times.push_back(direct_s);
     std::printf("%-6zu %8zu %8zu %12zu %10.2f %10.2f %6.2f   (transfer %.2f s, slicing %.2f s; reuse: %zu member "
                 "layers transferred, %zu sliced; %zu ranges)\n",
                 k + 1, placed.size(), r.layers, r.points, reuse_s, direct_s, direct_s / reuse_s, r.slicing_seconds,
                 d.slicing_seconds, r.transferred_layers, r.resliced_layers, r.ranges);
     if (d.points != r.points) std::printf("  points differ: reuse %zu, direct %zu\n", r.points, d.points);
   }
+  if (!reuse_times.empty())
+    std::printf("median over %zu plates: reuse %.2f s, direct %.2f s\n", reuse_times.size(), median_of(reuse_times),
+                median_of(direct_times));
   // PrusaSlicer's options for the same display (bench_plates.sh).
   FILE* f = std::fopen((args.out + "/prusa_display_args").c_str(), "w");
   std::fprintf(f, "--display-pixels-x %d --display-pixels-y %d --display-width %.6f --display-height %.6f "

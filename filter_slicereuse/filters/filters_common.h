@@ -61,6 +61,11 @@ SliceOptions slice_options(double layer_thickness, double z_start);
 // The plugin's one cached encoding (Make Print Job; Free Cached Memory frees it).
 EncodingCache& encoding_cache();
 
+// From the first print or plate job on, large buffers one job frees are kept for the next
+// (ReuseBuffers) instead of going back to the kernel; reclaim_memory() (Free Cached Memory, or
+// a job short of memory) releases them.
+void keep_buffers_for_the_next_job();
+
 // Binary when the name ends in .srb, text otherwise.
 FileFormat format_for_name(const std::string& path);
 

@@ -161,6 +161,7 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
                        p.plate));
   const size_t first = p.plate > 0 ? size_t(p.plate) : 1;  // the number of the first plate made
   check_outputs({{"placements_output", p.placements_output}, {"output_path", plate_file_name(p.output_path, first)}});
+  keep_buffers_for_the_next_job();
   const Progress progress = host.progress();
   const PlatePlan plan = plan_plates(p, size_t(p.plate), profile, host, sub_progress(progress, 0, 0.1));
   const Arrangement& arrangement = plan.arrangement;

@@ -44,15 +44,6 @@ ParamList<PrintJobParams> print_job_params() {
   return l;
 }
 
-// From the first print job on, large buffers freed by one member's job are kept for the next
-// (ReuseBuffers, at most a quarter of the machine's memory) instead of being returned to the
-// kernel, which would zero gigabytes of fresh pages for every member: bench_member_loop
-// measured 2x the CPU time for transfer and 1.2-2.6x for direct slicing without this.
-// reclaim_memory() (Free Cached Memory, or a job short of memory) releases what is kept.
-void keep_buffers_for_the_next_member() {
-  static ReuseBuffers keep;
-}
-
 Result run_print_job(const PrintJobParams& p, Host& host) {
   const auto start = std::chrono::steady_clock::now();
   const PrinterProfile profile = p.printer.profile();
@@ -60,7 +51,7 @@ Result run_print_job(const PrintJobParams& p, Host& host) {
   const bool direct = p.encoding_file.empty();
   check_outputs({{"contour_file", p.contour_file}, {"output_path", p.output_path}});
 
-  keep_buffers_for_the_next_member();
+  keep_buffers_for_the_next_job();
   const Mesh mesh = host.current_mesh();
   const Progress progress = host.progress();
   TransferStats stats;

@@ -55,15 +55,16 @@ void write_binary(const std::string& path, const Slices& s, FileKind kind,
                   const Progress& progress) {
   const uint64_t L = s.layers(), C = s.contours(), P = s.points();
   unsigned char fields[kKindFieldBytes] = {};
-  unsigned char* f = fields - kThicknessAt;  // header offsets index into fields
-  put<double>(f + kThicknessAt, s.thickness);
-  put<double>(f + kZStartAt, s.z_start);
-  put<uint64_t>(f + kLayersAt, L);
-  put<uint64_t>(f + kContoursAt, C);
-  put<uint64_t>(f + kPointsAt, P);
+  // The fields begin at header offset kThicknessAt.
+  auto f = [&fields](size_t header_offset) { return fields + (header_offset - kThicknessAt); };
+  put<double>(f(kThicknessAt), s.thickness);
+  put<double>(f(kZStartAt), s.z_start);
+  put<uint64_t>(f(kLayersAt), L);
+  put<uint64_t>(f(kContoursAt), C);
+  put<uint64_t>(f(kPointsAt), P);
   if (kind == FileKind::Encoding) {
-    put<uint64_t>(f + kFingerprintFacesAt, s.fingerprint.faces);
-    put<uint64_t>(f + kFingerprintHashAt, s.fingerprint.hash);
+    put<uint64_t>(f(kFingerprintFacesAt), s.fingerprint.faces);
+    put<uint64_t>(f(kFingerprintHashAt), s.fingerprint.hash);
   }
   std::vector<SectionOut> sections;
   for (uint32_t id : section_ids(kind)) sections.push_back({id, section_data(s, id), section_bytes(id, L, C, P)});

@@ -46,6 +46,9 @@ struct Piece {
 };
 
 // The plate's layers [a, b): every piece's layer at that height, members one after another.
+// The contours are laid out first; the points, a layer's of a piece being one block, are then
+// copied on all cores: the copy fills fresh pages on a plate's first range, which the kernel
+// zeroes on the faulting thread.
 Slices merge_layers(const std::vector<Piece>& pieces, const std::vector<double>& planes, size_t a, size_t b,
                     double z_start, double h) {
   Slices out;
@@ -54,23 +57,33 @@ Slices merge_layers(const std::vector<Piece>& pieces, const std::vector<double>&
   out.layer_z.assign(planes.begin() + long(a), planes.begin() + long(b));
   out.layer_begin.push_back(0);
   out.contour_begin.push_back(0);
-  size_t points = 0;
-  for (const Piece& p : pieces) points += p.s.points();
-  out.xyz.resize(3 * points);
-  size_t q = 0;
+  struct Block {
+    const double* from;
+    uint64_t to, n;  // points
+  };
+  std::vector<Block> blocks;
+  uint64_t q = 0;
   for (size_t k = a; k < b; ++k) {
     for (const Piece& p : pieces) {
       if (k < p.first || k >= p.first + p.s.layers()) continue;
       const size_t local = k - p.first;
-      for (uint64_t c = p.s.layer_begin[local]; c < p.s.layer_begin[local + 1]; ++c) {
-        const uint64_t n = p.s.contour_begin[c + 1] - p.s.contour_begin[c];
-        std::memcpy(&out.xyz[3 * q], &p.s.xyz[3 * p.s.contour_begin[c]], 3 * n * sizeof(double));
-        q += n;
+      const uint64_t c0 = p.s.layer_begin[local], c1 = p.s.layer_begin[local + 1];
+      const uint64_t p0 = p.s.contour_begin[c0];
+      blocks.push_back({p.s.xyz.data() + 3 * p0, q, p.s.contour_begin[c1] - p0});
+      for (uint64_t c = c0; c < c1; ++c) {
+        q += p.s.contour_begin[c + 1] - p.s.contour_begin[c];
         out.contour_begin.push_back(q);
         out.contour_open.push_back(p.s.contour_open[c]);
       }
     }
     out.layer_begin.push_back(out.contour_open.size());
+  }
+  out.xyz.resize(3 * q);
+  const long long n = static_cast<long long>(blocks.size());
+#pragma omp parallel for schedule(dynamic, 16)
+  for (long long i = 0; i < n; ++i) {
+    const Block& block = blocks[size_t(i)];
+    std::memcpy(out.xyz.data() + 3 * block.to, block.from, 3 * block.n * sizeof(double));
   }
   return out;
 }
