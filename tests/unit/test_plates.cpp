@@ -185,10 +185,16 @@ void expect_valid(const Members& s, const Arrangement& a, const Platform& platfo
 TEST(Footprint, CoversEveryProjectedTriangleAndNotTheBoundingBox) {
   const test::FamilyOptions o = small_arch();
   const Mesh arch = test::make_family_base(o);
-  for (double theta : {0.0, 15.0, 90.0, 195.0, 270.0}) {
-    // At 180 degrees and more, also the reflection of the footprint 180 degrees before.
-    const Footprint f = theta < 180 ? mesh_footprint(arch, theta, 0.25)
-                                    : half_turn_footprint(mesh_footprint(arch, theta - 180, 0.25));
+  // Rasterized at the turn, or derived as the arrangement derives it: turned a quarter (q) or a
+  // half (h) from a footprint before, in the order listed.
+  const std::pair<double, const char*> cases[] = {{0, ""},    {15, ""},   {90, ""},  {105, "q"},
+                                                  {195, "h"}, {270, "h"}, {285, "qh"}};
+  for (const auto& [theta, turns] : cases) {
+    const std::string derived = turns;
+    double from = theta;
+    for (char t : derived) from -= t == 'q' ? 90 : 180;
+    Footprint f = mesh_footprint(arch, from, 0.25);
+    for (char t : derived) f = t == 'q' ? quarter_turn_footprint(f) : half_turn_footprint(f);
     // Every projected vertex of the turned arch lies in a marked cell.
     const Turn turn = turn_of(theta);
     for (size_t v = 0; v < arch.vertices(); ++v) {

@@ -158,7 +158,8 @@ Arrangement arrange_plates(const std::vector<const Mesh*>& members, const std::v
   for (int k = 0; k * o.rotation_step_deg < 360 - 1e-9; ++k) thetas.push_back(k * o.rotation_step_deg);
 
   // Every member must be a mesh and fit an empty plate at some rotation; refused before
-  // anything is placed.
+  // anything is placed. Members are looked at on all cores; the first refused, in their order,
+  // is named.
   const size_t n = members.size();
   for (size_t m = 0; m < n; ++m) {
     try {
@@ -166,23 +167,31 @@ Arrangement arrange_plates(const std::vector<const Mesh*>& members, const std::v
     } catch (const Error& e) {
       throw Error("member '" + names[m] + "': " + e.what());
     }
-    bool fits = false;
-    for (double theta : thetas) {
-      const FootprintExtent e = footprint_extent(*members[m], theta, o.cell_mm);
-      fits |= e.width <= grid_w && e.height <= grid_h;
-    }
-    if (!fits) {
-      const FootprintExtent e = footprint_extent(*members[m], 0, o.cell_mm);
+  }
+  std::vector<uint8_t> fits(n, 0);
+  std::vector<size_t> area(n);  // the footprint's cells at 0 degrees
+  const Progress checking = sub_progress(progress, 0, 0.1);
+  parallel_blocks(
+      n,
+      [&](size_t m) {
+        const std::vector<double> points = plan_points(*members[m]);
+        for (double theta : thetas) {
+          const FootprintExtent e = footprint_extent(points, theta, o.cell_mm);
+          fits[m] |= e.width <= grid_w && e.height <= grid_h;
+        }
+        if (fits[m]) area[m] = mesh_footprint(*members[m], points, 0, o.cell_mm).marked();
+      },
+      checking, "arranging");
+  for (size_t m = 0; m < n; ++m)
+    if (!fits[m]) {
+      const FootprintExtent e = footprint_extent(plan_points(*members[m]), 0, o.cell_mm);
       throw Error(format("member '%s' (%.2f x %.2f mm seen from above) fits the platform at no rotation: the "
                          "platform is %.2f x %.2f mm, %.2f x %.2f mm inside the spacing of %g mm from its edges",
                          names[m].c_str(), e.size_x_mm, e.size_y_mm, platform.x1 - platform.x0,
                          platform.y1 - platform.y0, usable_w, usable_h, o.spacing_mm));
     }
-  }
 
   // Largest footprint first: large members find room on an empty plate, small ones fill gaps.
-  std::vector<size_t> area(n);
-  for (size_t m = 0; m < n; ++m) area[m] = mesh_footprint(*members[m], 0, o.cell_mm).marked();
   std::vector<size_t> order(n);
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return area[a] > area[b]; });
@@ -194,13 +203,6 @@ Arrangement arrange_plates(const std::vector<const Mesh*>& members, const std::v
   for (size_t done = 0; done < n; ++done) {
     const size_t m = order[done];
     std::vector<Pose> poses(thetas.size());
-    // A rotation 180 degrees past one already rasterized reflects its footprint instead.
-    std::vector<size_t> half_turn_of(thetas.size(), SIZE_MAX), rasterized;
-    for (size_t k = 0; k < thetas.size(); ++k) {
-      for (size_t r : rasterized)
-        if (thetas[k] == thetas[r] + 180) half_turn_of[k] = r;
-      if (half_turn_of[k] == SIZE_MAX) rasterized.push_back(k);
-    }
     auto pose = [&](size_t k) {
       Pose& p = poses[k];
       p.theta_deg = thetas[k];
@@ -210,22 +212,42 @@ Arrangement arrange_plates(const std::vector<const Mesh*>& members, const std::v
       p.margin = near.margin;
       p.cells = p.footprint.marked();
     };
-    const Progress member_progress = sub_progress(progress, double(done) / double(n), double(done + 1) / double(n));
-    parallel_blocks(
-        rasterized.size(),
-        [&](size_t i) {
-          poses[rasterized[i]].footprint = mesh_footprint(*members[m], thetas[rasterized[i]], o.cell_mm);
-          pose(rasterized[i]);
-        },
-        sub_progress(member_progress, 0, 0.5), "arranging");
-    parallel_blocks(
-        thetas.size(),
-        [&](size_t k) {
-          if (half_turn_of[k] == SIZE_MAX) return;
-          poses[k].footprint = half_turn_footprint(poses[half_turn_of[k]].footprint);
-          pose(k);
-        },
-        sub_progress(member_progress, 0.5, 1), "arranging");
+    const Progress member_progress =
+        sub_progress(progress, 0.1 + 0.9 * double(done) / double(n), 0.1 + 0.9 * double(done + 1) / double(n));
+    const std::vector<double> points = plan_points(*members[m]);
+    // A rotation a half or a quarter turn past one already made turns that footprint's cells
+    // instead of rasterizing the mesh again; such footprints are made in stages, each from the
+    // one before (stage 0: rasterized).
+    struct Source {
+      size_t from = SIZE_MAX;  // SIZE_MAX: rasterized
+      bool half = false;
+      int stage = 0;
+    };
+    std::vector<Source> source(thetas.size());
+    int stages = 1;
+    for (size_t k = 0; k < thetas.size(); ++k)
+      for (size_t r = 0; r < k && source[k].from == SIZE_MAX; ++r)
+        for (const bool half : {true, false})
+          if (source[k].from == SIZE_MAX && thetas[k] == thetas[r] + (half ? 180 : 90)) {
+            source[k] = {r, half, source[r].stage + 1};
+            stages = std::max(stages, source[k].stage + 1);
+          }
+    for (int stage = 0; stage < stages; ++stage) {
+      std::vector<size_t> made;
+      for (size_t k = 0; k < thetas.size(); ++k)
+        if (source[k].stage == stage) made.push_back(k);
+      parallel_blocks(
+          made.size(),
+          [&](size_t i) {
+            const size_t k = made[i];
+            const Source& from = source[k];
+            poses[k].footprint = from.from == SIZE_MAX ? mesh_footprint(*members[m], points, thetas[k], o.cell_mm)
+                                 : from.half           ? half_turn_footprint(poses[from.from].footprint)
+                                                       : quarter_turn_footprint(poses[from.from].footprint);
+            pose(k);
+          },
+          sub_progress(member_progress, double(stage) / stages, double(stage + 1) / stages), "arranging");
+    }
     // Poses that cannot fit an empty plate are no candidates anywhere.
     poses.erase(std::remove_if(poses.begin(), poses.end(),
                                [&](const Pose& p) { return p.footprint.width > grid_w || p.footprint.height > grid_h; }),

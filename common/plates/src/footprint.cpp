@@ -16,30 +16,35 @@ void check_cell(double cell_mm) {
     throw Error(format("footprint cell size %g mm is not a positive number", cell_mm));
 }
 
-// The turned vertices' x and y (2 per vertex) and their extent.
+// The turned vertices' x and y (2 per vertex, every vertex: the triangles index them) and the
+// extent of the turned plan points (the vertices that faces use), the same numbers turned alike.
 struct Turned {
   std::vector<double> xy;
   double min_x = std::numeric_limits<double>::infinity(), min_y = min_x, max_x = -min_x, max_y = -min_x;
 };
 
-Turned turned_vertices(const Mesh& mesh, double theta_deg) {
-  if (mesh.faces() == 0) throw Error("a footprint needs a mesh with faces");
+void take_extent(const std::vector<double>& plan_points, const Turn& turn, Turned& t) {
+  for (size_t i = 0; i + 1 < plan_points.size(); i += 2) {
+    double x, y;
+    turn.apply(plan_points[i], plan_points[i + 1], x, y);
+    t.min_x = std::min(t.min_x, x);
+    t.max_x = std::max(t.max_x, x);
+    t.min_y = std::min(t.min_y, y);
+    t.max_y = std::max(t.max_y, y);
+  }
+}
+
+void check_plan_points(const std::vector<double>& plan_points) {
+  if (plan_points.empty()) throw Error("a footprint needs a mesh with faces");
+}
+
+Turned turned_vertices(const Mesh& mesh, const std::vector<double>& plan_points, double theta_deg) {
+  check_plan_points(plan_points);
   const Turn turn = turn_of(theta_deg);
   Turned t;
   t.xy.resize(2 * mesh.vertices());
-  for (size_t i = 0; i < mesh.vertices(); ++i) {
-    double x, y;
-    turn.apply(mesh.V[3 * i], mesh.V[3 * i + 1], x, y);
-    t.xy[2 * i] = x;
-    t.xy[2 * i + 1] = y;
-  }
-  // Only vertices of faces count: an unused vertex is not on the plate.
-  for (uint32_t v : mesh.F) {
-    t.min_x = std::min(t.min_x, t.xy[2 * v]);
-    t.max_x = std::max(t.max_x, t.xy[2 * v]);
-    t.min_y = std::min(t.min_y, t.xy[2 * v + 1]);
-    t.max_y = std::max(t.max_y, t.xy[2 * v + 1]);
-  }
+  for (size_t i = 0; i < mesh.vertices(); ++i) turn.apply(mesh.V[3 * i], mesh.V[3 * i + 1], t.xy[2 * i], t.xy[2 * i + 1]);
+  take_extent(plan_points, turn, t);
   return t;
 }
 
@@ -55,14 +60,31 @@ FootprintExtent extent_of(const Turned& t, double cell) {
 
 size_t Footprint::marked() const { return size_t(std::count(cells.begin(), cells.end(), uint8_t(1))); }
 
-FootprintExtent footprint_extent(const Mesh& mesh, double theta_deg, double cell_mm) {
+std::vector<double> plan_points(const Mesh& mesh) {
+  if (mesh.faces() == 0) throw Error("a footprint needs a mesh with faces");
+  std::vector<uint8_t> used(mesh.vertices(), 0);
+  for (uint32_t v : mesh.F) used[v] = 1;
+  std::vector<double> xy;
+  for (size_t v = 0; v < mesh.vertices(); ++v)
+    if (used[v]) xy.insert(xy.end(), {mesh.V[3 * v], mesh.V[3 * v + 1]});
+  return xy;
+}
+
+FootprintExtent footprint_extent(const std::vector<double>& plan_points, double theta_deg, double cell_mm) {
   check_cell(cell_mm);
-  return extent_of(turned_vertices(mesh, theta_deg), cell_mm);
+  check_plan_points(plan_points);
+  Turned t;
+  take_extent(plan_points, turn_of(theta_deg), t);
+  return extent_of(t, cell_mm);
 }
 
 Footprint mesh_footprint(const Mesh& mesh, double theta_deg, double cell_mm) {
+  return mesh_footprint(mesh, plan_points(mesh), theta_deg, cell_mm);
+}
+
+Footprint mesh_footprint(const Mesh& mesh, const std::vector<double>& plan_points, double theta_deg, double cell_mm) {
   check_cell(cell_mm);
-  const Turned t = turned_vertices(mesh, theta_deg);
+  const Turned t = turned_vertices(mesh, plan_points, theta_deg);
   const FootprintExtent e = extent_of(t, cell_mm);
   Footprint f;
   f.cell = cell_mm;
@@ -122,6 +144,21 @@ Footprint half_turn_footprint(const Footprint& f) {
   h.y0 = -(f.y0 + f.height * f.cell);
   std::reverse(h.cells.begin(), h.cells.end());  // (i, j) -> (width-1-i, height-1-j)
   return h;
+}
+
+Footprint quarter_turn_footprint(const Footprint& f) {
+  Footprint q;
+  q.cell = f.cell;
+  q.margin = f.margin;
+  q.width = f.height;
+  q.height = f.width;
+  q.x0 = -(f.y0 + f.height * f.cell);
+  q.y0 = f.x0;
+  q.cells.assign(f.cells.size(), 0);
+  for (int j = 0; j < f.height; ++j)
+    for (int i = 0; i < f.width; ++i)
+      q.cells[size_t(i) * q.width + size_t(f.height - 1 - j)] = f.cells[size_t(j) * f.width + i];
+  return q;
 }
 
 Footprint dilate_footprint(const Footprint& f, double spacing_mm) {

@@ -9,14 +9,22 @@
 // touches; most triangles of a fine mesh, which then cost no clipping).
 // Cell (i, j) covers [x0 + i cell, x0 + (i+1) cell] x [y0 + j cell, y0 + (j+1) cell], row-major
 // in cells[j * width + i]; (x0, y0) lies kFootprintSlack_mm below the turned mesh's smallest x
-// and y (at least that: half_turn_footprint), and the slack is also added around every triangle, so that the placed mesh (turned
-// and moved, whose coordinates round differently by some 1e-13 mm) stays inside the cells too.
+// and y (at least that: half_turn_footprint, quarter_turn_footprint), and the slack is also
+// added around every triangle, so that the placed mesh (turned and moved, whose coordinates
+// round differently by some 1e-13 mm) stays inside the cells too.
 // half_turn_footprint(f): the footprint of the same mesh turned 180 degrees further, without
 // rasterizing it again: the cells point-reflected, on the reflected grid (its (x0, y0) is the
 // reflection of f's far corner, so it lies at or below the turned mesh's smallest x and y by at
 // least the slack). Turned again by turn_of(theta + 180), the mesh's coordinates differ from the
 // reflected ones by rounding only (some 1e-16 of the coordinates), well inside the slack.
-// footprint_extent: the grid's width and height in cells alone, from the vertices (what
+// quarter_turn_footprint(f): likewise 90 degrees further (counter-clockwise, as turn_of): a
+// point (x, y) goes to (-y, x), so cell (i, j) becomes cell (height-1-j, i) of a grid height
+// cells wide, whose (x0, y0) = (-(f's top edge), f.x0) lies at or below the turned mesh's
+// smallest x and y by at least the slack.
+// plan_points(mesh): the x and y of the vertices the mesh's faces use (2 numbers per vertex,
+// each vertex once; an unused vertex is not on the plate), over which a turned mesh's extent is
+// taken: made once per member, for its footprints and extents at every turn.
+// footprint_extent: the grid's width and height in cells alone, from the plan points (what
 // mesh_footprint would give), for the fit checks that need no cells.
 // dilate_footprint(f, spacing_mm): the cells whose box comes closer than spacing_mm to a box of a
 // marked cell (box distance from the cell offsets, exact), on a grid grown by `margin` cells on
@@ -46,11 +54,17 @@ struct FootprintExtent {
   double size_x_mm = 0, size_y_mm = 0;  // the turned mesh's extent
 };
 
-FootprintExtent footprint_extent(const Mesh& mesh, double theta_deg, double cell_mm);
+std::vector<double> plan_points(const Mesh& mesh);
 
+FootprintExtent footprint_extent(const std::vector<double>& plan_points, double theta_deg, double cell_mm);
+
+// plan_points: those of the mesh (plan_points(mesh) when not given).
 Footprint mesh_footprint(const Mesh& mesh, double theta_deg, double cell_mm);
+Footprint mesh_footprint(const Mesh& mesh, const std::vector<double>& plan_points, double theta_deg, double cell_mm);
 
 Footprint half_turn_footprint(const Footprint& f);
+
+Footprint quarter_turn_footprint(const Footprint& f);
 
 Footprint dilate_footprint(const Footprint& f, double spacing_mm);
 
