@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <utility>
 
 #include "slicereuse/plates/footprint.h"
 #include "slicereuse/util/error.h"
@@ -169,7 +170,8 @@ Arrangement arrange_plates(const std::vector<const Mesh*>& members, const std::v
     }
   }
   std::vector<uint8_t> fits(n, 0);
-  std::vector<size_t> area(n);  // the footprint's cells at 0 degrees
+  std::vector<Footprint> unturned(n);  // each member's footprint at 0 degrees, kept for its first pose
+  std::vector<size_t> area(n);         // its cells
   const Progress checking = sub_progress(progress, 0, 0.1);
   parallel_blocks(
       n,
@@ -179,7 +181,9 @@ Arrangement arrange_plates(const std::vector<const Mesh*>& members, const std::v
           const FootprintExtent e = footprint_extent(points, theta, o.cell_mm);
           fits[m] |= e.width <= grid_w && e.height <= grid_h;
         }
-        if (fits[m]) area[m] = mesh_footprint(*members[m], points, 0, o.cell_mm).marked();
+        if (!fits[m]) return;
+        unturned[m] = mesh_footprint(*members[m], points, 0, o.cell_mm);
+        area[m] = unturned[m].marked();
       },
       checking, "arranging");
   for (size_t m = 0; m < n; ++m)
@@ -241,9 +245,10 @@ Arrangement arrange_plates(const std::vector<const Mesh*>& members, const std::v
           [&](size_t i) {
             const size_t k = made[i];
             const Source& from = source[k];
-            poses[k].footprint = from.from == SIZE_MAX ? mesh_footprint(*members[m], points, thetas[k], o.cell_mm)
-                                 : from.half           ? half_turn_footprint(poses[from.from].footprint)
-                                                       : quarter_turn_footprint(poses[from.from].footprint);
+            poses[k].footprint = thetas[k] == 0         ? std::move(unturned[m])
+                                 : from.from == SIZE_MAX ? mesh_footprint(*members[m], points, thetas[k], o.cell_mm)
+                                 : from.half             ? half_turn_footprint(poses[from.from].footprint)
+                                                         : quarter_turn_footprint(poses[from.from].footprint);
             pose(k);
           },
           sub_progress(member_progress, double(stage) / stages, double(stage + 1) / stages), "arranging");

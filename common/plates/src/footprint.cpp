@@ -94,7 +94,11 @@ Footprint mesh_footprint(const Mesh& mesh, const std::vector<double>& plan_point
   f.height = e.height;
   f.cells.assign(size_t(f.width) * size_t(f.height), 0);
   const double slack = kFootprintSlack_mm;
-  auto column = [&](double x) { return std::clamp(int(std::floor((x - f.x0) / cell_mm)), 0, f.width - 1); };
+  // The cell of a coordinate: by the reciprocal, whose rounding (some 1e-14 of a cell) is far
+  // inside the slack; truncation is the floor here, since below 0 both clamp to 0.
+  const double per_mm = 1 / cell_mm;
+  auto column = [&](double x) { return std::clamp(int((x - f.x0) * per_mm), 0, f.width - 1); };
+  auto row = [&](double y) { return std::clamp(int((y - f.y0) * per_mm), 0, f.height - 1); };
   for (size_t tri = 0; tri < mesh.faces(); ++tri) {
     double px[3], py[3];
     for (int c = 0; c < 3; ++c) {
@@ -102,8 +106,7 @@ Footprint mesh_footprint(const Mesh& mesh, const std::vector<double>& plan_point
       py[c] = t.xy[2 * mesh.F[3 * tri + c] + 1];
     }
     const double lo_y = std::min({py[0], py[1], py[2]}) - slack, hi_y = std::max({py[0], py[1], py[2]}) + slack;
-    const int j0 = std::clamp(int(std::floor((lo_y - f.y0) / cell_mm)), 0, f.height - 1);
-    const int j1 = std::clamp(int(std::floor((hi_y - f.y0) / cell_mm)), 0, f.height - 1);
+    const int j0 = row(lo_y), j1 = row(hi_y);
     const int i0 = column(std::min({px[0], px[1], px[2]}) - slack), i1 = column(std::max({px[0], px[1], px[2]}) + slack);
     if (j1 - j0 <= 1 && i1 - i0 <= 1) {
       // Within 2 x 2 cells (most triangles of a fine mesh): the cells of its bounding box, at
