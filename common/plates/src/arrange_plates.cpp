@@ -200,6 +200,25 @@ Arrangement arrange_plates(const std::vector<const Mesh*>& members, const std::v
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return area[a] > area[b]; });
 
+  // A rotation a half or a quarter turn past one already made turns that footprint's cells
+  // instead of rasterizing the mesh again; every member's footprints are made in the same
+  // stages, each from the one before (stage 0: rasterized).
+  struct Source {
+    size_t from = SIZE_MAX;  // SIZE_MAX: rasterized
+    bool half = false;
+    size_t stage = 0;
+  };
+  std::vector<Source> source(thetas.size());
+  std::vector<std::vector<size_t>> made_in_stage(1);
+  for (size_t k = 0; k < thetas.size(); ++k) {
+    for (size_t r = 0; r < k && source[k].from == SIZE_MAX; ++r)
+      for (const bool half : {true, false})
+        if (source[k].from == SIZE_MAX && thetas[k] == thetas[r] + (half ? 180 : 90))
+          source[k] = {r, half, source[r].stage + 1};
+    if (source[k].stage == made_in_stage.size()) made_in_stage.emplace_back();
+    made_in_stage[source[k].stage].push_back(k);
+  }
+
   Arrangement out;
   out.placement.resize(n);
   out.plate.resize(n);
@@ -219,27 +238,8 @@ Arrangement arrange_plates(const std::vector<const Mesh*>& members, const std::v
     const Progress member_progress =
         sub_progress(progress, 0.1 + 0.9 * double(done) / double(n), 0.1 + 0.9 * double(done + 1) / double(n));
     const std::vector<double> points = plan_points(*members[m]);
-    // A rotation a half or a quarter turn past one already made turns that footprint's cells
-    // instead of rasterizing the mesh again; such footprints are made in stages, each from the
-    // one before (stage 0: rasterized).
-    struct Source {
-      size_t from = SIZE_MAX;  // SIZE_MAX: rasterized
-      bool half = false;
-      int stage = 0;
-    };
-    std::vector<Source> source(thetas.size());
-    int stages = 1;
-    for (size_t k = 0; k < thetas.size(); ++k)
-      for (size_t r = 0; r < k && source[k].from == SIZE_MAX; ++r)
-        for (const bool half : {true, false})
-          if (source[k].from == SIZE_MAX && thetas[k] == thetas[r] + (half ? 180 : 90)) {
-            source[k] = {r, half, source[r].stage + 1};
-            stages = std::max(stages, source[k].stage + 1);
-          }
-    for (int stage = 0; stage < stages; ++stage) {
-      std::vector<size_t> made;
-      for (size_t k = 0; k < thetas.size(); ++k)
-        if (source[k].stage == stage) made.push_back(k);
+    for (size_t stage = 0; stage < made_in_stage.size(); ++stage) {
+      const std::vector<size_t>& made = made_in_stage[stage];
       parallel_blocks(
           made.size(),
           [&](size_t i) {
@@ -251,7 +251,9 @@ Arrangement arrange_plates(const std::vector<const Mesh*>& members, const std::v
                                                          : quarter_turn_footprint(poses[from.from].footprint);
             pose(k);
           },
-          sub_progress(member_progress, double(stage) / stages, double(stage + 1) / stages), "arranging");
+          sub_progress(member_progress, double(stage) / double(made_in_stage.size()),
+                       double(stage + 1) / double(made_in_stage.size())),
+          "arranging");
     }
     // Poses that cannot fit an empty plate are no candidates anywhere.
     poses.erase(std::remove_if(poses.begin(), poses.end(),
