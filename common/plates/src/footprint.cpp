@@ -61,12 +61,12 @@ FootprintExtent extent_of(const Turned& t, double cell) {
 size_t Footprint::marked() const { return size_t(std::count(cells.begin(), cells.end(), uint8_t(1))); }
 
 std::vector<double> plan_points(const Mesh& mesh) {
-  if (mesh.faces() == 0) throw Error("a footprint needs a mesh with faces");
   std::vector<uint8_t> used(mesh.vertices(), 0);
   for (uint32_t v : mesh.F) used[v] = 1;
   std::vector<double> xy;
   for (size_t v = 0; v < mesh.vertices(); ++v)
     if (used[v]) xy.insert(xy.end(), {mesh.V[3 * v], mesh.V[3 * v + 1]});
+  check_plan_points(xy);  // none without faces
   return xy;
 }
 
