@@ -22,6 +22,7 @@
 #include "slicereuse/plates/placements_file.h"
 #include "slicereuse/plates/plate_file_names.h"
 #include "slicereuse/plates/plate_job.h"
+#include "slicereuse/plates/plate_layout.h"
 #include "slicereuse/transfer/transfer_contours.h"
 #include "slicereuse/util/format.h"
 #include "slicereuse/util/buffer.h"
@@ -114,7 +115,7 @@ int main(int argc, char** argv) {
               since(t));
 
   std::vector<double> reuse_times, direct_times;
-  std::printf("%-6s %8s %8s %12s %10s %10s %6s\n", "plate", "members", "layers", "points", "reuse s", "direct s", "S");
+  std::printf("%-6s %8s %8s %12s %10s %10s %12s\n", "plate", "members", "layers", "points", "reuse s", "direct s", "direct/reuse");
   for (size_t k = 0; k < a.members.size() && int(k) < plates_to_time; ++k) {
     std::vector<Mesh> placed;
     for (size_t m : a.members[k]) placed.push_back(place_mesh(family[m], a.placement[m]));
@@ -137,10 +138,15 @@ int main(int argc, char** argv) {
     const double direct_s = since(t);
     reuse_times.push_back(reuse_s);
     direct_times.push_back(direct_s);
-    std::printf("%-6zu %8zu %8zu %12zu %10.2f %10.2f %6.2f   (transfer %.2f s, slicing %.2f s; reuse: %zu member "
-                "layers transferred, %zu sliced; %zu ranges)\n",
+    std::vector<std::string> plate_names;
+    for (size_t m : a.members[k]) plate_names.push_back(names[m]);
+    t = std::chrono::steady_clock::now();
+    write_plate_layout(plate_layout_file_name(out), placed, plate_names, platform);
+    const double layout_s = since(t);
+    std::printf("%-6zu %8zu %8zu %12zu %10.2f %10.2f %12.2f   (transfer %.2f s, slicing %.2f s; reuse: %zu member "
+                "layers transferred, %zu sliced; %zu ranges; layout picture %.2f s)\n",
                 k + 1, placed.size(), r.layers, r.points, reuse_s, direct_s, direct_s / reuse_s, r.slicing_seconds,
-                d.slicing_seconds, r.transferred_layers, r.resliced_layers, r.ranges);
+                d.slicing_seconds, r.transferred_layers, r.resliced_layers, r.ranges, layout_s);
     if (d.points != r.points) std::printf("  points differ: reuse %zu, direct %zu\n", r.points, d.points);
   }
   if (!reuse_times.empty())

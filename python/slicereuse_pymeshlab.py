@@ -150,17 +150,18 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
                      "target": str(target), "output": str(output), "contours": str(contours or ""),
                      "check": str(check or ""), "layer_thickness": layer_thickness, "profile": profile,
                      "details": details})
-    targets_out, where = _run_jobs(jobs, _make_member, encoding, send_encoding, resume, workers, scheduler,
-                                   progress, step, steps)
+    with batch.engine(workers, scheduler, setup=load) as engine:
+        targets_out = _run_jobs(engine, jobs, _make_member, encoding, send_encoding, resume, progress, step, steps)
+        engine.finish(_free_cached_memory)
     return {"source": str(source), "seconds": time.perf_counter() - start, "source_seconds": source_seconds,
-            "engine": where, "failed": sum("error" in e for e in targets_out), "targets": targets_out}
+            "engine": engine.description, "failed": sum("error" in e for e in targets_out), "targets": targets_out}
 
 
-def _run_jobs(jobs, make, encoding, send_encoding, resume, workers, scheduler, progress, done, steps):
-    """family()'s and plates()'s tasks: with resume, the jobs an earlier run made (valid_record)
-    are kept, marked "resumed"; make(job, encoding) runs the others on the engine (workers,
-    scheduler), which shares encoding ("" none) with them; progress counts on from done.
-    Returns (the entries in the order of jobs, the engine's description)."""
+def _run_jobs(engine, jobs, make, encoding, send_encoding, resume, progress, done, steps):
+    """family()'s and plates()'s tasks on engine (slicereuse_batch.engine): with resume, the
+    jobs an earlier run made (valid_record) are kept, marked "resumed"; make(job, encoding) runs
+    the others, sharing encoding ("" none) with them; progress counts on from done. Returns the
+    entries in the order of jobs."""
     entries = {}
     if resume:
         for job in jobs:
@@ -168,34 +169,65 @@ def _run_jobs(jobs, make, encoding, send_encoding, resume, workers, scheduler, p
             if kept:
                 entries[job["name"]] = dict(kept, resumed=True)
     todo = [job for job in jobs if job["name"] not in entries]
-    with batch.engine(workers, scheduler, setup=load) as engine:
-        if todo:
-            shared = engine.share(encoding, send_encoding) if encoding else ""
-            entries.update(batch.run(engine, make, todo, shared, progress, done=done + len(entries), steps=steps))
-        engine.finish(_free_cached_memory)
-        where = engine.description
+    if todo:
+        shared = engine.share(encoding, send_encoding) if encoding else ""
+        entries.update(batch.run(engine, make, todo, shared, progress, done=done + len(entries), steps=steps))
     if progress:
         progress(steps, steps, "done")
-    return [entries[job["name"]] for job in jobs], where
+    return [entries[job["name"]] for job in jobs]
 
 
 _failed_meshsets = []
 
+# The members the plates' arrangement loaded in this process, kept for the plates' tasks that
+# run here (each then loads none of its members, and gives them back when made):
+# {"ms": MeshSet, "ids": {path: mesh id}, "identity": {path: batch.file_identity(path)}}.
+_arranged = None
+
 
 @contextlib.contextmanager
-def _meshset():
-    """A MeshSet for one job. One whose filter failed is kept alive until the process ends:
-    pymeshlab 2025.7.post1 writes into it later otherwise (see README)."""
-    ms = _pymeshlab.MeshSet()
+def _meshset(ms=None):
+    """A MeshSet for one job (ms, or a new one). One whose filter failed is kept alive until the
+    process ends: pymeshlab 2025.7.post1 writes into it later otherwise (see README); if it held
+    the arranged members, they are no longer used."""
+    global _arranged
+    ms = ms or _pymeshlab.MeshSet()
     try:
         yield ms
-    except _pymeshlab.PyMeshLabException as e:
+    except Exception as e:
         _failed_meshsets.append(ms)
-        # The filter's own message, without pymeshlab's "Failed to apply filter: name\nDetails: ".
-        raise RuntimeError(str(e).split("\nDetails: ", 1)[-1]) from None
-    except Exception:
-        _failed_meshsets.append(ms)
+        if _arranged is not None and _arranged["ms"] is ms:
+            _arranged = None
+        if isinstance(e, _pymeshlab.PyMeshLabException):
+            # The filter's own message, without pymeshlab's "Failed to apply filter: name\nDetails: ".
+            raise RuntimeError(str(e).split("\nDetails: ", 1)[-1]) from None
         raise
+
+
+def _arranged_members(paths):
+    """The kept MeshSet of the arrangement with paths' members shown and the others hidden (a
+    plate filter's visible_only members), or None when one of them is not kept or its file
+    changed since it was loaded."""
+    kept = _arranged
+    if kept is None or not all(p in kept["ids"] and batch.file_identity(p) == kept["identity"][p] for p in paths):
+        return None
+    for p, i in kept["ids"].items():
+        kept["ms"].set_mesh_visibility(i, p in paths)
+    return kept["ms"]
+
+
+def _forget_arranged(paths):
+    """Gives back the kept members of paths (their plate is made)."""
+    global _arranged
+    if _arranged is None:
+        return
+    ms, ids = _arranged["ms"], _arranged["ids"]
+    for p in paths:
+        if p in ids:
+            ms.set_current_mesh(ids.pop(p))
+            ms.delete_current_mesh()
+    if not ids:
+        _arranged = None
 
 
 def _make_encoding(job, _shared):
@@ -230,7 +262,10 @@ def _make_member(job, encoding):
 
 
 def _free_cached_memory():
-    """The plugin's cached encoding is not needed after a batch's last member."""
+    """The plugin's cached encoding, and members kept from an arrangement, are not needed after a
+    batch's last task."""
+    global _arranged
+    _arranged = None
     load().MeshSet().apply_filter("free_cached_memory")
 
 
@@ -245,9 +280,10 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
     every placed target (exact); direct=True slices every target directly instead, from the
     lowest vertex of all targets (the family's members sit on one build plate, the source's).
     First all targets are arranged (arrange_on_plates) or, with placements (a placements file, its
-    members named by file name), placed as it says; then every plate is a task (make_plate_job
-    with that plate only) that loads its own members: workers, scheduler and resume as for
-    family(). verify=True: also makes each plate by direct slicing into
+    members named by file name), placed as it says, as a task on the engine; then every plate is
+    a task (make_plate_job with that plate only): in the process that arranged, it uses the
+    members loaded there (each member is loaded once), elsewhere it loads its own. Workers,
+    scheduler and resume as for family(). verify=True: also makes each plate by direct slicing into
     out/plate.direct_<k><extension> and compares (min_similarity 1 and max_grey_difference 0 mean
     identical); not counted in a plate's seconds.
     Returns {"source", "members", "seconds", "arrange_seconds", "engine", "failed", "plates":
@@ -277,62 +313,75 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
                "key": batch.key_of(targets=[batch.file_identity(t) for t in targets], spacing_mm=spacing_mm,
                                    placements=batch.file_identity(placements) if placements else None,
                                    profile=profile, extension=extension)}
-    arranged = resume and batch.valid_record(arrange)
-    if not arranged:
-        arranged = batch.attempt(_arrange, arrange, "", batch.IN_PROCESS)
-        if "error" in arranged:
-            raise RuntimeError(arranged["error"])
-    layout = json.loads(summary.read_text())
-    steps = len(layout["plates"]) + 1
-    if progress:
-        progress(1, steps, f"{len(targets)} members on {len(layout['plates'])} plates")
+    with batch.engine(workers, scheduler, setup=load) as engine:
+        # Arranged on the engine, where the plates are made: the process that arranges keeps the
+        # members it loaded, and its plates' tasks use them instead of loading them again.
+        arranged = resume and batch.valid_record(arrange)
+        if not arranged:
+            arranged = next(engine.submit_all(_arrange, [arrange], ""))[1]
+            if "error" in arranged:
+                engine.finish(_free_cached_memory)
+                raise RuntimeError(arranged["error"])
+        layout = json.loads(summary.read_text())
+        steps = len(layout["plates"]) + 1
+        if progress:
+            progress(1, steps, f"{len(targets)} members on {len(layout['plates'])} plates")
 
-    parameters = dict(placements=batch.file_identity(summary), encoding=batch.file_identity(encoding)
-                      if encoding else None, layer_thickness=layer_thickness, profile=profile, verify=verify)
-    jobs = []
-    for k, plate in enumerate(layout["plates"], 1):
-        output = plate["output"]
-        check = out / f"plate.direct_{k}{extension}" if verify else None
-        members = [m["name"] for m in plate["members"]]
-        jobs.append({"name": Path(output).name, "out": str(out), "epoch": epoch,
-                     "base": {"output": output, "layout": str(Path(output).with_suffix("")) + "_layout.png",
-                              "members": members, "area_used": plate["area_used"]},
-                     "outputs": [str(p) for p in (output, check) if p],
-                     "key": batch.key_of(plate=k, **parameters), "plate": k, "summary": str(summary),
-                     "paths": [by_name[m] for m in members], "layer_thickness": layer_thickness,
-                     "z_start": arranged["z_start"], "profile": profile, "check": str(check or ""),
-                     "plate_output": str(out / f"plate{extension}"),
-                     "check_output": str(out / f"plate.direct{extension}")})
-    plates_out, where = _run_jobs(jobs, _make_plate, encoding, False, resume, workers, scheduler, progress, 1, steps)
+        parameters = dict(placements=batch.file_identity(summary), encoding=batch.file_identity(encoding)
+                          if encoding else None, layer_thickness=layer_thickness, profile=profile, verify=verify)
+        jobs = []
+        for k, plate in enumerate(layout["plates"], 1):
+            output = plate["output"]
+            check = out / f"plate.direct_{k}{extension}" if verify else None
+            members = [m["name"] for m in plate["members"]]
+            jobs.append({"name": Path(output).name, "out": str(out), "epoch": epoch,
+                         "base": {"output": output, "layout": str(Path(output).with_suffix("")) + "_layout.png",
+                                  "members": members, "area_used": plate["area_used"]},
+                         "outputs": [str(p) for p in (output, check) if p],
+                         "key": batch.key_of(plate=k, **parameters), "plate": k, "summary": str(summary),
+                         "paths": [by_name[m] for m in members], "layer_thickness": layer_thickness,
+                         "z_start": arranged["z_start"], "profile": profile, "check": str(check or ""),
+                         "plate_output": str(out / f"plate{extension}"),
+                         "check_output": str(out / f"plate.direct{extension}")})
+        plates_out = _run_jobs(engine, jobs, _make_plate, encoding, False, resume, progress, 1, steps)
+        engine.finish(_free_cached_memory)
     return {"source": str(source), "members": arranged["members"], "seconds": time.perf_counter() - start,
-            "arrange_seconds": arranged["arrange_seconds"], "engine": where,
+            "arrange_seconds": arranged["arrange_seconds"], "engine": engine.description,
             "failed": sum("error" in e for e in plates_out), "plates": plates_out}
 
 
 def _arrange(job, _shared):
-    """The plates' placements (a plates() task, in the driver): every target loaded, arranged by
+    """The plates' placements (a plates() task, on the engine): every target loaded, arranged by
     arrange_on_plates or placed as job["placements"] says, into job["outputs"][0] with the layout
-    pictures; also the lowest vertex of all targets, where direct slicing of every plate starts."""
+    pictures; also the lowest vertex of all targets, where direct slicing of every plate starts.
+    The loaded targets are kept in this process for its plates' tasks (_arranged)."""
+    global _arranged
+    _arranged = None
+    ids = {}
     with _meshset() as ms:
         lowest = float("inf")
         for t in job["targets"]:
-            _load_mesh(ms, t)
+            ids[t] = _load_mesh(ms, t)
             lowest = min(lowest, ms.current_mesh().bounding_box().min()[2])
         r = ms.apply_filter("arrange_on_plates", spacing_mm=job["spacing_mm"], placements_file=job["placements"],
                             placements_output=job["outputs"][0], output_path=job["output"], **job["profile"])
+    _arranged = {"ms": ms, "ids": ids, "identity": {t: batch.file_identity(t) for t in ids}}
     return {"members": r["members"], "arrange_seconds": r["arrange_seconds"], "z_start": lowest}
 
 
 def _make_plate(job, encoding):
-    """One plate's print file (a plates() task): loads the plate's members only and makes that
-    plate by transfer of encoding (a path; "" slices directly from job["z_start"]); with
-    job["check"], also by direct slicing into that file, compared."""
-    with _meshset() as ms:
-        t0 = time.perf_counter()
-        for path in job["paths"]:
-            _load_mesh(ms, path)
+    """One plate's print file (a plates() task): its members (kept from the arrangement when it
+    ran in this process, else loaded) made into that plate by transfer of encoding (a path; ""
+    slices directly from job["z_start"]); with job["check"], also by direct slicing into that
+    file, compared."""
+    t0 = time.perf_counter()
+    kept = _arranged_members(job["paths"])
+    with _meshset(kept) as ms:
+        if kept is None:
+            for path in job["paths"]:
+                _load_mesh(ms, path)
         common = dict(layer_thickness=job["layer_thickness"], z_start=job["z_start"], placements_file=job["summary"],
-                      plate=job["plate"], placements_output="", **job["profile"])
+                      plate=job["plate"], placements_output="", visible_only=True, **job["profile"])
         r = ms.apply_filter("make_plate_job", encoding_file=encoding, output_path=job["plate_output"], **common)
         entry = {"layers": r["layers"], "points": r["points"], "seconds": time.perf_counter() - t0}
         if job["check"]:
@@ -340,6 +389,8 @@ def _make_plate(job, encoding):
             c = ms.apply_filter("compare_mask_stacks", stack_a=job["base"]["output"], stack_b=job["check"],
                                 report_file="")
             entry.update(min_similarity=c["min_similarity"], max_grey_difference=c["max_grey_difference"])
+    if kept is not None:
+        _forget_arranged(job["paths"])
     return entry
 
 

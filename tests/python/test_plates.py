@@ -134,6 +134,29 @@ def test_family_py_plates_verifies_every_plate(make_family, tmp_path):
     assert [[m["name"] for m in p["members"]] for p in written["plates"]] == [p["members"] for p in result["plates"]]
 
 
+def test_plates_use_the_members_the_arrangement_loaded(pymeshlab, make_family, tmp_path, monkeypatch):
+    """In the process that arranged them, the plates' tasks make each plate from the members the
+    arrangement loaded (each member loaded once in all) and give them back; the print files are
+    those of plates whose members are loaded afresh, byte for byte."""
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "1764000000")
+    members = make_family("arch", 8)
+    loads = []
+    load_mesh = sr._load_mesh
+    monkeypatch.setattr(sr, "_load_mesh", lambda ms, path: loads.append(path) or load_mesh(ms, path))
+    args = dict(layer_thickness=THICKNESS, profile={"printer": "method", "antialiasing": True}, workers=0)
+    kept = sr.plates(members[0], members[1:], out=tmp_path / "kept", **args)
+    assert kept["failed"] == 0 and len(kept["plates"]) >= 2
+    assert sorted(map(str, loads)) == sorted(map(str, members)), "the source once (its encoding), every member once (arranged)"
+    assert sr._arranged is None
+    loads.clear()
+    monkeypatch.setattr(sr, "_arranged_members", lambda paths: None)
+    fresh = sr.plates(members[0], members[1:], out=tmp_path / "fresh", **args)
+    assert len(loads) == 1 + 2 * (len(members) - 1), "the source, every member arranged, then loaded again"
+    assert [p["members"] for p in fresh["plates"]] == [p["members"] for p in kept["plates"]]
+    for a, b in zip(kept["plates"], fresh["plates"]):
+        assert (tmp_path / "kept" / a["output"]).read_bytes() == (tmp_path / "fresh" / b["output"]).read_bytes()
+
+
 def test_meshlabserver_arranges_then_makes_each_plate_alone(meshlabserver, make_family, tmp_path):
     """The float host: Arrange on Plates writes the placements and layouts without slicing; Make
     Plate Job from them makes every plate at once, and each plate again alone (plate k, only its

@@ -70,14 +70,21 @@ std::vector<Layer> shapes() {
   };
 }
 
-// The profiles they are drawn on: the small display, and one where nothing lines up.
+// The profiles they are drawn on: the small display, one where nothing lines up, and one more
+// than 4096 pixels wide with narrow pixels (rows of 66 words of touched bits, so the words'
+// summary bits of one row start and end inside a summary word, as on 8K to 16K displays).
 std::vector<PrinterProfile> profiles() {
   PrinterProfile odd = small_display();
   odd.pixel_size_x_um = 73.1;
   odd.pixel_size_y_um = 81.7;
   odd.offset_x_mm = 0.0123;
   odd.offset_y_mm = -0.0456;
-  return {small_display(), odd};
+  PrinterProfile wide = small_display();
+  wide.width_px = 4200;
+  wide.height_px = 44;
+  wide.pixel_size_x_um = 10.3;
+  wide.pixel_size_y_um = 497;
+  return {small_display(), odd, wide};
 }
 
 PrinterProfile antialiased(PrinterProfile p, double gamma) {

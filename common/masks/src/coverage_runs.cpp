@@ -59,10 +59,11 @@ Point pixel_point(const PixelMap& m, const double* xyz, int W, int H) {
 // display: area, the sum of dv * (2 kOne - x_in - x_out) over the pieces of edges in the pixel
 // (a piece's height times the part of the pixel right of it, doubled), and cover, the sum of
 // their heights dv, which every pixel further right in the row gets in full; and which pixels
-// have any, one bit each. Pixel (r, c) is number (r - r0) * stride + c + 1 in both; stride, a
-// multiple of 64, is at least W + 1, so each row's bits are whole words. A strip is small
-// enough to stay in cache: the pieces are added straight into it, in any order (the sums are of
-// integers).
+// have any, one bit each, and which words of those bits are not zero, one bit each (so that a
+// row's sweep visits only those: on a wide display most of a row's words are zero). Pixel
+// (r, c) is number (r - r0) * stride + c + 1 in all; stride, a multiple of 64, is at least
+// W + 1, so each row's bits are whole words. A strip is small enough to stay in cache: the
+// pieces are added straight into it, in any order (the sums are of integers).
 struct Strip {
   struct Sums {
     int64_t area, cover;
@@ -72,6 +73,7 @@ struct Strip {
   int32_t stride;
   Sums* sums;
   uint64_t* touched;
+  uint64_t* touched_words;
 
   // A piece of height dv (signed: positive when the contour runs downwards) in pixel (row, col),
   // entering and leaving at x_in and x_out, x_sum = x_in + x_out. A piece without height adds
@@ -82,6 +84,7 @@ struct Strip {
     s.area += int64_t(dv) * (2 * kOne - x_sum);
     s.cover += dv;
     touched[i >> 6] |= uint64_t(1) << (i & 63);
+    touched_words[i >> 12] |= uint64_t(1) << ((i >> 6) & 63);
   }
 };
 
@@ -308,6 +311,7 @@ struct Scratch {
   Buffer<uint32_t> edges;         // edge i joins points i and i + 1
   std::vector<Strip::Sums> sums;
   std::vector<uint64_t> touched;
+  std::vector<uint64_t> touched_words;
   std::vector<std::pair<uint8_t, size_t>> spans;  // a row's, to be mirrored
   bool clear = false;                              // sums and touched are all zero
   CoverageLevels levels;
@@ -406,26 +410,34 @@ void add_strip_edges(const Scratch& w, size_t i, const Strip& st) {
 template <class Emit>
 void sweep_row(const Strip& st, int32_t r, const CoverageLevels& levels, Emit&& emit) {
   Strip::Sums* const sums = st.sums + size_t(r - st.r0) * size_t(st.stride);
-  uint64_t* const touched = st.touched + size_t(r - st.r0) * size_t(st.stride / 64);
+  const size_t w0 = size_t(r - st.r0) * size_t(st.stride / 64), w1 = w0 + size_t(st.stride / 64);
   // Column -1, everything left of the display, only carries its cover into the row (its sums
   // are zero when untouched).
   int64_t carry = std::exchange(sums[0], Strip::Sums{0, 0}).cover;  // in units of kOne
-  touched[0] &= ~uint64_t(1);
+  st.touched[w0] &= ~uint64_t(1);
   int at = 0;  // columns before it are emitted
-  for (int64_t word = 0; word < int64_t(st.stride / 64); ++word) {
-    uint64_t bits = touched[word];
-    if (bits == 0) continue;
-    touched[word] = 0;
-    do {
-      const int64_t j = word * 64 + __builtin_ctzll(bits);
-      bits &= bits - 1;
-      const Strip::Sums here = std::exchange(sums[j], Strip::Sums{0, 0});
-      const int col = int(j) - 1;
-      emit(levels(carry * (2 * kOne)), size_t(col - at));
-      emit(levels(carry * (2 * kOne) + here.area), size_t(1));
-      at = col + 1;
-      carry += here.cover;
-    } while (bits);
+  // The row's words are w0 .. w1 - 1; those in the same summary word as a neighbouring row's
+  // keep that row's bits.
+  for (size_t sw = w0 >> 6; sw <= (w1 - 1) >> 6; ++sw) {
+    const uint64_t from = sw << 6 < w0 ? ~uint64_t(0) << (w0 & 63) : ~uint64_t(0);
+    const uint64_t to = (sw + 1) << 6 > w1 ? ~uint64_t(0) >> (64 - (w1 & 63)) : ~uint64_t(0);
+    uint64_t words = st.touched_words[sw] & from & to;
+    st.touched_words[sw] &= ~words;
+    while (words) {
+      const size_t word = (sw << 6) + size_t(__builtin_ctzll(words));
+      words &= words - 1;
+      uint64_t bits = std::exchange(st.touched[word], 0);
+      while (bits) {
+        const int64_t j = int64_t(word - w0) * 64 + __builtin_ctzll(bits);
+        bits &= bits - 1;
+        const Strip::Sums here = std::exchange(sums[j], Strip::Sums{0, 0});
+        const int col = int(j) - 1;
+        emit(levels(carry * (2 * kOne)), size_t(col - at));
+        emit(levels(carry * (2 * kOne) + here.area), size_t(1));
+        at = col + 1;
+        carry += here.cover;
+      }
+    }
   }
   emit(levels(carry * (2 * kOne)), size_t(st.W - at));
 }
@@ -451,12 +463,13 @@ size_t rasterize_coverage(const Slices& s, size_t k, const PrinterProfile& p, Si
   if (!w.clear || w.sums.size() != pixels) {
     w.sums.assign(pixels, Strip::Sums{0, 0});
     w.touched.assign(pixels / 64, 0);
+    w.touched_words.assign((pixels / 64 + 63) / 64, 0);
   }
   w.clear = false;
   for (size_t n = 0; n < strips; ++n) {
     const size_t i = image.rows_ascend ? strips - 1 - n : n;
     const int32_t r0 = int32_t(i) * rows;
-    const Strip st{r0, std::min(r0 + rows, H), W, stride, w.sums.data(), w.touched.data()};
+    const Strip st{r0, std::min(r0 + rows, H), W, stride, w.sums.data(), w.touched.data(), w.touched_words.data()};
     add_strip_edges(w, i, st);
     for (int32_t m = 0; m < st.r1 - st.r0; ++m) {
       const int32_t r = image.rows_ascend ? st.r1 - 1 - m : st.r0 + m;

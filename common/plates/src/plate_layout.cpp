@@ -73,10 +73,15 @@ void write_plate_layout(const std::string& path, const std::vector<Mesh>& placed
     throw Error(format("plate layout: %g x %g pixels is not within 1..20000 pixels a side", w, h));
   Image img{int(w), int(h), std::vector<uint8_t>(size_t(w) * size_t(h), kPaper)};
   const int scale = std::max(1, std::min(img.width, img.height) / 150);
-  // Every member's footprint on the image's pixels and its outline, then the names on top.
+  // Every member's footprint on the image's pixels (one member per core: each is a pass over
+  // its faces) and its outline, then the names on top.
+  std::vector<Footprint> footprints(placed.size());
+  const long long n = static_cast<long long>(placed.size());
+#pragma omp parallel for schedule(dynamic, 1)
+  for (long long m = 0; m < n; ++m) footprints[size_t(m)] = mesh_footprint(placed[size_t(m)], 0, px);
   std::vector<std::array<int, 2>> centre;
   for (size_t m = 0; m < placed.size(); ++m) {
-    const Footprint f = mesh_footprint(placed[m], 0, px);
+    const Footprint& f = footprints[m];
     const int ox = int(std::lround((f.x0 - platform.x0) / px)), oy = int(std::lround((f.y0 - platform.y0) / px));
     auto cell = [&](int i, int j) { return i >= 0 && i < f.width && j >= 0 && j < f.height && f.cells[size_t(j) * f.width + i]; };
     for (int j = 0; j < f.height; ++j)
