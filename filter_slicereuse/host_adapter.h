@@ -45,6 +45,7 @@
 #include "mesh_convert.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/json_string.h"
+#include "slicereuse/util/parallel_blocks.h"
 
 namespace slicereuse::plugin {
 
@@ -185,10 +186,15 @@ class DocumentHost : public Host {
     return mesh_from_vcg(m->cm);
   }
 
+  // Converted one mesh per core: each conversion is a pass over the mesh that fills fresh memory
+  // (20 members of 545k faces: 0.75 s on one core).
   std::vector<NamedMesh> meshes_with_faces(bool visible_only) override {
-    std::vector<NamedMesh> out;
+    std::vector<const MeshModel*> chosen;
     for (MeshModel* m : Api::meshes(md_))
-      if (m->cm.fn > 0 && (!visible_only || m->isVisible())) out.push_back({m->label().toStdString(), mesh_from_vcg(m->cm)});
+      if (m->cm.fn > 0 && (!visible_only || m->isVisible())) chosen.push_back(m);
+    std::vector<NamedMesh> out(chosen.size());
+    for (size_t i = 0; i < chosen.size(); ++i) out[i].name = chosen[i]->label().toStdString();
+    parallel_blocks(chosen.size(), [&](size_t i) { out[i].mesh = mesh_from_vcg(chosen[i]->cm); }, {}, "reading meshes");
     return out;
   }
 
