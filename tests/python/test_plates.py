@@ -7,6 +7,7 @@ import json
 import struct
 import subprocess
 import zlib
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -155,6 +156,33 @@ def test_plates_use_the_members_the_arrangement_loaded(pymeshlab, make_family, t
     assert [p["members"] for p in fresh["plates"]] == [p["members"] for p in kept["plates"]]
     for a, b in zip(kept["plates"], fresh["plates"]):
         assert (tmp_path / "kept" / a["output"]).read_bytes() == (tmp_path / "fresh" / b["output"]).read_bytes()
+
+
+def test_a_failing_plate_gives_up_the_kept_members_and_the_others_are_made(pymeshlab, make_family, tmp_path,
+                                                                          monkeypatch):
+    """A plate that cannot be made from the kept members (one of them is another mesh's
+    connectivity, with no map) fails with the filter's message; its MeshSet is kept alive as a
+    failed one (pymeshlab writes into it later), no plate after it uses it, and every other plate
+    is made from freshly loaded members, equal to direct slicing."""
+    members = make_family("arch", 8)
+    other = tmp_path / "ear.ply"  # not of the arch's family
+    other.write_bytes(make_family("ear", 2)[1].read_bytes())
+    loads = []
+    load_mesh = sr._load_mesh
+    monkeypatch.setattr(sr, "_load_mesh", lambda ms, path: loads.append(str(path)) or load_mesh(ms, path))
+    failed_before = len(sr._failed_meshsets)
+    r = sr.plates(members[0], [*members[1:], other], out=tmp_path / "out", layer_thickness=THICKNESS,
+                  profile={"printer": "method"}, verify=True, workers=0)
+    assert r["failed"] == 1 and len(r["plates"]) >= 2, r
+    bad = next(p for p in r["plates"] if "error" in p)
+    assert "ear.ply" in bad["members"] and "faces" in bad["error"], bad
+    assert not (tmp_path / "out" / Path(bad["output"]).name).exists()
+    made = [p for p in r["plates"] if "error" not in p]
+    assert all(p["min_similarity"] == 1.0 and p["max_grey_difference"] == 0 for p in made), made
+    # Plates after the failed one loaded their own members; none is loaded twice before it.
+    after = [m for p in r["plates"][r["plates"].index(bad) + 1:] for m in p["members"]]
+    assert sorted(Path(x).name for x in loads[1 + len(members):]) == sorted(after)
+    assert len(sr._failed_meshsets) == failed_before + 1 and sr._arranged is None
 
 
 def test_meshlabserver_arranges_then_makes_each_plate_alone(meshlabserver, make_family, tmp_path):
