@@ -24,6 +24,7 @@
 #include "slicereuse/plates/plate_file_names.h"
 #include "slicereuse/plates/placements_file.h"
 #include "slicereuse/plates/plate_job.h"
+#include "slicereuse/plates/plate_layout.h"
 #include "slicereuse/util/format.h"
 #include "slicereuse/slicing/slice_layers.h"
 #include "temp_folder.h"
@@ -478,6 +479,34 @@ TEST_F(PlateJobTest, PlateMasksEqualTheUnionOfTheMembersOwnMasksByReuseAndDirect
     EXPECT_EQ(rr.points, r.points);
     expect_union(path(tag + "_ranges"), own);
   }
+}
+
+class PlateLayoutTest : public test::TempFolderTest {};
+
+// The members' footprints are made on all cores; a member that has none (no faces) is refused in
+// words, as on one core, and no picture is written.
+TEST_F(PlateLayoutTest, DrawsEveryMemberAndRefusesOneWithoutFacesWritingNothing) {
+  const Members s = mixed_members();
+  const Platform platform = printer_platform(display(400, 300));
+  const Arrangement a = arrange_plates(s.pointers(), s.names, platform, {});
+  std::vector<Mesh> placed;
+  std::vector<std::string> names;
+  for (size_t m : a.members[0]) {
+    placed.push_back(place_mesh(s.meshes[m], a.placement[m]));
+    names.push_back(s.names[m]);
+  }
+  write_plate_layout(path("plate_layout.png"), placed, names, platform);
+  std::ifstream png(path("plate_layout.png"), std::ios::binary);
+  char magic[8] = {};
+  png.read(magic, 8);
+  EXPECT_EQ(std::string(magic, 8), "\x89PNG\r\n\x1a\n");
+  Mesh faceless = placed[0];
+  faceless.F.clear();
+  placed.push_back(faceless);
+  names.push_back("faceless");
+  const std::string e = test::error_of([&] { write_plate_layout(path("bad_layout.png"), placed, names, platform); });
+  EXPECT_EQ(e, "a footprint needs a mesh with faces");
+  EXPECT_FALSE(std::filesystem::exists(path("bad_layout.png")));
 }
 
 TEST(PlateJob, RefusesNoMembersAndAnEncodingWithoutThickness) {

@@ -313,7 +313,7 @@ struct Scratch {
   std::vector<uint64_t> touched;
   std::vector<uint64_t> touched_words;
   std::vector<std::pair<uint8_t, size_t>> spans;  // a row's, to be mirrored
-  bool clear = false;                              // sums and touched are all zero
+  bool clear = false;                              // sums, touched and touched_words are all zero
   CoverageLevels levels;
 };
 

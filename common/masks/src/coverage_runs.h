@@ -28,12 +28,12 @@
 //
 // Speed: the pieces are added straight into the sums of a strip of rows small enough to stay
 // in cache (the edges are sorted by strip first, not the pieces), and the rows are swept from a
-// bit mask of the pixels touched. Within a strip the edges are sorted by kind (one pixel, one
-// or two row or column crossings, the rest), and each kind is added by code without a loop or
-// branch that depends on the edge, the same numbers add_edge's general walk gives: which kind
-// an edge is follows no pattern, and the general walk's steps were mispredicted about once per
-// edge. The sweep hands each row's runs to the PNG's deflater (png_rows.h) without a branch on
-// their kind either.
+// bit mask of the pixels touched, visiting only its words that are not zero. Within a strip the
+// edges are sorted by kind (one pixel, one or two row or column crossings, the rest), and each
+// kind is added by code without a loop or branch that depends on the edge, the same numbers
+// add_edge's general walk gives: which kind an edge is follows no pattern, and the general
+// walk's steps were mispredicted about once per edge. The sweep hands each row's runs to the
+// PNG's deflater (png_rows.h) without a branch on their kind either.
 #include <cstddef>
 #include <cstdint>
 #include <vector>

@@ -11,6 +11,7 @@
 #include "slicereuse/util/atomic_file.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
+#include "slicereuse/util/parallel_blocks.h"
 
 namespace slicereuse {
 namespace {
@@ -76,9 +77,8 @@ void write_plate_layout(const std::string& path, const std::vector<Mesh>& placed
   // Every member's footprint on the image's pixels (one member per core: each is a pass over
   // its faces) and its outline, then the names on top.
   std::vector<Footprint> footprints(placed.size());
-  const long long n = static_cast<long long>(placed.size());
-#pragma omp parallel for schedule(dynamic, 1)
-  for (long long m = 0; m < n; ++m) footprints[size_t(m)] = mesh_footprint(placed[size_t(m)], 0, px);
+  parallel_blocks(placed.size(), [&](size_t m) { footprints[m] = mesh_footprint(placed[m], 0, px); }, {},
+                  "plate layout");
   std::vector<std::array<int, 2>> centre;
   for (size_t m = 0; m < placed.size(); ++m) {
     const Footprint& f = footprints[m];
