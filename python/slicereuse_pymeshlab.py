@@ -191,7 +191,7 @@ def _meshset(ms=None):
     process ends: pymeshlab 2025.7.post1 writes into it later otherwise (see README); if it held
     the arranged members, they are no longer used."""
     global _arranged
-    ms = ms or _pymeshlab.MeshSet()
+    ms = _pymeshlab.MeshSet() if ms is None else ms
     try:
         yield ms
     except Exception as e:
