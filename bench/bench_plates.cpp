@@ -3,9 +3,12 @@
 // both writing the plate's print file, and the arrangement's own seconds. Also writes the first
 // plate's placed members as one binary STL (plate_1.stl) and PrusaSlicer's display options for
 // the profile (prusa_display_args), for bench_plates.sh's PrusaSlicer run on the same plate.
-//   bench_plates [--printer ID] [--faces N] [--thickness MM] [--members M] [--plates P] [--out DIR]
+//   bench_plates [--printer ID] [--faces N] [--thickness MM] [--members M] [--plates P] [--format EXT]
+//                [--out DIR]
 // --members: members besides the source (default 20); --plates: how many plates to time (default
-// all). Freed buffers are kept for the next plate (ReuseBuffers), as Make Plate Job keeps them:
+// all); --format: the print file's extension (.sl1, .sl1s, .goo; default the printer's own, a PNG
+// folder for the method's display, whose thousands of files time the file system more than the
+// masks at 1 um). Freed buffers are kept for the next plate (ReuseBuffers), as Make Plate Job keeps them:
 // the first plate fills fresh pages, the others reuse them; the median is over the plates timed.
 #include <omp.h>
 
@@ -63,7 +66,7 @@ void write_stl(const std::string& path, const std::vector<Mesh>& meshes) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string printer = "prusa_sl1s_speed";
+  std::string printer = "prusa_sl1s_speed", extension;
   int plates_to_time = 1 << 30, members = 20;
   std::vector<char*> rest{argv[0]};
   for (int i = 1; i < argc; ++i) {
@@ -71,6 +74,7 @@ int main(int argc, char** argv) {
     if (i + 1 < argc && k == "--printer") printer = argv[++i];
     else if (i + 1 < argc && k == "--plates") plates_to_time = std::atoi(argv[++i]);
     else if (i + 1 < argc && k == "--members") members = std::atoi(argv[++i]);
+    else if (i + 1 < argc && k == "--format") extension = argv[++i];
     else rest.push_back(argv[i]);
   }
   BenchArgs args = parse_bench_args(int(rest.size()), rest.data());
@@ -80,6 +84,7 @@ int main(int argc, char** argv) {
   std::filesystem::create_directories(args.out);
   const ReuseBuffers keep;
   const PrinterPreset& preset = printer_preset(printer);
+  if (extension.empty()) extension = preset.extension;
   // Anti-aliased at gamma 1, as PrusaSlicer draws the same plate (its gamma_correction default).
   PrinterProfile profile = preset.profile;
   profile.antialiasing = true;
@@ -120,7 +125,7 @@ int main(int argc, char** argv) {
     std::vector<Mesh> placed;
     for (size_t m : a.members[k]) placed.push_back(place_mesh(family[m], a.placement[m]));
     if (k == 0) write_stl(args.out + "/plate_1.stl", placed);
-    const std::string out = plate_file_name(args.out + "/plate" + (preset.extension.empty() ? "" : preset.extension), k + 1);
+    const std::string out = plate_file_name(args.out + "/plate" + extension, k + 1);
     PlateJobOptions reuse;
     reuse.encoding = &encoding;
     reuse.edge_ends = &ends;
@@ -134,7 +139,7 @@ int main(int argc, char** argv) {
     direct.slicing.z_start = encoding.z_start;
     direct.range_budget_bytes = available_memory() / 4;
     t = std::chrono::steady_clock::now();
-    const PlateJobStats d = export_plate(placed, direct, profile, out + ".direct" + preset.extension);
+    const PlateJobStats d = export_plate(placed, direct, profile, out + ".direct" + extension);
     const double direct_s = since(t);
     reuse_times.push_back(reuse_s);
     direct_times.push_back(direct_s);

@@ -3,24 +3,26 @@
 # family on plates of a printer and times the first plate by reuse and by direct slicing, then
 # PrusaSlicer slices the same arranged plate (the placed members as one STL, kept where they are
 # placed: --dont-arrange) into an .sl1 for the same display and layer height, one run.
-#   bench/bench_plates.sh [--printer ID] [--faces N] [--thickness MM] [--members M]
+#   bench/bench_plates.sh [--printer ID] [--faces N] [--thickness MM] [--members M] [--format EXT]
+# (--format: our print file's extension, bench_plates' option; PrusaSlicer writes an .sl1.)
 # Needs PrusaSlicer (apt-get install prusa-slicer) for its line; without it, that line is skipped.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-printer=prusa_sl1s_speed faces=545000 thickness=0.05 members=20
+printer=prusa_sl1s_speed faces=545000 thickness=0.05 members=20 format=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --printer) printer=$2; shift 2 ;;
     --faces) faces=$2; shift 2 ;;
     --thickness) thickness=$2; shift 2 ;;
     --members) members=$2; shift 2 ;;
-    *) echo "usage: bench/bench_plates.sh [--printer ID] [--faces N] [--thickness MM] [--members M]" >&2; exit 2 ;;
+    --format) format=(--format "$2"); shift 2 ;;
+    *) echo "usage: bench/bench_plates.sh [--printer ID] [--faces N] [--thickness MM] [--members M] [--format EXT]" >&2; exit 2 ;;
   esac
 done
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 "$root/build/2020/bench/bench_plates" --printer "$printer" --faces "$faces" --thickness "$thickness" \
-  --members "$members" --out "$work" | tee "$work/ours.txt"
+  --members "$members" "${format[@]}" --out "$work" | tee "$work/ours.txt"
 if ! command -v prusa-slicer >/dev/null; then
   echo "PrusaSlicer: not installed (apt-get install prusa-slicer)"
   exit 0

@@ -205,3 +205,73 @@ TEST(TransferContours, LocalZEditReslicesOnlyTheLayersItTouches) {
   test::expect_same_sections(moved, direct);
   expect_same_points_without_encoding(source, member, moved);
 }
+
+// ExactTransfer, a range of layers at a time (as a build plate transfers a member), gives every
+// range's layers as direct slicing of the member on those planes does, re-sliced layers and the
+// layers above the source's top included; for a member transferred on every layer, the same
+// points, bit for bit and in the same order, as the whole transfer. Both ways of finding the
+// edges (the faces, the edge ends) agree, and a range beyond the member's layers is refused.
+TEST(TransferContours, ExactTransferInRangesEqualsTheWholeTransfer) {
+  for (const test::ZChange z : {test::ZChange::None, test::ZChange::Band, test::ZChange::Everywhere}) {
+    SCOPED_TRACE(int(z));
+    test::FamilyOptions o;
+    o.shape = "ear";
+    o.faces = 6000;
+    o.height = 10;
+    o.seed = 7;
+    o.z_change = z;
+    const Mesh base = test::make_family_base(o);
+    const Slices source = slice(base, 0.05);
+    const Buffer<uint32_t> ends = encoded_edge_ends(source, base);
+    const TransferOptions bare(TransferMode::Exact, false);
+    for (int i = 1; i <= 4; ++i) {
+      SCOPED_TRACE("member " + std::to_string(i));
+      const Mesh member = test::make_family_member(base, o, i);
+      TransferStats whole_stats;
+      const Slices whole = transfer_contours(source, member, bare, &whole_stats);
+      const ExactTransfer by_faces(source, member), by_ends(source, ends, member);
+      ASSERT_EQ(by_faces.layers(), whole.layers());
+      ASSERT_EQ(by_ends.layers(), whole.layers());
+      const size_t L = whole.layers();
+      // A one-layer range, a short one, and the rest in ranges of 64 (the last one shorter).
+      std::vector<size_t> first{0, 1, 8};
+      while (first.back() + 64 < L) first.push_back(first.back() + 64);
+      first.push_back(L);
+      size_t transferred = 0, resliced = 0;
+      for (size_t r = 0; r + 1 < first.size(); ++r) {
+        const size_t a = first[r], b = first[r + 1];
+        SCOPED_TRACE("layers " + std::to_string(a) + " to " + std::to_string(b));
+        TransferStats st;
+        const Slices part = by_ends.layers(a, b, &st);
+        transferred += st.transferred_layers;
+        resliced += st.resliced_layers;
+        EXPECT_EQ(st.transferred_layers + st.resliced_layers, b - a);
+        EXPECT_FALSE(part.has_encoding());
+        EXPECT_DOUBLE_EQ(part.z_start, source.z_start + double(a) * source.thickness);
+        const Slices direct =
+            slice_planes(member, {whole.layer_z.begin() + long(a), whole.layer_z.begin() + long(b)}, {}, false);
+        test::expect_same_sections(part, direct);
+        const Slices other = by_faces.layers(a, b);
+        EXPECT_TRUE(other.xyz == part.xyz && other.contour_begin == part.contour_begin);
+        if (whole_stats.resliced_layers == 0) {
+          const uint64_t p0 = whole.contour_begin[whole.layer_begin[a]];
+          const uint64_t p1 = whole.contour_begin[whole.layer_begin[b]];
+          ASSERT_EQ(part.points(), p1 - p0);
+          EXPECT_TRUE(std::equal(part.xyz.begin(), part.xyz.end(), whole.xyz.begin() + long(3 * p0)));
+          for (size_t k = 0; k <= b - a; ++k)
+            EXPECT_EQ(part.contour_begin[part.layer_begin[k]] + p0, whole.contour_begin[whole.layer_begin[a + k]]);
+        }
+      }
+      EXPECT_EQ(transferred + resliced, L);
+      if (z == test::ZChange::None) EXPECT_EQ(resliced, 0u);
+      if (z == test::ZChange::Band) EXPECT_GT(resliced, 0u);
+      EXPECT_EQ(by_ends.layers(L, L).layers(), 0u);
+      try {
+        by_ends.layers(2, L + 1);
+        ADD_FAILURE() << "a range beyond the member's layers was accepted";
+      } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("the target has " + std::to_string(L)), std::string::npos) << e.what();
+      }
+    }
+  }
+}

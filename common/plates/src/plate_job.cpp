@@ -13,31 +13,10 @@
 namespace slicereuse {
 namespace {
 
-// Layers [a, b) of an encoding, as an encoding of their own planes: its thickness is 0, so a
-// transfer cuts the target on exactly these planes (transfer_layers.h, target_planes) instead
-// of extending them to the target's top. Their edge ends into *ends when edge_ends is given.
-Slices encoding_layers(const Slices& enc, const Buffer<uint32_t>* edge_ends, size_t a, size_t b,
-                       Buffer<uint32_t>* ends) {
-  Slices s;
-  s.fingerprint = enc.fingerprint;
-  s.layer_z.assign(enc.layer_z.begin() + long(a), enc.layer_z.begin() + long(b));
-  const uint64_t c0 = enc.layer_begin[a], c1 = enc.layer_begin[b];
-  const uint64_t p0 = enc.contour_begin[c0], p1 = enc.contour_begin[c1];
-  for (size_t k = a; k <= b; ++k) s.layer_begin.push_back(enc.layer_begin[k] - c0);
-  for (uint64_t c = c0; c <= c1; ++c) s.contour_begin.push_back(enc.contour_begin[c] - p0);
-  s.contour_open.assign(enc.contour_open.begin() + long(c0), enc.contour_open.begin() + long(c1));
-  s.face.resize(p1 - p0);
-  s.edge.resize(p1 - p0);
-  s.t.resize(p1 - p0);
-  std::memcpy(s.face.data(), enc.face.data() + p0, (p1 - p0) * sizeof(uint32_t));
-  std::memcpy(s.edge.data(), enc.edge.data() + p0, p1 - p0);
-  std::memcpy(s.t.data(), enc.t.data() + p0, (p1 - p0) * sizeof(double));
-  if (edge_ends) {
-    ends->resize(2 * (p1 - p0));
-    std::memcpy(ends->data(), edge_ends->data() + 2 * p0, 2 * (p1 - p0) * sizeof(uint32_t));
-  }
-  return s;
-}
+// At most this many bytes of points in a range of a reused plate (plate_job.h): on the 545k-face
+// arch, ranges of 16 MB made plates of 3 to 5 members slower, ranges of 256 MB made a plate of 5
+// members (a plate larger than those before it, filling fresh pages) slower.
+constexpr uint64_t kReusedRangeBytes = uint64_t(64) << 20;
 
 // A member's layers for plate layers [first, first + s.layers()).
 struct Piece {
@@ -89,57 +68,26 @@ Slices merge_layers(const std::vector<Piece>& pieces, const std::vector<double>&
 }
 
 // The plate's layers [a, b): each member's own layers there (own[m]: how many it has), by
-// transfer where the encoding has them, else sliced directly; merged member after member.
-Slices plate_range(const std::vector<Mesh>& placed, const PlateJobOptions& o, const std::vector<double>& planes,
-                   const std::vector<size_t>& own, size_t a, size_t b, PlateJobStats& st, const Progress& progress) {
-  const size_t n = placed.size(), Le = o.encoding ? o.encoding->layers() : 0;
-  // The range's encoding, shared by every member that has all its layers; a shorter member gets
-  // one cut at its own top (transferred onto planes above a member's top, layers would fail
-  // their certificate, and a range failing most would be sliced directly).
-  struct Sub {
-    size_t end = 0;
-    Slices enc;
-    Buffer<uint32_t> ends;
-  };
-  Sub shared, cut;
-  auto sub_to = [&](size_t te) -> const Sub& {
-    Sub& s = te == std::min(b, Le) ? shared : cut;
-    if (s.end != te || s.enc.layer_z.empty()) {
-      s.enc = encoding_layers(*o.encoding, o.edge_ends, a, te, &s.ends);
-      s.end = te;
-    }
-    return s;
-  };
+// transfer (transfers[m], when reusing: layers above the encoding's are sliced directly within
+// it) or sliced directly; merged member after member.
+Slices plate_range(const std::vector<Mesh>& placed, const std::vector<ExactTransfer>& transfers,
+                   const std::vector<double>& planes, const std::vector<size_t>& own, size_t a, size_t b,
+                   PlateJobStats& st, const Progress& progress) {
+  const size_t n = placed.size();
   std::vector<Piece> pieces;
   for (size_t m = 0; m < n; ++m) {
     const Progress mp = sub_progress(progress, double(m) / double(n), double(m + 1) / double(n));
     const size_t e = std::min(b, own[m]);
-    const size_t te = std::min(e, Le);  // the member's layers the encoding has
-    if (a < te) {
-      TransferStats ts;
-      const TransferOptions exact(TransferMode::Exact, false);
-      if (a == 0 && te == Le && own[m] == Le) {
-        // The whole encoding, and the member has exactly its layers: transferred as it is (a
-        // transfer's planes run to the member's top, here the encoding's last), with no copy.
-        pieces.push_back({o.edge_ends ? transfer_contours(*o.encoding, *o.edge_ends, placed[m], exact, &ts, mp)
-                                      : transfer_contours(*o.encoding, placed[m], exact, &ts, mp),
-                          a});
-      } else {
-        const Sub& sub = sub_to(te);
-        pieces.push_back({o.edge_ends ? transfer_contours(sub.enc, sub.ends, placed[m], exact, &ts, mp)
-                                      : transfer_contours(sub.enc, placed[m], exact, &ts, mp),
-                          a});
-      }
-      st.transferred_layers += ts.transferred_layers;
-      st.resliced_layers += ts.resliced_layers;
+    if (a >= e) continue;
+    if (transfers.empty()) {
+      pieces.push_back({slice_planes(placed[m], {planes.begin() + long(a), planes.begin() + long(e)}, mp, false), a});
+      st.resliced_layers += e - a;
+      continue;
     }
-    // Layers above the encoding's (a member taller than the source), or all of them when
-    // slicing directly.
-    const size_t d = std::max(a, te);
-    if (d < e) {
-      pieces.push_back({slice_planes(placed[m], {planes.begin() + long(d), planes.begin() + long(e)}, mp, false), d});
-      st.resliced_layers += e - d;
-    }
+    TransferStats ts;
+    pieces.push_back({transfers[m].layers(a, e, &ts, mp), a});
+    st.transferred_layers += ts.transferred_layers;
+    st.resliced_layers += ts.resliced_layers;
   }
   if (pieces.size() == 1 && pieces[0].first == a && pieces[0].s.layers() == b - a) {
     // One member fills the range (a plate of one member): its layers are the plate's, uncopied.
@@ -181,22 +129,40 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
   PlateJobStats st;
   const std::vector<double> planes = plate_planes(placed, o, &st.z_start, &st.thickness);
   const size_t L = planes.size(), n = placed.size();
-  // Each member's own layer count: its direct slicing from the plate's z_start stops at its top.
+  // Reusing, each member's transfer is prepared once for all ranges.
+  std::vector<ExactTransfer> transfers;
+  for (size_t m = 0; o.encoding && m < n; ++m) {
+    if (o.edge_ends)
+      transfers.emplace_back(*o.encoding, *o.edge_ends, placed[m]);
+    else
+      transfers.emplace_back(*o.encoding, placed[m]);
+  }
+  // Each member's own layer count: its direct slicing from the plate's z_start stops at its top
+  // (a transfer's layers are those).
   std::vector<size_t> own(n, 0);
   for (size_t m = 0; m < n; ++m) {
     const double top = z_range(placed[m]).max;
-    if (st.z_start < top) own[m] = layer_planes(st.z_start, st.thickness, top).size();
+    if (!transfers.empty())
+      own[m] = transfers[m].layers();
+    else if (st.z_start < top)
+      own[m] = layer_planes(st.z_start, st.thickness, top).size();
   }
   std::vector<const Mesh*> meshes;
   for (const Mesh& m : placed) meshes.push_back(&m);
   // A range holds every member's points twice (the members' layers and the plate's merged copy).
-  const std::vector<size_t> first = layer_chunks(meshes, planes, o.range_budget_bytes, 2 * 3 * sizeof(double));
+  // Reusing, a range costs only what its points do, so ranges are kept small: each then fills
+  // the pages the range before it freed (kept by ReuseBuffers, filters_common.h) instead of fresh
+  // ones, which the kernel zeroes first.
+  const uint64_t budget = !o.encoding                    ? o.range_budget_bytes
+                          : o.range_budget_bytes == 0 ? kReusedRangeBytes
+                                                      : std::min(o.range_budget_bytes, kReusedRangeBytes);
+  const std::vector<size_t> first = layer_chunks(meshes, planes, budget, 2 * 3 * sizeof(double));
   st.ranges = first.size() - 1;
   st.layers = L;
 
   SliceChunks chunks{first, st.thickness, [&](size_t i, const Progress& range_progress) {
                        const auto t = std::chrono::steady_clock::now();
-                       Slices s = plate_range(placed, o, planes, own, first[i], first[i + 1], st, range_progress);
+                       Slices s = plate_range(placed, transfers, planes, own, first[i], first[i + 1], st, range_progress);
                        st.points += s.points();
                        st.slicing_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
                        return s;

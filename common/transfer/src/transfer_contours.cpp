@@ -9,6 +9,7 @@
 #include "slicereuse/slicing/edge_point.h"
 #include "slicereuse/slicing/straddling_faces.h"
 #include "slicereuse/util/error.h"
+#include "slicereuse/util/format.h"
 #include "transfer_layers.h"
 
 namespace slicereuse {
@@ -25,83 +26,100 @@ struct EndsFromPairs {
 };
 
 // Cuts layer k's encoded edges of the target by the layer's plane, into out at the encoding's
-// offsets (and the target's encoding when out has room for it). Returns the certificate's first
-// half: every edge still crosses from corner j below to corner j+1 at or above.
+// offsets less p0 (out's first point is the encoding's point p0), and the target's encoding when
+// out has room for it. Returns the certificate's first half: every edge still crosses from corner
+// j below to corner j+1 at or above.
 template <bool WithEncoding, class Ends>
-bool transfer_layer(const Slices& enc, const Ends& ends, const Mesh& target, size_t k, Slices& out) {
+bool transfer_layer(const Slices& enc, const Ends& ends, const Mesh& target, size_t k, size_t p0, Slices& out) {
   const double zk = enc.layer_z[k];
   const double* V = target.V.data();
   double* xyz = out.xyz.data();
   bool good = true;
-  const size_t p0 = layer_point_begin(enc, k), p1 = layer_point_end(enc, k);
-  for (size_t p = p0; p < p1; ++p) {
+  const size_t p1 = layer_point_begin(enc, k), p2 = layer_point_end(enc, k);
+  for (size_t p = p1; p < p2; ++p) {
     uint32_t ia, ib;
     ends(p, ia, ib);
     const double* a = V + 3 * size_t(ia);
     const double* b = V + 3 * size_t(ib);
     good &= (a[2] < zk) & (b[2] >= zk);
     const EdgePoint e = edge_point(a, b, zk);
-    xyz[3 * p] = e.x;
-    xyz[3 * p + 1] = e.y;
-    xyz[3 * p + 2] = zk;
-    if (WithEncoding) out.t[p] = e.t;
+    const size_t q = p - p0;
+    xyz[3 * q] = e.x;
+    xyz[3 * q + 1] = e.y;
+    xyz[3 * q + 2] = zk;
+    if (WithEncoding) out.t[q] = e.t;
   }
   if (WithEncoding) {
-    std::memcpy(&out.face[p0], &enc.face[p0], (p1 - p0) * sizeof(uint32_t));
-    std::memcpy(&out.edge[p0], &enc.edge[p0], p1 - p0);
+    std::memcpy(&out.face[p1 - p0], &enc.face[p1], (p2 - p1) * sizeof(uint32_t));
+    std::memcpy(&out.edge[p1 - p0], &enc.edge[p1], p2 - p1);
   }
   return good;
 }
 
+// Layers [a, b) of the target's planes (target_planes) by exact transfer, counts[k] being the
+// target's straddling faces on plane k.
 template <class Ends>
-Slices transfer_exact(const Slices& enc, const Ends& ends, const Mesh& target, bool with_encoding, TransferStats& st,
-                      const Progress& progress) {
-  std::vector<double> planes = target_planes(enc, target);
-  const size_t L = planes.size(), Le = std::min(L, enc.layers());
-  // The certificate's second half first, since it is cheap (O(faces + layers)): the target must
-  // have exactly as many straddling edges as the layer has points (counted through its faces,
-  // see straddling_faces.h), or the layer is re-sliced without being transferred at all.
+Slices transfer_exact_layers(const Slices& enc, const Ends& ends, const Mesh& target, const std::vector<double>& planes,
+                             const std::vector<uint64_t>& counts, size_t a, size_t b, bool with_encoding,
+                             TransferStats& st, const Progress& progress) {
+  // The range's encoded layers are [ta, te): ta is a when there are any, the encoding's top
+  // when a lies at or above it.
+  const size_t n = b - a, ta = std::min(a, enc.layers()), te = std::min(b, enc.layers());
+  // The certificate's second half first, since it is cheap (the counts are made once, in
+  // O(faces + layers)): the target must have exactly as many straddling edges as the layer has
+  // points (counted through its faces, see straddling_faces.h), or the layer is re-sliced
+  // without being transferred at all.
   // A sample of the first half as well, as cheap (two points per contour): the first and the
   // middle point of every contour must still cross the plane the same way up. A member that
   // changed in z keeps its counts on most layers (its sections only move), so the counts alone
   // let it through to a full transfer that then fails almost everywhere; the sample catches it
   // before any point is transferred. Sampling only rejects layers the full check would reject.
-  const std::vector<uint64_t> counts = straddling_face_counts(target, planes);
   const double* V = target.V.data();
   auto crosses = [&](size_t p, double zk) {
     uint32_t ia, ib;
     ends(p, ia, ib);
     return V[3 * size_t(ia) + 2] < zk && V[3 * size_t(ib) + 2] >= zk;
   };
-  std::vector<uint8_t> ok(L, 0);
+  std::vector<uint8_t> ok(n, 0);
   size_t candidates = 0;
-  for (size_t k = 0; k < Le; ++k) {
-    ok[k] = counts[k] == layer_point_end(enc, k) - layer_point_begin(enc, k);
-    for (size_t c = enc.layer_begin[k]; ok[k] && c < enc.layer_begin[k + 1]; ++c) {
+  for (size_t k = ta; k < te; ++k) {
+    bool good = counts[k] == layer_point_end(enc, k) - layer_point_begin(enc, k);
+    for (size_t c = enc.layer_begin[k]; good && c < enc.layer_begin[k + 1]; ++c) {
       const size_t p0 = enc.contour_begin[c], p1 = enc.contour_begin[c + 1];
-      ok[k] = !enc.contour_open[c] && crosses(p0, enc.layer_z[k]) && crosses((p0 + p1) / 2, enc.layer_z[k]);
+      good = !enc.contour_open[c] && crosses(p0, enc.layer_z[k]) && crosses((p0 + p1) / 2, enc.layer_z[k]);
     }
-    candidates += ok[k];
+    ok[k - a] = good;
+    candidates += good;
   }
+  std::vector<double> range(planes.begin() + long(a), planes.begin() + long(b));
   // A member that changed in z can fail most layers; transferring the rest and splicing would
   // then cost more than slicing every layer (the result is the same by construction).
-  if (2 * candidates < L) return slice_every_plane(target, std::move(planes), with_encoding, st, progress);
-  Slices moved = layout_of(enc);
+  if (2 * candidates < n) return slice_every_plane(target, std::move(range), with_encoding, st, progress);
+  Slices moved = layout_of(enc, ta, te);
   if (with_encoding) {
-    moved.face.resize(enc.points());
-    moved.edge.resize(enc.points());
-    moved.t.resize(enc.points());
+    moved.face.resize(moved.points());
+    moved.edge.resize(moved.points());
+    moved.t.resize(moved.points());
   }
-  for_each_layer(Le, progress, [&](size_t k) {
-    if (ok[k])
-      ok[k] = with_encoding ? transfer_layer<true>(enc, ends, target, k, moved)
-                            : transfer_layer<false>(enc, ends, target, k, moved);
+  const size_t p0 = layer_point_begin(enc, ta);
+  for_each_layer(te - ta, progress, [&](size_t i) {
+    if (ok[i])
+      ok[i] = with_encoding ? transfer_layer<true>(enc, ends, target, a + i, p0, moved)
+                            : transfer_layer<false>(enc, ends, target, a + i, p0, moved);
   });
 
-  std::vector<size_t> done_layer(L, kNoLayer);
-  for (size_t k = 0; k < Le; ++k)
-    if (ok[k]) done_layer[k] = k;
-  return splice_resliced(std::move(moved), done_layer, std::move(planes), target, with_encoding, st, progress);
+  std::vector<size_t> done_layer(n, kNoLayer);
+  for (size_t i = 0; i < te - ta; ++i)
+    if (ok[i]) done_layer[i] = i;
+  return splice_resliced(std::move(moved), done_layer, std::move(range), target, with_encoding, st, progress);
+}
+
+template <class Ends>
+Slices transfer_exact(const Slices& enc, const Ends& ends, const Mesh& target, bool with_encoding, TransferStats& st,
+                      const Progress& progress) {
+  const std::vector<double> planes = target_planes(enc, target);
+  return transfer_exact_layers(enc, ends, target, planes, straddling_face_counts(target, planes), 0, planes.size(),
+                               with_encoding, st, progress);
 }
 
 template <class Ends>
@@ -144,6 +162,12 @@ void check_family(const Slices& encoding, const Mesh& mesh) {
                 "Meshes)");
 }
 
+void check_edge_ends(const Slices& encoding, const Buffer<uint32_t>& edge_ends) {
+  if (edge_ends.size() != 2 * encoding.points())
+    throw Error("edge ends were computed for another encoding (" + std::to_string(edge_ends.size() / 2) +
+                " points, the encoding has " + std::to_string(encoding.points()) + ")");
+}
+
 template <class Ends>
 Slices transfer(const Slices& encoding, const Ends& ends, const Mesh& target, const TransferOptions& options,
                 TransferStats* stats, const Progress& progress) {
@@ -176,10 +200,36 @@ Buffer<uint32_t> encoded_edge_ends(const Slices& encoding, const Mesh& mesh) {
 Slices transfer_contours(const Slices& encoding, const Buffer<uint32_t>& edge_ends, const Mesh& target,
                          const TransferOptions& options, TransferStats* stats, const Progress& progress) {
   check_family(encoding, target);
-  if (edge_ends.size() != 2 * encoding.points())
-    throw Error("edge ends were computed for another encoding (" + std::to_string(edge_ends.size() / 2) +
-                " points, the encoding has " + std::to_string(encoding.points()) + ")");
+  check_edge_ends(encoding, edge_ends);
   return transfer(encoding, EndsFromPairs{edge_ends.data()}, target, options, stats, progress);
+}
+
+ExactTransfer::ExactTransfer(const Slices& encoding, const Mesh& target)
+    : encoding_(encoding), edge_ends_(nullptr), target_(target) {
+  check_family(encoding, target);
+  planes_ = target_planes(encoding, target);
+  counts_ = straddling_face_counts(target, planes_);
+}
+
+ExactTransfer::ExactTransfer(const Slices& encoding, const Buffer<uint32_t>& edge_ends, const Mesh& target)
+    : ExactTransfer(encoding, target) {
+  check_edge_ends(encoding, edge_ends);
+  edge_ends_ = &edge_ends;
+}
+
+Slices ExactTransfer::layers(size_t a, size_t b, TransferStats* stats, const Progress& progress) const {
+  if (a > b || b > planes_.size())
+    throw Error(format("transfer of layers %zu to %zu asked for, but the target has %zu", a, b, planes_.size()));
+  Slices out = reported_transfer(encoding_, encoding_.fingerprint, stats, progress, [&](TransferStats& st) {
+    return edge_ends_ ? transfer_exact_layers(encoding_, EndsFromPairs{edge_ends_->data()}, target_, planes_, counts_,
+                                              a, b, false, st, progress)
+                      : transfer_exact_layers(encoding_,
+                                              EndsFromFaces{encoding_.edge.data(), encoding_.face.data(),
+                                                            target_.F.data()},
+                                              target_, planes_, counts_, a, b, false, st, progress);
+  });
+  if (encoding_.thickness > 0) out.z_start = encoding_.z_start + double(a) * encoding_.thickness;
+  return out;
 }
 
 }  // namespace slicereuse

@@ -61,19 +61,25 @@ Slices assemble(const std::vector<Pick>& pick, std::vector<double> planes, bool 
 
 }  // namespace
 
-Slices layout_of(const Slices& enc) {
+Slices layout_of(const Slices& enc, size_t a, size_t b) {
+  const size_t c0 = enc.layer_begin[a], c1 = enc.layer_begin[b];
+  const size_t p0 = enc.contour_begin[c0], points = enc.contour_begin[c1] - p0;
   // Every transfer's output is allocated here: refused with the figures, not a bad_alloc, when
   // it would not fit.
-  check_memory_for(enc.points() * 3 * sizeof(double), format("transferring %zu contour points", enc.points()),
+  check_memory_for(points * 3 * sizeof(double), format("transferring %zu contour points", points),
                    "slice the source at a thicker layer, or with fewer layers (z_start)");
   Slices out;
-  out.layer_z = enc.layer_z;
-  out.layer_begin = enc.layer_begin;
-  out.contour_begin = enc.contour_begin;
-  out.contour_open = enc.contour_open;
-  out.xyz.resize(3 * enc.points());
+  out.layer_z.assign(enc.layer_z.begin() + long(a), enc.layer_z.begin() + long(b));
+  out.layer_begin.resize(b - a + 1);
+  for (size_t k = a; k <= b; ++k) out.layer_begin[k - a] = enc.layer_begin[k] - c0;
+  out.contour_begin.resize(c1 - c0 + 1);
+  for (size_t c = c0; c <= c1; ++c) out.contour_begin[c - c0] = enc.contour_begin[c] - p0;
+  out.contour_open.assign(enc.contour_open.begin() + long(c0), enc.contour_open.begin() + long(c1));
+  out.xyz.resize(3 * points);
   return out;
 }
+
+Slices layout_of(const Slices& enc) { return layout_of(enc, 0, enc.layers()); }
 
 std::vector<double> target_planes(const Slices& enc, const Mesh& target) {
   if (!(enc.thickness > 0)) return enc.layer_z;

@@ -13,7 +13,8 @@
 // slice_every_plane: that direct slicing of every plane (all counted as re-sliced).
 // for_each_layer(L, progress, body): body(k) for k in [0, L), in parallel blocks of layers.
 // layer_point_begin/end(s, k): the range of layer k's points in s.
-// layout_of(encoding): Slices with the encoding's layers and contours and room for their xyz.
+// layout_of(encoding): Slices with the encoding's layers and contours and room for their xyz;
+// layout_of(encoding, a, b): the same for its layers [a, b), counted from 0.
 // EndsFromFaces: the two vertex ids of encoded point p's edge (corner j, then corner j+1 of its
 // face), looked up in the faces F of any mesh with the encoding's fingerprint.
 #include <cstddef>
@@ -44,6 +45,7 @@ inline size_t layer_point_begin(const Slices& s, size_t k) { return s.contour_be
 inline size_t layer_point_end(const Slices& s, size_t k) { return s.contour_begin[s.layer_begin[k + 1]]; }
 
 Slices layout_of(const Slices& encoding);
+Slices layout_of(const Slices& encoding, size_t a, size_t b);
 
 // One transfer between its progress reports: make(stats) computes the layers; the output gets
 // the encoding's z_start and thickness and the fingerprint of the mesh it lies on (the target's),

@@ -18,6 +18,10 @@
 // Output: Slices with xyz and, when `encoding` is true, the target's own encoding, so the target
 // can be a source later. Without it, transfer writes 24 instead of 37 bytes per point; it is
 // memory-bound, so that is what it costs.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
 #include "slicereuse/mesh/mesh.h"
 #include "slicereuse/slicing/slices.h"
 #include "slicereuse/util/progress.h"
@@ -60,5 +64,31 @@ Buffer<uint32_t> encoded_edge_ends(const Slices& encoding, const Mesh& mesh);
 Slices transfer_contours(const Slices& encoding, const Buffer<uint32_t>& edge_ends, const Mesh& target,
                          const TransferOptions& options, TransferStats* stats = nullptr,
                          const Progress& progress = {});
+
+// ExactTransfer: the exact transfer (without the target's encoding) a range of layers at a time,
+// for a job that holds only some of a member's layers in memory at once (a build plate,
+// plate_job.h). What costs O(faces), the family check and the certificate's counts on every
+// plane of the target, is done once, when it is made; layers(a, b) then costs what its points
+// do, and equals layers [a, b) of transfer_contours(encoding, [edge_ends,] target, exact without
+// encoding), re-sliced layers included, with z_start that of layer a.
+class ExactTransfer {
+ public:
+  // Throws what transfer_contours throws for these. Keeps references to all of them.
+  ExactTransfer(const Slices& encoding, const Mesh& target);
+  ExactTransfer(const Slices& encoding, const Buffer<uint32_t>& edge_ends, const Mesh& target);
+
+  // The target's planes: the encoding's, up to the target's own top (a taller target's extra
+  // layers are sliced directly).
+  size_t layers() const { return planes_.size(); }
+  // Throws Error unless a <= b <= layers().
+  Slices layers(size_t a, size_t b, TransferStats* stats = nullptr, const Progress& progress = {}) const;
+
+ private:
+  const Slices& encoding_;
+  const Buffer<uint32_t>* edge_ends_;
+  const Mesh& target_;
+  std::vector<double> planes_;
+  std::vector<uint64_t> counts_;
+};
 
 }  // namespace slicereuse
