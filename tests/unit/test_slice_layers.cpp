@@ -9,6 +9,7 @@
 #include "shapes.h"
 #include "slicereuse/slicing/layer_planes.h"
 #include "slicereuse/slicing/slice_layers.h"
+#include "slicereuse/slicing/straddling_faces.h"
 #include "slicereuse/util/error.h"
 
 using namespace slicereuse;
@@ -288,4 +289,47 @@ TEST(SliceLayers, LowestVertexZStartMeansNaN) {
   SliceOptions o;
   o.z_start = z_start_option(kLowestVertexZStart);
   EXPECT_EQ(slice_layers(box, o).z_start, 0.3);
+}
+
+// straddling_face_counts equals a face-by-face count by the slicer's rule (a corner below the
+// plane, a corner at or above it): on evenly spaced planes, with vertices exactly on planes, and
+// on uneven planes (looked up by search, not arithmetic); on a closed mesh each count is the
+// number of points the slicer gives that layer.
+TEST(StraddlingFaces, CountsEqualAFaceByFaceCountAndTheSlicersPoints) {
+  test::FamilyOptions o;
+  o.shape = "ear";
+  o.faces = 6000;
+  o.height = 10;
+  Mesh m = test::make_family_base(o);
+  SliceOptions so;
+  so.thickness = 0.25;
+  so.encoding = false;
+  const Slices s = slice_layers(m, so);
+  // Some vertices exactly on planes.
+  for (size_t v = 0; v < m.vertices(); v += 7) m.V[3 * v + 2] = s.layer_z[(v / 7) % s.layers()];
+  std::vector<double> uneven;
+  for (size_t k = 0; k < s.layers(); k += 1 + k % 3) uneven.push_back(s.layer_z[k] + (k % 2 ? 0.01 : 0));
+  for (const std::vector<double>& planes : {s.layer_z, uneven}) {
+    const std::vector<uint64_t> counts = straddling_face_counts(m, planes);
+    ASSERT_EQ(counts.size(), planes.size());
+    for (size_t k = 0; k < planes.size(); ++k) {
+      uint64_t expected = 0;
+      for (size_t f = 0; f < m.faces(); ++f) {
+        bool below = false, above = false;
+        for (int j = 0; j < 3; ++j) {
+          const double z = m.V[3 * size_t(m.F[3 * f + j]) + 2];
+          below |= z < planes[k];
+          above |= z >= planes[k];
+        }
+        expected += below && above;
+      }
+      EXPECT_EQ(counts[k], expected) << "plane " << k;
+    }
+  }
+  const Slices sliced = slice_planes(m, s.layer_z, {}, false);
+  const std::vector<uint64_t> counts = straddling_face_counts(m, s.layer_z);
+  for (size_t k = 0; k < sliced.layers(); ++k) {
+    ASSERT_EQ(sliced.open_contours(), 0u);
+    EXPECT_EQ(counts[k], sliced.contour_begin[sliced.layer_begin[k + 1]] - sliced.contour_begin[sliced.layer_begin[k]]);
+  }
 }

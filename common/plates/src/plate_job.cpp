@@ -13,11 +13,6 @@
 namespace slicereuse {
 namespace {
 
-// At most this many bytes of points in a range of a reused plate (plate_job.h): on the 545k-face
-// arch, ranges of 16 MB made plates of 3 to 5 members slower, ranges of 256 MB made a plate of 5
-// members (a plate larger than those before it, filling fresh pages) slower.
-constexpr uint64_t kReusedRangeBytes = uint64_t(64) << 20;
-
 // A member's layers for plate layers [first, first + s.layers()).
 struct Piece {
   Slices s;
@@ -147,16 +142,20 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
     else if (st.z_start < top)
       own[m] = layer_planes(st.z_start, st.thickness, top).size();
   }
-  std::vector<const Mesh*> meshes;
-  for (const Mesh& m : placed) meshes.push_back(&m);
   // A range holds every member's points twice (the members' layers and the plate's merged copy).
-  // Reusing, a range costs only what its points do, so ranges are kept small: each then fills
-  // the pages the range before it freed (kept by ReuseBuffers, filters_common.h) instead of fresh
-  // ones, which the kernel zeroes first.
-  const uint64_t budget = !o.encoding                    ? o.range_budget_bytes
-                          : o.range_budget_bytes == 0 ? kReusedRangeBytes
-                                                      : std::min(o.range_budget_bytes, kReusedRangeBytes);
-  const std::vector<size_t> first = layer_chunks(meshes, planes, budget, 2 * 3 * sizeof(double));
+  // Reusing, each layer's points are the certificate's counts, made already.
+  constexpr size_t kPointBytes = 2 * 3 * sizeof(double);
+  std::vector<size_t> first;
+  if (transfers.empty()) {
+    std::vector<const Mesh*> meshes;
+    for (const Mesh& m : placed) meshes.push_back(&m);
+    first = layer_chunks(meshes, planes, o.range_budget_bytes, kPointBytes);
+  } else {
+    std::vector<uint64_t> points(L, 0);
+    for (const ExactTransfer& t : transfers)
+      for (size_t k = 0; k < t.layers(); ++k) points[k] += t.layer_points()[k];
+    first = layer_chunks(points, o.range_budget_bytes, kPointBytes);
+  }
   st.ranges = first.size() - 1;
   st.layers = L;
 

@@ -26,4 +26,8 @@ std::vector<size_t> layer_chunks(const Mesh& mesh, const std::vector<double>& pl
 std::vector<size_t> layer_chunks(const std::vector<const Mesh*>& meshes, const std::vector<double>& planes,
                                  uint64_t budget_bytes, size_t bytes_per_point);
 
+// The same from each layer's point count, known already (layer_points.size() layers).
+std::vector<size_t> layer_chunks(const std::vector<uint64_t>& layer_points, uint64_t budget_bytes,
+                                 size_t bytes_per_point);
+
 }  // namespace slicereuse

@@ -80,6 +80,9 @@ class ExactTransfer {
   // The target's planes: the encoding's, up to the target's own top (a taller target's extra
   // layers are sliced directly).
   size_t layers() const { return planes_.size(); }
+  // The target's points on each of its layers (its faces that straddle the plane; one point
+  // each on a closed layer), which the certificate checks.
+  const std::vector<uint64_t>& layer_points() const { return counts_; }
   // Throws Error unless a <= b <= layers().
   Slices layers(size_t a, size_t b, TransferStats* stats = nullptr, const Progress& progress = {}) const;
 
