@@ -4,11 +4,12 @@
 // plate's placed members as one binary STL (plate_1.stl) and PrusaSlicer's display options for
 // the profile (prusa_display_args), for bench_plates.sh's PrusaSlicer run on the same plate.
 //   bench_plates [--printer ID] [--faces N] [--thickness MM] [--members M] [--plates P] [--format EXT]
-//                [--out DIR]
+//                [--repeat R] [--out DIR]
 // --members: members besides the source (default 20); --plates: how many plates to time (default
 // all); --format: the print file's extension (.sl1, .sl1s, .goo; default the printer's own, a PNG
 // folder for the method's display, whose thousands of files time the file system more than the
-// masks at 1 um). Freed buffers are kept for the next plate (ReuseBuffers), as Make Plate Job keeps them:
+// masks at 1 um); --repeat: make each plate by reuse R times in a row and give the median (the
+// first run's seconds in brackets: it may fill fresh pages, the others reuse them). Freed buffers are kept for the next plate (ReuseBuffers), as Make Plate Job keeps them:
 // the first plate fills fresh pages, the others reuse them; the median is over the plates timed.
 #include <omp.h>
 
@@ -67,7 +68,7 @@ void write_stl(const std::string& path, const std::vector<Mesh>& meshes) {
 
 int main(int argc, char** argv) {
   std::string printer = "prusa_sl1s_speed", extension;
-  int plates_to_time = 1 << 30, members = 20;
+  int plates_to_time = 1 << 30, members = 20, repeat = 1;
   std::vector<char*> rest{argv[0]};
   for (int i = 1; i < argc; ++i) {
     const std::string k = argv[i];
@@ -75,6 +76,7 @@ int main(int argc, char** argv) {
     else if (i + 1 < argc && k == "--plates") plates_to_time = std::atoi(argv[++i]);
     else if (i + 1 < argc && k == "--members") members = std::atoi(argv[++i]);
     else if (i + 1 < argc && k == "--format") extension = argv[++i];
+    else if (i + 1 < argc && k == "--repeat") repeat = std::max(1, std::atoi(argv[++i]));
     else rest.push_back(argv[i]);
   }
   BenchArgs args = parse_bench_args(int(rest.size()), rest.data());
@@ -130,9 +132,14 @@ int main(int argc, char** argv) {
     reuse.encoding = &encoding;
     reuse.edge_ends = &ends;
     reuse.range_budget_bytes = available_memory() / 4;
-    t = std::chrono::steady_clock::now();
-    const PlateJobStats r = export_plate(placed, reuse, profile, out);
-    const double reuse_s = since(t);
+    PlateJobStats r;
+    std::vector<double> runs;
+    for (int run = 0; run < repeat; ++run) {
+      t = std::chrono::steady_clock::now();
+      r = export_plate(placed, reuse, profile, out);
+      runs.push_back(since(t));
+    }
+    const double reuse_s = median_of(runs);
     PlateJobOptions direct;
     direct.slicing = so;
     direct.slicing.encoding = false;
@@ -148,9 +155,10 @@ int main(int argc, char** argv) {
     t = std::chrono::steady_clock::now();
     write_plate_layout(plate_layout_file_name(out), placed, plate_names, platform);
     const double layout_s = since(t);
-    std::printf("%-6zu %8zu %8zu %12zu %10.2f %10.2f %12.2f   (transfer %.2f s, slicing %.2f s; reuse: %zu member "
+    std::printf("%-6zu %8zu %8zu %12zu %10.3f %10.2f %12.2f   (%stransfer %.2f s, slicing %.2f s; reuse: %zu member "
                 "layers transferred, %zu sliced; %zu ranges; layout picture %.2f s)\n",
-                k + 1, placed.size(), r.layers, r.points, reuse_s, direct_s, direct_s / reuse_s, r.slicing_seconds,
+                k + 1, placed.size(), r.layers, r.points, reuse_s, direct_s, direct_s / reuse_s,
+                repeat > 1 ? format("median of %d, first %.3f s; ", repeat, runs[0]).c_str() : "", r.slicing_seconds,
                 d.slicing_seconds, r.transferred_layers, r.resliced_layers, r.ranges, layout_s);
     if (d.points != r.points) std::printf("  points differ: reuse %zu, direct %zu\n", r.points, d.points);
   }

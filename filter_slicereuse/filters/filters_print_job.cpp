@@ -84,7 +84,9 @@ Result run_print_job(const PrintJobParams& p, Host& host) {
                          s.z_start = z_start + double(first[i]) * options.thickness;
                          points += s.points();
                          slicing_seconds += seconds_since(t);
-                         return s;
+                         std::vector<SlicePart> parts;
+                         parts.push_back({std::move(s), 0});
+                         return parts;
                        }};
     masks = export_masks(chunks, profile, p.output_path, progress);
     masks_seconds = masks.seconds - slicing_seconds;

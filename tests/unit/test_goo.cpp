@@ -385,7 +385,9 @@ TEST_F(GooFiles, RangesOfLayersMakeTheSameFileByteForByte) {
     chunks.first = {0, 2, 3, layers.size()};
     chunks.thickness = 0.1;
     chunks.make = [&](size_t i, const Progress&) {
-      return make_slices({layers.begin() + long(chunks.first[i]), layers.begin() + long(chunks.first[i + 1])});
+      std::vector<SlicePart> parts;
+      parts.push_back({make_slices({layers.begin() + long(chunks.first[i]), layers.begin() + long(chunks.first[i + 1])}), 0});
+      return parts;
     };
     const MaskExportStats whole = export_masks(make_slices(layers), p, path("whole.goo"));
     const MaskExportStats ranged = export_masks(chunks, p, path("ranged.goo"));

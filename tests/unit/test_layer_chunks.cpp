@@ -63,7 +63,9 @@ SliceChunks chunks_of(const Job& j, std::vector<size_t> first) {
     Slices s = slice_planes(j.mesh, std::vector<double>(j.planes.begin() + long(f[i]), j.planes.begin() + long(f[i + 1])),
                             progress, false);
     s.thickness = 0.05;
-    return s;
+    std::vector<SlicePart> parts;
+    parts.push_back({std::move(s), 0});
+    return parts;
   };
   return c;
 }
@@ -139,6 +141,70 @@ TEST_F(ChunkedMaskExport, EqualsTheExportOfTheWholeStack) {
   }
 }
 
+// Layers [k0, k1) of s with only the contours whose number within their layer has the given
+// parity.
+Slices contours_of_parity(const Slices& s, size_t k0, size_t k1, size_t parity) {
+  Slices out;
+  out.thickness = s.thickness;
+  out.z_start = s.z_start + double(k0) * s.thickness;
+  out.layer_begin.push_back(0);
+  out.contour_begin.push_back(0);
+  for (size_t k = k0; k < k1; ++k) {
+    out.layer_z.push_back(s.layer_z[k]);
+    for (uint64_t c = s.layer_begin[k]; c < s.layer_begin[k + 1]; ++c) {
+      if ((c - s.layer_begin[k]) % 2 != parity) continue;
+      for (uint64_t p = s.contour_begin[c]; p < s.contour_begin[c + 1]; ++p)
+        out.xyz.insert(out.xyz.end(), s.xyz.begin() + long(3 * p), s.xyz.begin() + long(3 * p + 3));
+      out.contour_begin.push_back(out.xyz.size() / 3);
+      out.contour_open.push_back(s.contour_open[c]);
+    }
+    out.layer_begin.push_back(out.contour_open.size());
+  }
+  return out;
+}
+
+// A range may come in parts that each hold some of its layers (as a build plate's members do):
+// here the even contours of the range's first half, the odd contours of all its layers and the
+// even contours of its second half. Every layer is the union of its parts, so the export equals
+// that of the whole stack.
+TEST_F(ChunkedMaskExport, RangesInPartsEqualTheExportOfTheWholeStack) {
+  Job j = arch_job();
+  j.profile.antialiasing = true;
+  j.profile.gamma = 1;
+  size_t two_contour_layers = 0;
+  for (size_t k = 0; k < j.whole.layers(); ++k) two_contour_layers += j.whole.layer_begin[k + 1] - j.whole.layer_begin[k] > 1;
+  ASSERT_GT(two_contour_layers, 10u);  // the split takes contours apart
+  const std::vector<size_t> first = layer_chunks(j.mesh, j.planes, 24 * j.whole.points() / 4, 24);
+  SliceChunks chunks;
+  chunks.first = first;
+  chunks.thickness = j.whole.thickness;
+  chunks.make = [&](size_t i, const Progress&) {
+    const size_t a = first[i], b = first[i + 1], mid = (a + b) / 2;
+    std::vector<SlicePart> parts;
+    parts.push_back({contours_of_parity(j.whole, a, mid, 0), 0});
+    parts.push_back({contours_of_parity(j.whole, a, b, 1), 0});
+    parts.push_back({contours_of_parity(j.whole, mid, b, 0), mid - a});
+    return parts;
+  };
+  for (const char* ext : {".sl1", ".goo", ""}) {
+    const std::string whole = dir + "/whole" + ext, parted = dir + "/parted" + ext;
+    const MaskExportStats a = export_masks(j.whole, j.profile, whole);
+    const MaskExportStats b = export_masks(chunks, j.profile, parted);
+    EXPECT_EQ(b.layers, a.layers);
+    EXPECT_EQ(b.min_x, a.min_x);
+    EXPECT_EQ(b.max_y, a.max_y);
+    const StackComparison c = compare_mask_stacks(whole, parted, "");
+    EXPECT_EQ(c.layers.size(), j.planes.size());
+    EXPECT_EQ(c.min_similarity, 1.0);
+    EXPECT_EQ(c.differing_pixels, 0u);
+    EXPECT_EQ(c.max_grey_difference, 0);
+    if (std::string(ext) == ".sl1") {  // the areas are summed in another order
+      auto ml = [](const std::string& line) { return std::stod(line.substr(line.find('=') + 1)); };
+      EXPECT_NEAR(ml(used_material(parted)), ml(used_material(whole)), 1e-9 * ml(used_material(whole)));
+    }
+  }
+}
+
 TEST_F(ChunkedMaskExport, CancellingWhileARangeIsMadeLeavesNothing) {
   const Job j = arch_job();
   const SliceChunks chunks = chunks_of(j, layer_chunks(j.mesh, j.planes, 24 * j.whole.points() / 3, 24));
@@ -163,11 +229,21 @@ TEST_F(ChunkedMaskExport, RefusesRangesThatDoNotTileTheStack) {
     EXPECT_NE(test::error_of([&] { export_masks(chunks_of(j, first), j.profile, dir + "/x.sl1"); })
                   .find("layer ranges"),
               std::string::npos);
-  // A range that does not hold the layers it was asked for.
+  // A range whose part reaches beyond its layers: the second range's layers in the first, or its
+  // own layers starting one layer late.
   SliceChunks wrong = chunks_of(j, {0, 10, L});
   const auto make = wrong.make;
-  wrong.make = [make](size_t i, const Progress& p) { return make(i == 1 ? 0 : i, p); };
-  EXPECT_NE(test::error_of([&] { export_masks(wrong, j.profile, dir + "/y.sl1"); }).find("holds 10 layers"),
+  wrong.make = [make](size_t i, const Progress& p) { return make(i == 0 ? 1 : i, p); };
+  EXPECT_NE(test::error_of([&] { export_masks(wrong, j.profile, dir + "/y.sl1"); })
+                .find("range 0 holds a part of " + std::to_string(L - 10) + " layers from its layer 0, beyond its 10 layers"),
+            std::string::npos);
+  wrong.make = [make](size_t i, const Progress& p) {
+    std::vector<SlicePart> parts = make(i, p);
+    parts[0].first = i;
+    return parts;
+  };
+  EXPECT_NE(test::error_of([&] { export_masks(wrong, j.profile, dir + "/y.sl1"); })
+                .find("range 1 holds a part of " + std::to_string(L - 10) + " layers from its layer 1, beyond"),
             std::string::npos);
   EXPECT_TRUE(fs::is_empty(dir));
 }

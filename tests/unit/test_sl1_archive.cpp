@@ -130,7 +130,7 @@ TEST_F(Sl1Archive, TopViewKeepsTheHighestLayerOfEveryCell) {
   // x = -10 + (c + 1/2) * 0.1, y = 10 - (r + 1/2) * 0.1.
   const Slices s = l_stack();
   TopView view(small_display(), s.layers());
-  for (size_t k : {9, 3, 0, 7, 1, 2, 8, 4, 6, 5}) view.add(s, k, k);  // any order
+  for (size_t k : {9, 3, 0, 7, 1, 2, 8, 4, 6, 5}) view.add(LayerView(s, k), k);  // any order
   const HeightMap& map = view.finish();
   ASSERT_EQ(map.cols, 200);
   ASSERT_EQ(map.rows, 200);

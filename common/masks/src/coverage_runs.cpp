@@ -337,17 +337,17 @@ uint32_t edge_kind(const Point& p, const Point& q) {
   return by_crossings[std::min(std::abs(q.row - p.row), 3)][std::min(std::abs(q.col - p.col), 3)];
 }
 
-// Layer k's points (w.points), and its edges sorted by strip of 2^shift rows and by kind within
+// The layer's points (w.points), and its edges sorted by strip of 2^shift rows and by kind within
 // a strip (w.edges, strip i's edges of kind j from w.begin[i * kKinds + j]): an edge across
 // strips, or reaching beyond the display's rows, is kOther in each strip it is in. Edges wholly
 // above or below the display are left out. Returns the number of open contours.
-size_t add_edges(const Slices& s, size_t k, const PixelMap& map, int W, int H, int shift, size_t strips, Scratch& w) {
+size_t add_edges(const LayerView& layer, const PixelMap& map, int W, int H, int shift, size_t strips, Scratch& w) {
   w.points.clear();
   w.entries.clear();
   w.crossing.clear();
   w.begin.assign(strips * kKinds + 1, 0);
   uint32_t* const count = w.begin.data() + 1;  // per bucket, for now
-  const size_t open = for_each_closed_contour(s, k, [&](const double* xyz, uint64_t n) {
+  const size_t open = for_each_closed_contour(layer, [&](const double* xyz, uint64_t n) {
     const size_t base = w.points.size(), used = w.entries.size();
     w.points.resize(base + n + 1);
     w.entries.resize(used + n);
@@ -447,7 +447,7 @@ void sweep_row(const Strip& st, int32_t r, const CoverageLevels& levels, Emit&& 
 // (mask_image_layout): the rows of the unflipped image in reverse when rows ascend, each row's
 // spans in reverse when columns descend.
 template <class Sink>
-size_t rasterize_coverage(const Slices& s, size_t k, const PrinterProfile& p, Sink& sink) {
+size_t rasterize_coverage(const LayerView& layer, const PrinterProfile& p, Sink& sink) {
   thread_local Scratch scratch;
   Scratch& w = scratch;
   const MaskImageLayout image = mask_image_layout(p);
@@ -456,7 +456,7 @@ size_t rasterize_coverage(const Slices& s, size_t k, const PrinterProfile& p, Si
   const int shift = strip_shift(stride), rows = 1 << shift;
   const size_t strips = size_t((H + rows - 1) >> shift);
   w.levels.set_gamma(p.gamma);
-  const size_t open = add_edges(s, k, pixel_map(image, false), W, H, shift, strips, w);
+  const size_t open = add_edges(layer, pixel_map(image, false), W, H, shift, strips, w);
   // The sweep leaves every sum and bit zero again, so they are cleared only when their size
   // changes or a former call stopped half-way (an exception).
   const size_t pixels = size_t(rows) * size_t(stride);
@@ -526,16 +526,16 @@ class RunsSink {
 
 }  // namespace
 
-size_t coverage_runs(const Slices& s, size_t k, const PrinterProfile& p, MaskRuns& out) {
+size_t coverage_runs(const LayerView& layer, const PrinterProfile& p, MaskRuns& out) {
   const MaskImageLayout image = mask_image_layout(p);
   RunsSink sink(image.width, image.height, out);
-  return rasterize_coverage(s, k, p, sink);
+  return rasterize_coverage(layer, p, sink);
 }
 
-size_t coverage_png(const Slices& s, size_t k, const PrinterProfile& p, std::vector<uint8_t>& png) {
+size_t coverage_png(const LayerView& layer, const PrinterProfile& p, std::vector<uint8_t>& png) {
   const MaskImageLayout image = mask_image_layout(p);
   PngRows sink(image.width, image.height, png);
-  const size_t open = rasterize_coverage(s, k, p, sink);
+  const size_t open = rasterize_coverage(layer, p, sink);
   sink.finish();
   return open;
 }

@@ -1,5 +1,5 @@
 #pragma once
-// coverage_runs: layer k's anti-aliased mask (rasterize_layer.h) as runs of equal non-zero
+// coverage_runs: a layer's anti-aliased mask (rasterize_layer.h) as runs of equal non-zero
 // grey levels, replacing out's content; coverage_png: the same mask straight into an 8-bit PNG
 // (png replaced), the bytes encode_mask_png gives for those runs, without keeping them. The
 // caller has checked the layer and the profile (antialiasing on, gamma > 0). Both return the
@@ -40,11 +40,11 @@
 
 #include "slicereuse/masks/mask_png.h"
 #include "slicereuse/masks/printer_profile.h"
-#include "slicereuse/slicing/slices.h"
+#include "slicereuse/slicing/layer_view.h"
 
 namespace slicereuse {
 
-size_t coverage_runs(const Slices& s, size_t k, const PrinterProfile& profile, MaskRuns& out);
-size_t coverage_png(const Slices& s, size_t k, const PrinterProfile& profile, std::vector<uint8_t>& png);
+size_t coverage_runs(const LayerView& layer, const PrinterProfile& profile, MaskRuns& out);
+size_t coverage_png(const LayerView& layer, const PrinterProfile& profile, std::vector<uint8_t>& png);
 
 }  // namespace slicereuse

@@ -52,24 +52,28 @@ struct LayerSummary {
   double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
 };
 
-LayerSummary summarize_layer(const Slices& s, size_t k) {
+// Layer k of the stack; a point is named by its number in its part's slices.
+LayerSummary summarize_layer(const LayerView& layer, size_t k) {
   LayerSummary m;
-  for (uint64_t c = s.layer_begin[k]; c < s.layer_begin[k + 1]; ++c) {
-    if (s.contour_open[c]) continue;
-    const uint64_t b = s.contour_begin[c], e = s.contour_begin[c + 1];
-    const double* p = s.xyz.data();
-    const double area = contour_area(s, c);
-    if (!std::isfinite(area))  // a non-finite point, or products beyond the double range
-      for (uint64_t i = b; i < e; ++i)
-        if (!std::isfinite(p[3 * i]) || !std::isfinite(p[3 * i + 1]))
-          throw Error(format("contour point %llu (layer %zu) has a coordinate that is not a finite number",
-                             (unsigned long long)i, k));
-    m.area += area;
-    for (uint64_t i = b; i < e; ++i) {
-      m.lo_x = std::min(m.lo_x, p[3 * i]);
-      m.hi_x = std::max(m.hi_x, p[3 * i]);
-      m.lo_y = std::min(m.lo_y, p[3 * i + 1]);
-      m.hi_y = std::max(m.hi_y, p[3 * i + 1]);
+  for (const LayerPart& part : layer) {
+    const Slices& s = *part.slices;
+    for (uint64_t c = s.layer_begin[part.layer]; c < s.layer_begin[part.layer + 1]; ++c) {
+      if (s.contour_open[c]) continue;
+      const uint64_t b = s.contour_begin[c], e = s.contour_begin[c + 1];
+      const double* p = s.xyz.data();
+      const double area = contour_area(s, c);
+      if (!std::isfinite(area))  // a non-finite point, or products beyond the double range
+        for (uint64_t i = b; i < e; ++i)
+          if (!std::isfinite(p[3 * i]) || !std::isfinite(p[3 * i + 1]))
+            throw Error(format("contour point %llu (layer %zu) has a coordinate that is not a finite number",
+                               (unsigned long long)i, k));
+      m.area += area;
+      for (uint64_t i = b; i < e; ++i) {
+        m.lo_x = std::min(m.lo_x, p[3 * i]);
+        m.hi_x = std::max(m.hi_x, p[3 * i]);
+        m.lo_y = std::min(m.lo_y, p[3 * i + 1]);
+        m.hi_y = std::max(m.hi_y, p[3 * i + 1]);
+      }
     }
   }
   return m;
@@ -116,9 +120,9 @@ class StackSummary {
   LayerSummary extent_;
 };
 
-// The stack an export works on: one Slices, or ranges of layers made on demand (SliceChunks),
-// each dropped before the next is made. Layer numbers are the stack's; a range's own slices
-// count from 0.
+// The stack an export works on: one Slices, or ranges of layers made on demand in parts
+// (SliceChunks), each dropped before the next is made. Layer numbers are the stack's; a range's
+// own layers count from 0.
 class Stack {
  public:
   explicit Stack(const Slices& s) : whole_(&s), first_{0, s.layers()}, thickness_(s.thickness) {}
@@ -143,16 +147,37 @@ class Stack {
     return sub_progress(progress, encoding_begin(i), share_end(i));
   }
 
-  // Range i's slices, checked; the previous range's are freed first.
-  const Slices& range(size_t i, const Progress& progress) {
-    if (whole_) return *whole_;
-    held_ = Slices();
+  // Makes range i, checked (the previous range's parts are freed first), whose layer `local` is
+  // then layer(local); returns its open contours.
+  size_t open_range(size_t i, const Progress& progress) {
+    if (whole_) return whole_->open_contours();
+    held_.clear();
     held_ = chunks_->make(i, sub_progress(progress, share_begin(i), encoding_begin(i)));
-    if (held_.layers() != end(i) - begin(i))
-      throw Error(format("mask export: layer range %zu holds %zu layers, expected %zu", i, held_.layers(),
-                         end(i) - begin(i)));
-    check(held_);
-    return held_;
+    const size_t n = end(i) - begin(i);
+    size_t open = 0;
+    // Each layer's parts, layer after layer: layer j's are parts_[part_begin_[j] .. part_begin_[j + 1]).
+    part_begin_.assign(n + 1, 0);
+    for (const SlicePart& p : held_) {
+      if (p.first > n || p.slices.layers() > n - p.first)
+        throw Error(format("mask export: layer range %zu holds a part of %zu layers from its layer %zu, beyond "
+                           "its %zu layers",
+                           i, p.slices.layers(), p.first, n));
+      check(p.slices);
+      open += p.slices.open_contours();
+      for (size_t j = p.first; j < p.first + p.slices.layers(); ++j) ++part_begin_[j + 1];
+    }
+    for (size_t j = 0; j < n; ++j) part_begin_[j + 1] += part_begin_[j];
+    parts_.resize(part_begin_[n]);
+    std::vector<size_t> at(part_begin_.begin(), part_begin_.end() - 1);
+    for (const SlicePart& p : held_)
+      for (size_t j = p.first; j < p.first + p.slices.layers(); ++j) parts_[at[j]++] = {&p.slices, j - p.first};
+    return open;
+  }
+
+  // Layer `local` of the range opened last.
+  LayerView layer(size_t local) const {
+    if (whole_) return LayerView(*whole_, local);
+    return LayerView(parts_.data() + part_begin_[local], part_begin_[local + 1] - part_begin_[local]);
   }
 
   static void check(const Slices& s) {
@@ -165,27 +190,29 @@ class Stack {
   const SliceChunks* chunks_ = nullptr;
   std::vector<size_t> first_;
   double thickness_ = 0;
-  Slices held_;
+  std::vector<SlicePart> held_;
+  std::vector<LayerPart> parts_;
+  std::vector<size_t> part_begin_;
 };
 
-// Layer `local` of range s, layer `k` of the stack.
-void encode_layer(const Slices& s, size_t local, size_t k, const PrinterProfile& p, int bits,
-                  std::vector<uint8_t>& png, StackSummary& summary) {
-  summary.add(k, summarize_layer(s, local));
+// The layer, layer `k` of the stack.
+void encode_layer(const LayerView& layer, size_t k, const PrinterProfile& p, int bits, std::vector<uint8_t>& png,
+                  StackSummary& summary) {
+  summary.add(k, summarize_layer(layer, k));
   if (bits == 8 && p.antialiasing) {  // anti-aliased: straight into the PNG
-    rasterize_layer_antialiased_png(s, local, p, png);
+    rasterize_layer_antialiased_png(layer, p, png);
     return;
   }
   if (bits == 8) {  // binary 8-bit (.sl1): straight from the runs
     thread_local MaskRuns runs;
-    rasterize_layer_runs(s, local, p, runs);
+    rasterize_layer_runs(layer, p, runs);
     encode_mask_png(runs, png);
     return;
   }
   thread_local Buffer<uint8_t> image;
   const MaskImageLayout layout = mask_image_layout(p);
   image.resize(size_t(layout.width) * size_t(layout.height));
-  rasterize_layer(s, local, p, image.data());
+  rasterize_layer(layer, p, image.data());
   encode_mask_png(image.data(), layout.width, layout.height, bits, png);
 }
 
@@ -214,14 +241,13 @@ void export_folder(Stack& stack, const PrinterProfile& p, const std::string& fol
   StagedOutputs outputs;
   const std::string staged = outputs.folder(folder);
   for (size_t i = 0; i < stack.ranges(); ++i) {
-    const Slices& s = stack.range(i, progress);
-    open_contours += s.open_contours();
+    open_contours += stack.open_range(i, progress);
     const size_t first = stack.begin(i);
     parallel_blocks(
-        s.layers(),
+        stack.end(i) - first,
         [&](size_t local) {
           thread_local std::vector<uint8_t> png;
-          encode_layer(s, local, first + local, p, p.antialiasing ? 8 : 1, png, summary);
+          encode_layer(stack.layer(local), first + local, p, p.antialiasing ? 8 : 1, png, summary);
           // Plain writes: the staged folder as a whole is what appears atomically.
           write_file(staged + "/" + mask_layer_file_name(FOLDER_PREFIX, first + local), png);
         },
@@ -238,10 +264,10 @@ void export_folder(Stack& stack, const PrinterProfile& p, const std::string& fol
 
 // Encodes layers on all cores, a window ahead of the archive writer (write_sl1, write_goo), which
 // asks for them in order: range by range, the next one made when the writer first asks for one
-// of its layers. encode(s, local, k, bytes) makes layer `local` of range s, layer k of the stack.
+// of its layers. encode(layer, k, bytes) makes the layer, layer k of the stack.
 class OrderedLayers {
  public:
-  using Encode = std::function<void(const Slices& s, size_t local, size_t k, std::vector<uint8_t>& bytes)>;
+  using Encode = std::function<void(const LayerView& layer, size_t k, std::vector<uint8_t>& bytes)>;
 
   OrderedLayers(Stack& stack, size_t& open_contours, const Progress& progress, Encode encode)
       : stack_(stack), open_contours_(open_contours), progress_(progress), encode_(std::move(encode)) {}
@@ -258,13 +284,14 @@ class OrderedLayers {
   void next_range() {
     if (items_) ++range_;
     items_.reset();  // all of the range's layers were taken: its workers are idle
-    const Slices& s = stack_.range(range_, progress_);
+    open_contours_ += stack_.open_range(range_, progress_);
     range_progress_ = stack_.encoding_progress(range_, progress_);
-    open_contours_ += s.open_contours();
     const size_t first = stack_.begin(range_);
     items_ = std::make_unique<OrderedParallel>(
-        s.layers(), size_t(16) * size_t(omp_get_max_threads()),
-        [this, &s, first](size_t local, std::vector<uint8_t>& bytes) { encode_(s, local, first + local, bytes); });
+        stack_.end(range_) - first, size_t(16) * size_t(omp_get_max_threads()),
+        [this, first](size_t local, std::vector<uint8_t>& bytes) {
+          encode_(stack_.layer(local), first + local, bytes);
+        });
   }
 
   Stack& stack_;
@@ -283,9 +310,9 @@ void export_sl1(Stack& stack, const PrinterProfile& p, const std::string& path, 
                 size_t& open_contours, const Progress& progress) {
   TopView top_view(p, stack.layers());
   OrderedLayers encoder(stack, open_contours, progress,
-                        [&](const Slices& s, size_t local, size_t k, std::vector<uint8_t>& png) {
-                          encode_layer(s, local, k, p, 8, png, summary);
-                          top_view.add(s, local, k);
+                        [&](const LayerView& layer, size_t k, std::vector<uint8_t>& png) {
+                          encode_layer(layer, k, p, 8, png, summary);
+                          top_view.add(layer, k);
                         });
   write_sl1(path,
             Sl1Job{p, stack.layers(), stack.thickness(), [&] { return summary.used_material_ml(stack.thickness()); },
@@ -301,14 +328,14 @@ void export_goo(Stack& stack, const PrinterProfile& p, const std::string& path, 
   const GooJob job{p, stack.layers(), stack.thickness()};
   TopView top_view(p, stack.layers());
   OrderedLayers encoder(stack, open_contours, progress,
-                        [&](const Slices& s, size_t local, size_t k, std::vector<uint8_t>& record) {
-                          summary.add(k, summarize_layer(s, local));
+                        [&](const LayerView& layer, size_t k, std::vector<uint8_t>& record) {
+                          summary.add(k, summarize_layer(layer, k));
                           thread_local MaskRuns runs;
                           if (p.antialiasing)
-                            rasterize_layer_antialiased_runs(s, local, p, runs);
+                            rasterize_layer_antialiased_runs(layer, p, runs);
                           else
-                            rasterize_layer_runs(s, local, p, runs);
-                          top_view.add(s, local, k);
+                            rasterize_layer_runs(layer, p, runs);
+                          top_view.add(layer, k);
                           encode_goo_layer(job, k, runs, record);
                         });
   write_goo(path, job, std::ref(encoder), [&] {

@@ -5,14 +5,14 @@
 // and mirrors); pixel_map(p, false) leaves them out (columns along the column coordinate, row 0
 // at the largest row coordinate), for a rasterizer that flips its output instead
 // (coverage_runs.h).
-// for_each_closed_contour(s, k, f): what both rasterizers draw, f(xyz, n) for each closed
-// contour of layer k with points (its n points, 3 doubles each); returns the number of open
-// contours, which are not drawn.
+// for_each_closed_contour(layer, f): what both rasterizers draw, f(xyz, n) for each closed
+// contour of the layer with points (its n points, 3 doubles each), part after part; returns the
+// number of open contours, which are not drawn.
 #include <cstddef>
 #include <cstdint>
 
 #include "slicereuse/masks/printer_profile.h"
-#include "slicereuse/slicing/slices.h"
+#include "slicereuse/slicing/layer_view.h"
 
 namespace slicereuse {
 
@@ -36,15 +36,19 @@ inline PixelMap pixel_map(const MaskImageLayout& m, bool flipped) {
 }
 
 template <class F>
-size_t for_each_closed_contour(const Slices& s, size_t k, F&& f) {
+size_t for_each_closed_contour(const LayerView& layer, F&& f) {
   size_t open = 0;
-  for (uint64_t c = s.layer_begin[k]; c < s.layer_begin[k + 1]; ++c) {
-    if (s.contour_open[c]) {
-      ++open;
-      continue;
+  for (const LayerPart& part : layer) {
+    const Slices& s = *part.slices;
+    const size_t k = part.layer;
+    for (uint64_t c = s.layer_begin[k]; c < s.layer_begin[k + 1]; ++c) {
+      if (s.contour_open[c]) {
+        ++open;
+        continue;
+      }
+      const uint64_t b = s.contour_begin[c], n = s.contour_begin[c + 1] - b;
+      if (n > 0) f(s.xyz.data() + 3 * b, n);
     }
-    const uint64_t b = s.contour_begin[c], n = s.contour_begin[c + 1] - b;
-    if (n > 0) f(s.xyz.data() + 3 * b, n);
   }
   return open;
 }

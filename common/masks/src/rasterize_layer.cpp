@@ -50,13 +50,13 @@ int first_sample_at_or_after(double x, int n) {
 // Which edges do cross follows no pattern a branch predictor could learn (a test per point
 // mispredicts about every other point), so the comparisons are gathered 64 at a time into a
 // bit mask whose set bits are then visited. Edges come in contour order, the closing edge last.
-size_t build_edges(const Slices& s, size_t k, const PrinterProfile& p, Scratch& w) {
-  // A local copy: the compiler cannot tell that the writes to w leave s and p alone.
+size_t build_edges(const LayerView& layer, const PrinterProfile& p, Scratch& w) {
+  // A local copy: the compiler cannot tell that the writes to w leave the layer and p alone.
   const MaskImageLayout image = mask_image_layout(p);
   const PixelMap map = pixel_map(image, true);
   const int rows = image.height;
   w.edges.clear();
-  return for_each_closed_contour(s, k, [&](const double* xyz, uint64_t n) {
+  return for_each_closed_contour(layer, [&](const double* xyz, uint64_t n) {
     // Point n repeats point 0, so the closing edge needs no wrap-around.
     w.v.resize(n + 1);
     w.row.resize(n + 1);
@@ -187,16 +187,18 @@ void sweep(Scratch& w, int rows, int cols, Span&& span) {
   }
 }
 
-void check_layer(const Slices& s, size_t k, const PrinterProfile& profile) {
+void check_layer(const LayerView& layer, const PrinterProfile& profile) {
   validate_printer_profile(profile);
-  if (k >= s.layers())
-    throw Error("layer " + std::to_string(k) + " does not exist (" + std::to_string(s.layers()) +
-                " layers)");
-  if (!s.has_points()) throw Error("the slices carry no contour points to rasterize");
+  for (const LayerPart& part : layer) {
+    if (part.layer >= part.slices->layers())
+      throw Error("layer " + std::to_string(part.layer) + " does not exist (" +
+                  std::to_string(part.slices->layers()) + " layers)");
+    if (!part.slices->has_points()) throw Error("the slices carry no contour points to rasterize");
+  }
 }
 
-void check_antialiased_layer(const Slices& s, size_t k, const PrinterProfile& profile) {
-  check_layer(s, k, profile);
+void check_antialiased_layer(const LayerView& layer, const PrinterProfile& profile) {
+  check_layer(layer, profile);
   if (!profile.antialiasing) throw Error("an anti-aliased mask was asked for, but antialiasing is off");
 }
 
@@ -204,7 +206,7 @@ void check_antialiased_layer(const Slices& s, size_t k, const PrinterProfile& pr
 bool is_binary(const PrinterProfile& p) { return !p.antialiasing || p.gamma == 0; }
 
 // The binary mask as runs (the layer checked).
-size_t binary_runs(const Slices& s, size_t k, const PrinterProfile& profile, MaskRuns& out) {
+size_t binary_runs(const LayerView& layer, const PrinterProfile& profile, MaskRuns& out) {
   thread_local Scratch w;
   const MaskImageLayout image = mask_image_layout(profile);
   const int H = image.height;
@@ -213,7 +215,7 @@ size_t binary_runs(const Slices& s, size_t k, const PrinterProfile& profile, Mas
   out.row_begin.assign(size_t(H) + 1, 0);
   out.columns.clear();
   out.levels.clear();
-  const size_t open = build_edges(s, k, profile, w);
+  const size_t open = build_edges(layer, profile, w);
   // Rows come in order and runs left to right (see sweep): count per row, then sum up.
   sweep(w, H, image.width, [&](int r, int a, int b) {
     ++out.row_begin[size_t(r) + 1];
@@ -227,40 +229,40 @@ size_t binary_runs(const Slices& s, size_t k, const PrinterProfile& profile, Mas
 
 }  // namespace
 
-size_t rasterize_layer_runs(const Slices& s, size_t k, const PrinterProfile& profile, MaskRuns& out) {
-  check_layer(s, k, profile);
+size_t rasterize_layer_runs(const LayerView& layer, const PrinterProfile& profile, MaskRuns& out) {
+  check_layer(layer, profile);
   if (profile.antialiasing) throw Error("anti-aliased masks have grey levels and cannot be given as runs");
-  return binary_runs(s, k, profile, out);
+  return binary_runs(layer, profile, out);
 }
 
-size_t rasterize_layer_antialiased_runs(const Slices& s, size_t k, const PrinterProfile& profile, MaskRuns& out) {
-  check_antialiased_layer(s, k, profile);
-  return is_binary(profile) ? binary_runs(s, k, profile, out) : coverage_runs(s, k, profile, out);
+size_t rasterize_layer_antialiased_runs(const LayerView& layer, const PrinterProfile& profile, MaskRuns& out) {
+  check_antialiased_layer(layer, profile);
+  return is_binary(profile) ? binary_runs(layer, profile, out) : coverage_runs(layer, profile, out);
 }
 
-size_t rasterize_layer_antialiased_png(const Slices& s, size_t k, const PrinterProfile& profile,
+size_t rasterize_layer_antialiased_png(const LayerView& layer, const PrinterProfile& profile,
                                        std::vector<uint8_t>& out) {
-  check_antialiased_layer(s, k, profile);
-  if (!is_binary(profile)) return coverage_png(s, k, profile, out);
+  check_antialiased_layer(layer, profile);
+  if (!is_binary(profile)) return coverage_png(layer, profile, out);
   thread_local MaskRuns runs;
-  const size_t open = binary_runs(s, k, profile, runs);
+  const size_t open = binary_runs(layer, profile, runs);
   encode_mask_png(runs, out);
   return open;
 }
 
-size_t rasterize_layer(const Slices& s, size_t k, const PrinterProfile& profile, uint8_t* out) {
-  check_layer(s, k, profile);
+size_t rasterize_layer(const LayerView& layer, const PrinterProfile& profile, uint8_t* out) {
+  check_layer(layer, profile);
   const MaskImageLayout image = mask_image_layout(profile);
   const int W = image.width, H = image.height;
   std::memset(out, 0, size_t(W) * size_t(H));
   if (is_binary(profile)) {
     thread_local Scratch w;
-    const size_t open = build_edges(s, k, profile, w);
+    const size_t open = build_edges(layer, profile, w);
     sweep(w, H, W, [&](int r, int a, int b) { std::memset(out + size_t(r) * W + a, 255, b - a); });
     return open;
   }
   thread_local MaskRuns runs;
-  const size_t open = coverage_runs(s, k, profile, runs);
+  const size_t open = coverage_runs(layer, profile, runs);
   for (int r = 0; r < H; ++r)
     for (uint32_t i = runs.row_begin[size_t(r)]; i < runs.row_begin[size_t(r) + 1]; ++i) {
       const uint16_t a = runs.columns[2 * size_t(i)], b = runs.columns[2 * size_t(i) + 1];

@@ -44,10 +44,10 @@ bool TopView::draws(size_t k) const {
   return k * bands / layers_ != (k + 1) * bands / layers_;
 }
 
-void TopView::add(const Slices& s, size_t local, size_t k) {
+void TopView::add(const LayerView& layer, size_t k) {
   if (!draws(k)) return;
   thread_local MaskRuns runs;
-  rasterize_layer_runs(s, local, grid_, runs);
+  rasterize_layer_runs(layer, grid_, runs);
   const uint8_t level = layers_ > 1 ? uint8_t(1 + k * 254 / (layers_ - 1)) : uint8_t(255);
   std::unique_ptr<Canvas> canvas = take();
   uint8_t* const cells = canvas->data();

@@ -5,7 +5,7 @@
 //   TopView view(display, layers)   a grid over the display's area (printer_profile.h, offsets
 //                                   included) of square cells, as small as the display's pixels
 //                                   but at most kTopViewCells along the longer side
-//   view.add(s, local, k)           layer k of the stack (layer `local` of the slices s), drawn
+//   view.add(layer, k)              layer k of the stack, drawn
 //                                   if it is one of the layers the view is made of (below): any
 //                                   thread, any order; each layer once
 //   view.finish()                   after the last add: the HeightMap (the same on every call)
@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "slicereuse/masks/printer_profile.h"
-#include "slicereuse/slicing/slices.h"
+#include "slicereuse/slicing/layer_view.h"
 
 namespace slicereuse {
 
@@ -46,7 +46,7 @@ struct HeightMap {
 class TopView {
  public:
   TopView(const PrinterProfile& display, size_t layers);
-  void add(const Slices& s, size_t local, size_t k);
+  void add(const LayerView& layer, size_t k);
   const HeightMap& finish();
   // Whether layer k is one of those the view is drawn from.
   bool draws(size_t k) const;

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 
 #include "slicereuse/slicing/layer_chunks.h"
 #include "slicereuse/slicing/layer_planes.h"
@@ -13,85 +12,34 @@
 namespace slicereuse {
 namespace {
 
-// A member's layers for plate layers [first, first + s.layers()).
-struct Piece {
-  Slices s;
-  size_t first;
-};
-
-// The plate's layers [a, b): every piece's layer at that height, members one after another.
-// The contours are laid out first; the points, a layer's of a piece being one block, are then
-// copied on all cores: the copy fills fresh pages on a plate's first range, which the kernel
-// zeroes on the faulting thread.
-Slices merge_layers(const std::vector<Piece>& pieces, const std::vector<double>& planes, size_t a, size_t b,
-                    double z_start, double h) {
-  Slices out;
-  out.z_start = z_start + double(a) * h;
-  out.thickness = h;
-  out.layer_z.assign(planes.begin() + long(a), planes.begin() + long(b));
-  out.layer_begin.push_back(0);
-  out.contour_begin.push_back(0);
-  struct Block {
-    const double* from;
-    uint64_t to, n;  // points
-  };
-  std::vector<Block> blocks;
-  uint64_t q = 0;
-  for (size_t k = a; k < b; ++k) {
-    for (const Piece& p : pieces) {
-      if (k < p.first || k >= p.first + p.s.layers()) continue;
-      const size_t local = k - p.first;
-      const uint64_t c0 = p.s.layer_begin[local], c1 = p.s.layer_begin[local + 1];
-      const uint64_t p0 = p.s.contour_begin[c0];
-      blocks.push_back({p.s.xyz.data() + 3 * p0, q, p.s.contour_begin[c1] - p0});
-      for (uint64_t c = c0; c < c1; ++c) {
-        q += p.s.contour_begin[c + 1] - p.s.contour_begin[c];
-        out.contour_begin.push_back(q);
-        out.contour_open.push_back(p.s.contour_open[c]);
-      }
-    }
-    out.layer_begin.push_back(out.contour_open.size());
-  }
-  out.xyz.resize(3 * q);
-  const long long n = static_cast<long long>(blocks.size());
-#pragma omp parallel for schedule(dynamic, 16)
-  for (long long i = 0; i < n; ++i) {
-    const Block& block = blocks[size_t(i)];
-    std::memcpy(out.xyz.data() + 3 * block.to, block.from, 3 * block.n * sizeof(double));
-  }
-  return out;
-}
-
-// The plate's layers [a, b): each member's own layers there (own[m]: how many it has), by
-// transfer (transfers[m], when reusing: layers above the encoding's are sliced directly within
-// it) or sliced directly; merged member after member.
-Slices plate_range(const std::vector<Mesh>& placed, const std::vector<ExactTransfer>& transfers,
-                   const std::vector<double>& planes, const std::vector<size_t>& own, size_t a, size_t b,
-                   PlateJobStats& st, const Progress& progress) {
+// The plate's layers [a, b) as parts (export_masks.h), one per member that has any of them: each
+// member's own layers there (own[m]: how many it has), by transfer (transfers[m], when reusing:
+// layers above the encoding's are sliced directly within it) or sliced directly. The masks draw
+// each member's layers where they are, without a merged copy.
+std::vector<SlicePart> plate_range(const std::vector<Mesh>& placed, const std::vector<ExactTransfer>& transfers,
+                                   const std::vector<double>& planes, const std::vector<size_t>& own, size_t a,
+                                   size_t b, PlateJobStats& st, const Progress& progress) {
   const size_t n = placed.size();
-  std::vector<Piece> pieces;
+  std::vector<SlicePart> parts;
   for (size_t m = 0; m < n; ++m) {
     const Progress mp = sub_progress(progress, double(m) / double(n), double(m + 1) / double(n));
     const size_t e = std::min(b, own[m]);
     if (a >= e) continue;
     if (transfers.empty()) {
-      pieces.push_back({slice_planes(placed[m], {planes.begin() + long(a), planes.begin() + long(e)}, mp, false), a});
+      parts.push_back({slice_planes(placed[m], {planes.begin() + long(a), planes.begin() + long(e)}, mp, false), 0});
       st.resliced_layers += e - a;
-      continue;
+    } else {
+      TransferStats ts;
+      parts.push_back({transfers[m].layers(a, e, &ts, mp), 0});
+      st.transferred_layers += ts.transferred_layers;
+      st.resliced_layers += ts.resliced_layers;
     }
-    TransferStats ts;
-    pieces.push_back({transfers[m].layers(a, e, &ts, mp), a});
-    st.transferred_layers += ts.transferred_layers;
-    st.resliced_layers += ts.resliced_layers;
+    Slices& made = parts.back().slices;
+    made.z_start = st.z_start + double(a) * st.thickness;
+    made.thickness = st.thickness;
+    st.points += made.points();
   }
-  if (pieces.size() == 1 && pieces[0].first == a && pieces[0].s.layers() == b - a) {
-    // One member fills the range (a plate of one member): its layers are the plate's, uncopied.
-    Slices s = std::move(pieces[0].s);
-    s.z_start = st.z_start + double(a) * st.thickness;
-    s.thickness = st.thickness;
-    return s;
-  }
-  return merge_layers(pieces, planes, a, b, st.z_start, st.thickness);
+  return parts;
 }
 
 }  // namespace
@@ -142,9 +90,9 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
     else if (st.z_start < top)
       own[m] = layer_planes(st.z_start, st.thickness, top).size();
   }
-  // A range holds every member's points twice (the members' layers and the plate's merged copy).
-  // Reusing, each layer's points are the certificate's counts, made already.
-  constexpr size_t kPointBytes = 2 * 3 * sizeof(double);
+  // A range holds every member's points (reusing, each layer's are the certificate's counts,
+  // made already).
+  constexpr size_t kPointBytes = 3 * sizeof(double);
   std::vector<size_t> first;
   if (transfers.empty()) {
     std::vector<const Mesh*> meshes;
@@ -161,8 +109,8 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
 
   SliceChunks chunks{first, st.thickness, [&](size_t i, const Progress& range_progress) {
                        const auto t = std::chrono::steady_clock::now();
-                       Slices s = plate_range(placed, transfers, planes, own, first[i], first[i + 1], st, range_progress);
-                       st.points += s.points();
+                       std::vector<SlicePart> s =
+                           plate_range(placed, transfers, planes, own, first[i], first[i + 1], st, range_progress);
                        st.slicing_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
                        return s;
                      }};

@@ -32,14 +32,23 @@ struct MaskExportStats {
 MaskExportStats export_masks(const Slices& s, const PrinterProfile& profile,
                              const std::string& output_path, const Progress& progress = {});
 
+// Part of a range's layers: the range's layers [first, first + slices.layers()), counted from 0
+// within the range.
+struct SlicePart {
+  Slices slices;
+  size_t first = 0;
+};
+
 // A stack too large to hold at once, made a range of layers at a time (layer_chunks.h):
-// make(i, progress) returns the slices of layers [first[i], first[i + 1]), counted from 0 within
-// the range. Export calls it once per range, in order, on the calling thread, and frees each
-// range's slices before it makes the next, so memory holds one range (plus a few images).
+// make(i, progress) returns the slices of layers [first[i], first[i + 1]) in parts, a layer's
+// contours being those of every part that has it (a build plate: one part per member, drawn as
+// it is, without a merged copy; a layer no part has is empty). Export calls it once per range, in
+// order, on the calling thread, and frees each range's parts before it makes the next, so memory
+// holds one range (plus a few images).
 struct SliceChunks {
   std::vector<size_t> first;  // range starts, then the layer count
   double thickness = 0;
-  std::function<Slices(size_t i, const Progress& progress)> make;
+  std::function<std::vector<SlicePart>(size_t i, const Progress& progress)> make;
 };
 
 // The same export of the stack the ranges make up, equal to exporting it whole.

@@ -22,26 +22,44 @@
 
 #include "slicereuse/masks/mask_png.h"
 #include "slicereuse/masks/printer_profile.h"
+#include "slicereuse/slicing/layer_view.h"
 #include "slicereuse/slicing/slices.h"
 
 namespace slicereuse {
 
-// Rasterizes layer k into out (width*height bytes, row-major). Returns the number of open
+// Each function below takes one layer, as a view (layer_view.h: a layer made of several
+// slicings' layers, such as a build plate's members), or as layer k of s.
+
+// Rasterizes the layer into out (width*height bytes, row-major). Returns the number of open
 // contours ignored.
-size_t rasterize_layer(const Slices& s, size_t k, const PrinterProfile& profile, uint8_t* out);
+size_t rasterize_layer(const LayerView& layer, const PrinterProfile& profile, uint8_t* out);
 
 // The same binary mask (profile.antialiasing must be off) as runs of lit pixels, replacing
 // out's content: what .sl1 export encodes without writing out the pixels (mask_png.h).
-size_t rasterize_layer_runs(const Slices& s, size_t k, const PrinterProfile& profile, MaskRuns& out);
+size_t rasterize_layer_runs(const LayerView& layer, const PrinterProfile& profile, MaskRuns& out);
 
 // The same anti-aliased mask (profile.antialiasing must be on) as runs of equal non-zero
 // levels: runs of full pixels, and the grey pixels along the edges.
-size_t rasterize_layer_antialiased_runs(const Slices& s, size_t k, const PrinterProfile& profile,
-                                        MaskRuns& out);
+size_t rasterize_layer_antialiased_runs(const LayerView& layer, const PrinterProfile& profile, MaskRuns& out);
 
 // That mask straight into an 8-bit PNG (out replaced): the bytes encode_mask_png gives for
 // rasterize_layer_antialiased_runs, without keeping the runs (what .sl1 export encodes).
-size_t rasterize_layer_antialiased_png(const Slices& s, size_t k, const PrinterProfile& profile,
+size_t rasterize_layer_antialiased_png(const LayerView& layer, const PrinterProfile& profile,
                                        std::vector<uint8_t>& out);
+
+inline size_t rasterize_layer(const Slices& s, size_t k, const PrinterProfile& profile, uint8_t* out) {
+  return rasterize_layer(LayerView(s, k), profile, out);
+}
+inline size_t rasterize_layer_runs(const Slices& s, size_t k, const PrinterProfile& profile, MaskRuns& out) {
+  return rasterize_layer_runs(LayerView(s, k), profile, out);
+}
+inline size_t rasterize_layer_antialiased_runs(const Slices& s, size_t k, const PrinterProfile& profile,
+                                               MaskRuns& out) {
+  return rasterize_layer_antialiased_runs(LayerView(s, k), profile, out);
+}
+inline size_t rasterize_layer_antialiased_png(const Slices& s, size_t k, const PrinterProfile& profile,
+                                              std::vector<uint8_t>& out) {
+  return rasterize_layer_antialiased_png(LayerView(s, k), profile, out);
+}
 
 }  // namespace slicereuse

@@ -17,7 +17,8 @@
 // their own masks, and no anti-aliased pixel is shared when they are more than a pixel apart.
 // Memory: the layers are made and exported a range at a time (SliceChunks, export_masks.h), a
 // range holding at most options.range_budget_bytes of contour points of all members (0: the
-// whole plate at once); every range equals the same layers made whole. Reusing, each member's
+// whole plate at once), each member's as it was made (the masks draw them where they are, with no
+// merged copy); every range equals the same layers made whole. Reusing, each member's
 // transfer is prepared once for the plate (ExactTransfer, transfer_contours.h), so that a range
 // costs what its points do; slicing directly, each range slices every member anew.
 // Output: the print file of the profile (export_masks: PNG folder, .sl1, .sl1s, .goo), atomic, and
