@@ -12,6 +12,13 @@
 namespace slicereuse {
 namespace {
 
+// Reusing, a range holds at most this many bytes of points, whatever the budget: a range costs
+// what its points do (ExactTransfer), and a plate then fills at most this much fresh memory,
+// which the kernel zeroes first (on the development VM at 0.5 to 10 GB/s from run to run: a
+// member of the arch at 1 um, 1.8 GB of points, spent 0.1 to 2 s there). Plates of the SL1S at
+// 0.05 mm (100 to 180 MB) are one range; smaller ranges (64 MB) made them slower.
+constexpr uint64_t kReusedRangeBytes = uint64_t(256) << 20;
+
 // The plate's layers [a, b) as parts (export_masks.h), one per member that has any of them: each
 // member's own layers there (own[m]: how many it has), by transfer (transfers[m], when reusing:
 // layers above the encoding's are sliced directly within it) or sliced directly. The masks draw
@@ -102,7 +109,8 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
     std::vector<uint64_t> points(L, 0);
     for (const ExactTransfer& t : transfers)
       for (size_t k = 0; k < t.layers(); ++k) points[k] += t.layer_points()[k];
-    first = layer_chunks(points, o.range_budget_bytes, kPointBytes);
+    first = layer_chunks(points, o.range_budget_bytes == 0 ? kReusedRangeBytes : std::min(o.range_budget_bytes, kReusedRangeBytes),
+                         kPointBytes);
   }
   st.ranges = first.size() - 1;
   st.layers = L;

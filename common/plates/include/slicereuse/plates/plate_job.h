@@ -20,7 +20,8 @@
 // whole plate at once), each member's as it was made (the masks draw them where they are, with no
 // merged copy); every range equals the same layers made whole. Reusing, each member's
 // transfer is prepared once for the plate (ExactTransfer, transfer_contours.h), so that a range
-// costs what its points do; slicing directly, each range slices every member anew.
+// costs what its points do, and ranges hold at most 256 MB of points (so that a plate fills at
+// most that much fresh memory); slicing directly, each range slices every member anew.
 // Output: the print file of the profile (export_masks: PNG folder, .sl1, .sl1s, .goo), atomic, and
 // the figures. Throws Error for no members, an encoding without a layer thickness, or whatever
 // transfer, slicing or export refuse.
