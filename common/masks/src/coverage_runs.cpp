@@ -443,7 +443,9 @@ void sweep_row(const Strip& st, int32_t r, const CoverageLevels& levels, Emit&& 
 }
 
 // The pixels a sink gets, row by row, top to bottom: row(fill), fill calling pixels(level, n)
-// for the row left to right (PngRows). The sink's rows are the image's, flips applied
+// for the row left to right, or empty_rows(n) for n rows of black (PngRows): a strip without
+// edges is black (nothing covers it, nothing left of it carries a cover into it), and most of a
+// large display's strips are. The sink's rows are the image's, flips applied
 // (mask_image_layout): the rows of the unflipped image in reverse when rows ascend, each row's
 // spans in reverse when columns descend.
 template <class Sink>
@@ -470,6 +472,10 @@ size_t rasterize_coverage(const LayerView& layer, const PrinterProfile& p, Sink&
     const size_t i = image.rows_ascend ? strips - 1 - n : n;
     const int32_t r0 = int32_t(i) * rows;
     const Strip st{r0, std::min(r0 + rows, H), W, stride, w.sums.data(), w.touched.data(), w.touched_words.data()};
+    if (w.begin[i * kKinds] == w.begin[(i + 1) * kKinds]) {
+      sink.empty_rows(size_t(st.r1 - st.r0));
+      continue;
+    }
     add_strip_edges(w, i, st);
     for (int32_t m = 0; m < st.r1 - st.r0; ++m) {
       const int32_t r = image.rows_ascend ? st.r1 - 1 - m : st.r0 + m;
@@ -519,6 +525,7 @@ class RunsSink {
     });
     out_.row_begin.push_back(uint32_t(out_.levels.size()));
   }
+  void empty_rows(size_t n) { out_.row_begin.insert(out_.row_begin.end(), n, uint32_t(out_.levels.size())); }
 
  private:
   MaskRuns& out_;

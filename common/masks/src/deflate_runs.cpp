@@ -225,13 +225,27 @@ RunDeflater::Runs::State RunDeflater::Runs::long_run(RunDeflater& d, State s, un
     left -= step;
   }
   const uint64_t repeats = n - 1, full = repeats / kMaxMatch, rest = repeats - full * kMaxMatch;
-  while (uint64_t(s.limit - s.at) < full + 3) {
+  // The matches of 258 as repeat entries of up to 2^32 - 1 each (3 symbols' room apiece), or as
+  // themselves when there are only a few.
+  constexpr uint64_t kMaxRepeat = 0xffffffff, kFewest = 3;
+  const uint64_t room = full < kFewest ? full : 3 * ((full + kMaxRepeat - 1) / kMaxRepeat);
+  while (uint64_t(s.limit - s.at) < room + 3) {
     s.at = d.make_room(s.at);
     s.limit = d.symbols_.data() + d.symbols_.size();
   }
   constexpr uint16_t kFull = deflate_runs::kLengthSymbols[kMaxMatch];
   *s.at++ = uint16_t(byte);
-  s.at = std::fill_n(s.at, full, kFull);
+  if (full < kFewest) {
+    s.at = std::fill_n(s.at, full, kFull);
+  } else {
+    for (uint64_t left = full; left > 0;) {
+      const uint64_t count = std::min(left, kMaxRepeat);
+      *s.at++ = kRepeat;
+      *s.at++ = uint16_t(count);
+      *s.at++ = uint16_t(count >> 16);
+      left -= count;
+    }
+  }
   d.freq_[kFull] += full;
   if (rest >= 3) {
     *s.at++ = deflate_runs::kLengthSymbols[rest];
@@ -317,18 +331,33 @@ void RunDeflater::finish(std::vector<uint8_t>& out) {
     count = unsigned(c >> kCountShift);
     return (c & 0xffff) | uint64_t(sym >> 9) << ((c >> 48) & 0xff);
   };
+  // A repeat entry's matches of 258: as many of their codes as fit in 48 bits at a time (a
+  // match's code and its distance bit take 2 to 16 bits).
+  unsigned full_n;
+  const uint64_t full_bits = bits(deflate_runs::kLengthSymbols[kMaxMatch], full_n);
+  const unsigned per_word = full_n ? 48 / full_n : 1;  // no code: the image has no such match
+  uint64_t full_word = 0;
+  for (unsigned i = 0; i < per_word; ++i) full_word |= full_bits << (i * full_n);
   const uint16_t* sym = symbols_.data();
   const uint16_t* const end = sym + used_;
-  for (; sym + 2 <= end; sym += 2) {
-    unsigned n0, n1;
-    const uint64_t b0 = bits(sym[0], n0), b1 = bits(sym[1], n1);
-    w.add(b0 | b1 << n0, n0 + n1);
-    w.drain();
-  }
-  for (; sym < end; ++sym) {
-    unsigned n0;
-    const uint64_t b0 = bits(*sym, n0);
-    w.put(b0, n0);
+  while (sym < end) {
+    for (; sym + 2 <= end && !((sym[0] | sym[1]) & kRepeat); sym += 2) {
+      unsigned n0, n1;
+      const uint64_t b0 = bits(sym[0], n0), b1 = bits(sym[1], n1);
+      w.add(b0 | b1 << n0, n0 + n1);
+      w.drain();
+    }
+    if (sym == end) break;
+    if (*sym & kRepeat) {
+      uint64_t count = uint64_t(sym[1]) | uint64_t(sym[2]) << 16;
+      sym += 3;
+      for (; count >= per_word; count -= per_word) w.put(full_word, per_word * full_n);
+      for (; count > 0; --count) w.put(full_bits, full_n);
+    } else {
+      unsigned n0;
+      const uint64_t b0 = bits(*sym++, n0);
+      w.put(b0, n0);
+    }
   }
   w.put(lit_code[kEndOfBlock], lit_length[kEndOfBlock]);
   out.resize(start + w.flush());

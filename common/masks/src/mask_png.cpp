@@ -115,7 +115,7 @@ void encode_mask_png(const uint8_t* pixels, int width, int height, int bits,
 }
 
 PngRows::PngRows(int width, int height, std::vector<uint8_t>& out)
-    : deflater_(thread_deflater()), runs_(deflater_.runs()), out_(out) {
+    : width_(width), deflater_(thread_deflater()), runs_(deflater_.runs()), out_(out) {
   check_size(width, height, 8);
   data_begin_ = png_begin(width, height, 8, out);
 }

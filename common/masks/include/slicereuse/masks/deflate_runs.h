@@ -20,7 +20,9 @@
 // run of byte b and length n is the literal b, then its n - 1 repeats as matches of 258 and a
 // last match of the rest, or the rest as literals when it is shorter than 3. Each run becomes
 // its symbols, and its part of the Adler-32, as soon as it ends (the next run is of another
-// byte); finish() builds the codes from the counts and writes the symbols.
+// byte); finish() builds the codes from the counts and writes the symbols. A run's matches of
+// 258 are kept as one entry and their count, and written a machine word at a time: the black of
+// a 16K display is about 230,000 of them per layer.
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -40,13 +42,15 @@ class RunDeflater {
   void reset();  // drops what was added since the last finish (e.g. after an error)
 
   static constexpr unsigned kMaxMatch = 258;
+  static constexpr uint16_t kRepeat = 0x8000;  // above every symbol with its extra bits (< 2^14)
   static constexpr size_t kSymbols = 286;  // literal/length alphabet
 
  private:
   uint16_t* make_room(uint16_t* at);  // grows symbols_; returns where at is now
 
   // The symbols so far, [0, used_): a literal/length symbol in the low 9 bits and a length's
-  // extra bits above (every length is at distance 1), and their counts. The run not ended yet
+  // extra bits above (every length is at distance 1), or kRepeat followed by a count of matches
+  // of 258 in two entries (low, high 16 bits), and the symbols' counts. The run not ended yet
   // (byte 256 before the first), and Adler-32's sums so far, unreduced (see Runs).
   std::vector<uint16_t> symbols_;
   size_t used_ = 0;
