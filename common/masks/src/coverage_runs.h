@@ -33,7 +33,8 @@
 // kind is added by code without a loop or branch that depends on the edge, the same numbers
 // add_edge's general walk gives: which kind an edge is follows no pattern, and the general
 // walk's steps were mispredicted about once per edge. The sweep hands each row's runs to the
-// PNG's deflater (png_rows.h) without a branch on their kind either.
+// PNG's deflater (png_rows.h) without a branch on their kind either. A strip without edges is
+// not swept: its rows are black, added at once (on a 16K display most strips are).
 #include <cstddef>
 #include <cstdint>
 #include <vector>
