@@ -151,18 +151,19 @@ TEST_F(Sl1Archive, TopViewKeepsTheHighestLayerOfEveryCell) {
   EXPECT_EQ(other, 0u);
 }
 
-TEST(TopView, IsDrawnFromTheTopLayerOfEachOf512Bands) {
-  // Every layer of a short stack; of a tall one, 512 layers spread evenly up to the last one.
+TEST(TopView, IsDrawnFromTheTopLayerOfEachOf128Bands) {
+  // Every layer of a short stack; of a tall one, 128 layers spread evenly up to the last one.
+  static_assert(kTopViewLayers == 128);
   const PrinterProfile display = small_display();
-  for (size_t layers : {size_t(1), size_t(10), size_t(512), size_t(513), size_t(14484)}) {
+  for (size_t layers : {size_t(1), size_t(10), size_t(128), size_t(129), size_t(290), size_t(14484)}) {
     const TopView view(display, layers);
     std::vector<size_t> drawn;
     for (size_t k = 0; k < layers; ++k)
       if (view.draws(k)) drawn.push_back(k);
-    ASSERT_EQ(drawn.size(), std::min<size_t>(layers, 512)) << layers;
+    ASSERT_EQ(drawn.size(), std::min<size_t>(layers, 128)) << layers;
     EXPECT_EQ(drawn.back(), layers - 1);
-    for (size_t i = 0; i < drawn.size(); ++i)  // band i's top layer: the last k with k * 512 / layers == i
-      EXPECT_EQ(drawn[i], layers <= 512 ? i : ((i + 1) * layers + 511) / 512 - 1) << layers << ", band " << i;
+    for (size_t i = 0; i < drawn.size(); ++i)  // band i's top layer: the last k with k * 128 / layers == i
+      EXPECT_EQ(drawn[i], layers <= 128 ? i : ((i + 1) * layers + 127) / 128 - 1) << layers << ", band " << i;
   }
 }
 
