@@ -3,9 +3,10 @@
 // equal pixels as a rasterizer makes them, without keeping the pixels or the runs. Each
 // row(fill) adds the next row: its filter byte (type 0), then fill(pixels) calls pixels(level,
 // n) for the row's pixels left to right, n of them at a time (n may be 0); empty_rows(n) adds
-// n rows of black at once. finish() ends the file. The runs go straight to the thread's RunDeflater, which merges equal neighbours (a
-// row's trailing black, the next filter byte and that row's leading black are one run). One
-// PngRows per thread at a time; encode_mask_png of MaskRuns is one.
+// n rows of black at once. finish() ends the file. The runs go straight to the thread's
+// RunDeflater, which merges equal neighbours (a row's trailing black, the next filter byte and
+// that row's leading black are one run). One PngRows per thread at a time; encode_mask_png of
+// MaskRuns is one.
 #include <cstddef>
 #include <cstdint>
 #include <vector>

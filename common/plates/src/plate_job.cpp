@@ -91,11 +91,12 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
   // (a transfer's layers are those).
   std::vector<size_t> own(n, 0);
   for (size_t m = 0; m < n; ++m) {
-    const double top = z_range(placed[m]).max;
-    if (!transfers.empty())
+    if (!transfers.empty()) {
       own[m] = transfers[m].layers();
-    else if (st.z_start < top)
-      own[m] = layer_planes(st.z_start, st.thickness, top).size();
+      continue;
+    }
+    const double top = z_range(placed[m]).max;
+    if (st.z_start < top) own[m] = layer_planes(st.z_start, st.thickness, top).size();
   }
   // A range holds every member's points (reusing, each layer's are the certificate's counts,
   // made already).
@@ -109,8 +110,9 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
     std::vector<uint64_t> points(L, 0);
     for (const ExactTransfer& t : transfers)
       for (size_t k = 0; k < t.layers(); ++k) points[k] += t.layer_points()[k];
-    first = layer_chunks(points, o.range_budget_bytes == 0 ? kReusedRangeBytes : std::min(o.range_budget_bytes, kReusedRangeBytes),
-                         kPointBytes);
+    const uint64_t budget =
+        o.range_budget_bytes == 0 ? kReusedRangeBytes : std::min(o.range_budget_bytes, kReusedRangeBytes);
+    first = layer_chunks(points, budget, kPointBytes);
   }
   st.ranges = first.size() - 1;
   st.layers = L;
