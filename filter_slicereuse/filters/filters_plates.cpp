@@ -198,7 +198,6 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
     total.transferred_layers += st.transferred_layers;
     total.resliced_layers += st.resliced_layers;
     total.slicing_seconds += st.slicing_seconds;
-    total.ranges += st.ranges - 1;
     host.log(format("Make Plate Job: plate %zu: %zu members, %.1f %% of the platform, %zu layers, to %s, %.3f s", first + k,
                     placed.size(), 100 * arrangement.area_used[k], st.layers, outputs.back().c_str(),
                     seconds_since(plate_start)));

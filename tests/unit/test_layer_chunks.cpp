@@ -1,7 +1,10 @@
 // Layer ranges for stacks too large to hold at once (layer_chunks.h), and mask export a range
-// at a time (export_masks of SliceChunks), which must equal the export of the whole stack.
+// at a time (export_masks of SliceChunks) or a layer at a time (of a LayerMaker), which must
+// equal the export of the whole stack.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <atomic>
 #include <filesystem>
 #include <numeric>
 #include <string>
@@ -246,4 +249,49 @@ TEST_F(ChunkedMaskExport, RefusesRangesThatDoNotTileTheStack) {
                 .find("range 1 holds a part of " + std::to_string(L - 10) + " layers from its layer 1, beyond"),
             std::string::npos);
   EXPECT_TRUE(fs::is_empty(dir));
+}
+
+// A stack made a layer at a time where it is drawn (LayerMaker, as a reused build plate is):
+// here each layer as two parts, its even and its odd contours, one contour flagged open. The
+// export equals that of the whole stack (with the same contour open), each layer is made once,
+// the open contour is counted, and a maker that gives more than one layer is refused in words,
+// leaving nothing.
+TEST_F(ChunkedMaskExport, LayersMadeWhereDrawnEqualTheExportOfTheWholeStack) {
+  Job j = arch_job();
+  j.profile.antialiasing = true;
+  j.profile.gamma = 1;
+  const size_t L = j.whole.layers(), open_layer = L / 2;
+  Slices with_open = j.whole;
+  with_open.contour_open[with_open.layer_begin[open_layer]] = 1;
+  std::vector<std::atomic<int>> made(L);
+  LayerMaker maker{L, j.whole.thickness, [&](size_t k, std::vector<SlicePart>& parts) {
+                     ++made[k];
+                     parts.resize(2);
+                     for (size_t parity : {0, 1}) parts[parity] = {contours_of_parity(with_open, k, k + 1, parity), 0};
+                   }};
+  for (const char* ext : {".sl1", ".goo", ""}) {
+    for (std::atomic<int>& m : made) m = 0;
+    const std::string whole = dir + "/whole" + ext, drawn = dir + "/drawn" + ext;
+    const MaskExportStats a = export_masks(with_open, j.profile, whole);
+    const MaskExportStats b = export_masks(maker, j.profile, drawn);
+    EXPECT_EQ(std::count(made.begin(), made.end(), 1), long(L));
+    EXPECT_EQ(a.ignored_open_contours, 1u);
+    EXPECT_EQ(b.ignored_open_contours, 1u);
+    EXPECT_EQ(b.layers, L);
+    EXPECT_EQ(b.min_x, a.min_x);
+    EXPECT_EQ(b.max_y, a.max_y);
+    const StackComparison c = compare_mask_stacks(whole, drawn, "");
+    EXPECT_EQ(c.layers.size(), L);
+    EXPECT_EQ(c.min_similarity, 1.0);
+    EXPECT_EQ(c.differing_pixels, 0u);
+    EXPECT_EQ(c.max_grey_difference, 0);
+  }
+  LayerMaker two{L, j.whole.thickness, [&](size_t k, std::vector<SlicePart>& parts) {
+                   parts.assign(1, {contours_of_parity(j.whole, k, std::min(k + 2, L), 0), 0});
+                 }};
+  for (const std::string& name : {dir + "/bad.sl1", dir + "/bad"})
+    EXPECT_NE(test::error_of([&] { export_masks(two, j.profile, name); })
+                  .find("was made as a part of 2 layers from its layer 0, not as one layer"),
+              std::string::npos);
+  for (const std::string& name : {dir + "/bad.sl1", dir + "/bad"}) EXPECT_FALSE(fs::exists(name));
 }

@@ -25,9 +25,11 @@
 #include "slicereuse/plates/placements_file.h"
 #include "slicereuse/plates/plate_job.h"
 #include "slicereuse/plates/plate_layout.h"
+#include "slicereuse/transfer/transfer_contours.h"
 #include "slicereuse/util/format.h"
 #include "slicereuse/slicing/slice_layers.h"
 #include "temp_folder.h"
+#include "unsampled_edge.h"
 
 using namespace slicereuse;
 
@@ -423,7 +425,9 @@ class PlateJobTest : public test::TempFolderTest {
 
 TEST_F(PlateJobTest, PlateMasksEqualTheUnionOfTheMembersOwnMasksByReuseAndDirect) {
   // Members of one family (the same faces), z edited in a band so that transfer re-slices some
-  // layers, plus a member made taller than the source and one shorter.
+  // layers, plus a member made taller than the source and one shorter (both changed in z, so
+  // their layers failing the whole certificate are found before the masks), and one that fails
+  // it on one layer only the transfer finds.
   test::FamilyOptions o = small_arch();
   const Mesh base = test::make_family_base(o);
   std::vector<Mesh> members;
@@ -434,6 +438,13 @@ TEST_F(PlateJobTest, PlateMasksEqualTheUnionOfTheMembersOwnMasksByReuseAndDirect
   }
   for (size_t v = 0; v < members[3].vertices(); ++v) members[3].V[3 * v + 2] *= 1.2;
   for (size_t v = 0; v < members[4].vertices(); ++v) members[4].V[3 * v + 2] *= 0.7;
+  SliceOptions so;
+  so.thickness = 0.1;
+  const Slices encoding = slice_layers(base, so);
+  // Member 2 passes every layer's counts and sample, and fails the whole certificate on one: made
+  // where drawn, it finds that layer only while transferring it.
+  size_t broken = 0;
+  ASSERT_TRUE(test::move_vertex_across_unsampled_edge(encoding, members[1], &broken));
   std::vector<const Mesh*> ptrs;
   for (const Mesh& m : members) ptrs.push_back(&m);
   PrinterProfile profile = display(500, 400);
@@ -442,26 +453,35 @@ TEST_F(PlateJobTest, PlateMasksEqualTheUnionOfTheMembersOwnMasksByReuseAndDirect
   std::vector<Mesh> placed;
   for (size_t m = 0; m < members.size(); ++m) placed.push_back(place_mesh(members[m], a.placement[m]));
 
-  SliceOptions so;
-  so.thickness = 0.1;
-  const Slices encoding = slice_layers(base, so);
   for (bool aa : {false, true}) {
     profile.antialiasing = aa;
     const std::string tag = aa ? "aa" : "bin";
     // Each placed member's own masks, sliced directly on the encoding's planes.
     std::vector<std::string> own;
+    size_t member_layers = 0;
     for (size_t m = 0; m < placed.size(); ++m) {
       SliceOptions mo = so;
       mo.z_start = encoding.z_start;
       mo.encoding = false;
       own.push_back(path(tag + "_own_" + names[m]));
-      export_masks(slice_layers(placed[m], mo), profile, own.back());
+      const Slices direct = slice_layers(placed[m], mo);
+      member_layers += direct.layers();
+      export_masks(direct, profile, own.back());
     }
     PlateJobOptions reuse;
     reuse.encoding = &encoding;
     const PlateJobStats r = export_plate(placed, reuse, profile, path(tag + "_reuse"));
+    EXPECT_EQ(r.ranges, 0u);  // made where drawn
     EXPECT_GT(r.transferred_layers, 0u);
-    EXPECT_GT(r.resliced_layers, 0u);  // the band's layers and the tall member's top
+    // Re-sliced: exactly the layers failing the certificate, cheap or whole, in any member (the
+    // z-scaled members' layers, the tall member's top, member 2's broken layer).
+    size_t failing = 0;
+    for (const Mesh& m : placed) {
+      const ExactTransfer t(encoding, m);
+      for (size_t k = 0; k < t.layers(); ++k) failing += !t.transferable(k) || !t.certified(k);
+    }
+    EXPECT_EQ(r.resliced_layers, failing);
+    EXPECT_EQ(r.transferred_layers + r.resliced_layers, member_layers);
     expect_union(path(tag + "_reuse"), own);
 
     PlateJobOptions direct;
@@ -477,6 +497,7 @@ TEST_F(PlateJobTest, PlateMasksEqualTheUnionOfTheMembersOwnMasksByReuseAndDirect
     const PlateJobStats rr = export_plate(placed, reuse, profile, path(tag + "_ranges"));
     EXPECT_GT(rr.ranges, 2u);
     EXPECT_EQ(rr.points, r.points);
+    EXPECT_EQ(rr.transferred_layers + rr.resliced_layers, member_layers);
     expect_union(path(tag + "_ranges"), own);
   }
 }

@@ -120,9 +120,15 @@ class StackSummary {
   LayerSummary extent_;
 };
 
-// The stack an export works on: one Slices, or ranges of layers made on demand in parts
-// (SliceChunks), each dropped before the next is made. Layer numbers are the stack's; a range's
-// own layers count from 0.
+// What a thread keeps to draw a layer a maker makes (LayerMaker): its parts and their view.
+struct MadeLayer {
+  std::vector<SlicePart> parts;
+  std::vector<LayerPart> view;
+};
+
+// The stack an export works on: one Slices, ranges of layers made on demand in parts
+// (SliceChunks), each dropped before the next is made, or layers made where they are drawn
+// (LayerMaker: one range). Layer numbers are the stack's; a range's own layers count from 0.
 class Stack {
  public:
   explicit Stack(const Slices& s) : whole_(&s), first_{0, s.layers()}, thickness_(s.thickness) {}
@@ -131,6 +137,7 @@ class Stack {
         std::adjacent_find(first_.begin(), first_.end(), std::greater_equal<size_t>()) != first_.end())
       throw Error("mask export: the layer ranges must start at layer 0 and each hold at least one layer");
   }
+  explicit Stack(const LayerMaker& m) : maker_(&m), first_{0, m.layers}, thickness_(m.thickness) {}
 
   size_t layers() const { return first_.back(); }
   size_t ranges() const { return first_.size() - 1; }
@@ -141,16 +148,20 @@ class Stack {
   // a range made on demand spends the first half of its share being made.
   double share_begin(size_t i) const { return double(begin(i)) / double(layers()); }
   double share_end(size_t i) const { return double(end(i)) / double(layers()); }
-  double encoding_begin(size_t i) const { return whole_ ? share_begin(i) : 0.5 * (share_begin(i) + share_end(i)); }
+  double encoding_begin(size_t i) const {
+    return whole_ || maker_ ? share_begin(i) : 0.5 * (share_begin(i) + share_end(i));
+  }
   // Range i's encoding, 0 to 1, as progress of the whole export.
   Progress encoding_progress(size_t i, const Progress& progress) const {
     return sub_progress(progress, encoding_begin(i), share_end(i));
   }
 
   // Makes range i, checked (the previous range's parts are freed first), whose layer `local` is
-  // then layer(local); returns its open contours.
+  // then layer(local); returns its open contours (a maker's are counted as its layers are made,
+  // made_open_contours).
   size_t open_range(size_t i, const Progress& progress) {
     if (whole_) return whole_->open_contours();
+    if (maker_) return 0;
     held_.clear();
     held_ = chunks_->make(i, sub_progress(progress, share_begin(i), encoding_begin(i)));
     const size_t n = end(i) - begin(i);
@@ -174,11 +185,28 @@ class Stack {
     return open;
   }
 
-  // Layer `local` of the range opened last.
-  LayerView layer(size_t local) const {
+  // Layer `local` of the range opened last; a maker's is made into `made`, the calling thread's,
+  // and checked.
+  LayerView layer(size_t local, MadeLayer& made) {
     if (whole_) return LayerView(*whole_, local);
-    return LayerView(parts_.data() + part_begin_[local], part_begin_[local + 1] - part_begin_[local]);
+    if (!maker_) return LayerView(parts_.data() + part_begin_[local], part_begin_[local + 1] - part_begin_[local]);
+    maker_->make(local, made.parts);
+    made.view.clear();
+    size_t open = 0;
+    for (const SlicePart& p : made.parts) {
+      if (p.first != 0 || p.slices.layers() != 1)
+        throw Error(format("mask export: layer %zu was made as a part of %zu layers from its layer %zu, not as one layer",
+                           local, p.slices.layers(), p.first));
+      check(p.slices);
+      open += p.slices.open_contours();
+      made.view.push_back({&p.slices, 0});
+    }
+    made_open_ += open;
+    return LayerView(made.view.data(), made.view.size());
   }
+
+  // The open contours of the layers a maker made.
+  size_t made_open_contours() const { return made_open_; }
 
   static void check(const Slices& s) {
     validate_slices(s, false);  // the points: summarize_layer
@@ -188,6 +216,8 @@ class Stack {
  private:
   const Slices* whole_ = nullptr;
   const SliceChunks* chunks_ = nullptr;
+  const LayerMaker* maker_ = nullptr;
+  std::atomic<size_t> made_open_{0};
   std::vector<size_t> first_;
   double thickness_ = 0;
   std::vector<SlicePart> held_;
@@ -247,7 +277,8 @@ void export_folder(Stack& stack, const PrinterProfile& p, const std::string& fol
         stack.end(i) - first,
         [&](size_t local) {
           thread_local std::vector<uint8_t> png;
-          encode_layer(stack.layer(local), first + local, p, p.antialiasing ? 8 : 1, png, summary);
+          thread_local MadeLayer made;
+          encode_layer(stack.layer(local, made), first + local, p, p.antialiasing ? 8 : 1, png, summary);
           // Plain writes: the staged folder as a whole is what appears atomically.
           write_file(staged + "/" + mask_layer_file_name(FOLDER_PREFIX, first + local), png);
         },
@@ -290,7 +321,8 @@ class OrderedLayers {
     items_ = std::make_unique<OrderedParallel>(
         stack_.end(range_) - first, size_t(16) * size_t(omp_get_max_threads()),
         [this, first](size_t local, std::vector<uint8_t>& bytes) {
-          encode_(stack_.layer(local), first + local, bytes);
+          thread_local MadeLayer made;
+          encode_(stack_.layer(local, made), first + local, bytes);
         });
   }
 
@@ -363,6 +395,7 @@ MaskExportStats export_stack(Stack& stack, const PrinterProfile& profile, const 
   } else {
     export_folder(stack, profile, output_path, summary, stats.ignored_open_contours, progress);
   }
+  stats.ignored_open_contours += stack.made_open_contours();
   stats.layers = stack.layers();
   summary.measure_extent(profile, stats);
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -381,6 +414,12 @@ MaskExportStats export_masks(const Slices& s, const PrinterProfile& profile,
 MaskExportStats export_masks(const SliceChunks& chunks, const PrinterProfile& profile,
                              const std::string& output_path, const Progress& progress) {
   Stack stack(chunks);
+  return export_stack(stack, profile, output_path, progress);
+}
+
+MaskExportStats export_masks(const LayerMaker& maker, const PrinterProfile& profile, const std::string& output_path,
+                             const Progress& progress) {
+  Stack stack(maker);
   return export_stack(stack, profile, output_path, progress);
 }
 

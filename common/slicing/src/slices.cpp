@@ -47,6 +47,27 @@ void check_finite(const Array& a, const char* name) {
 
 }  // namespace
 
+void layers_into(const Slices& s, size_t a, size_t b, Slices& out, bool with_points) {
+  const size_t c0 = s.layer_begin[a], c1 = s.layer_begin[b];
+  const size_t p0 = s.contour_begin[c0], points = s.contour_begin[c1] - p0;
+  out.z_start = s.z_start + double(a) * s.thickness;
+  out.thickness = s.thickness;
+  out.fingerprint = s.fingerprint;
+  out.layer_z.assign(s.layer_z.begin() + long(a), s.layer_z.begin() + long(b));
+  out.layer_begin.resize(b - a + 1);
+  for (size_t k = a; k <= b; ++k) out.layer_begin[k - a] = s.layer_begin[k] - c0;
+  out.contour_begin.resize(c1 - c0 + 1);
+  for (size_t c = c0; c <= c1; ++c) out.contour_begin[c - c0] = s.contour_begin[c] - p0;
+  out.contour_open.assign(s.contour_open.begin() + long(c0), s.contour_open.begin() + long(c1));
+  if (with_points)
+    out.xyz.assign(s.xyz.begin() + long(3 * p0), s.xyz.begin() + long(3 * (p0 + points)));
+  else
+    out.xyz.resize(3 * points);
+  out.face.clear();
+  out.edge.clear();
+  out.t.clear();
+}
+
 size_t Slices::open_contours() const {
   size_t n = 0;
   for (uint8_t o : contour_open) n += o != 0;

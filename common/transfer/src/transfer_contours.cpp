@@ -25,6 +25,8 @@ struct EndsFromPairs {
   }
 };
 
+constexpr size_t kPrefetchPoints = 16;
+
 // Cuts layer k's encoded edges of the target by the layer's plane, into out at the encoding's
 // offsets less p0 (out's first point is the encoding's point p0), and the target's encoding when
 // out has room for it. Returns the certificate's first half: every edge still crosses from corner
@@ -37,6 +39,15 @@ bool transfer_layer(const Slices& enc, const Ends& ends, const Mesh& target, siz
   bool good = true;
   const size_t p1 = layer_point_begin(enc, k), p2 = layer_point_end(enc, k);
   for (size_t p = p1; p < p2; ++p) {
+    // The vertices a few points ahead are fetched now: they lie anywhere in the target's
+    // arrays, and a layer made where it is drawn (plate_job.h) finds them out of cache, since the
+    // masks ran on this core in between; waiting for them was most of its time.
+    if (p + kPrefetchPoints < p2) {
+      uint32_t fa, fb;
+      ends(p + kPrefetchPoints, fa, fb);
+      __builtin_prefetch(V + 3 * size_t(fa));
+      __builtin_prefetch(V + 3 * size_t(fb));
+    }
     uint32_t ia, ib;
     ends(p, ia, ib);
     const double* a = V + 3 * size_t(ia);
@@ -56,6 +67,37 @@ bool transfer_layer(const Slices& enc, const Ends& ends, const Mesh& target, siz
   return good;
 }
 
+// The certificate's second half, and a sample of its first, for layers [a, b) of the target's
+// planes (counts[k]: the target's straddling faces on plane k): 1 where layer k may be
+// transferred, 0 where it must be re-sliced (a layer above the encoding's top has nothing to
+// transfer). The counts are cheap (made once, in O(faces + layers)): the target must have
+// exactly as many straddling edges as the layer has points (counted through its faces, see
+// straddling_faces.h). The sample is as cheap (two points per contour): the first and the middle
+// point of every contour must still cross the plane the same way up. A member that changed in z
+// keeps its counts on most layers (its sections only move), so the counts alone let it through
+// to a full transfer that then fails almost everywhere; the sample catches it before any point
+// is transferred. Sampling only rejects layers the full check would reject.
+template <class Ends>
+std::vector<uint8_t> candidate_layers(const Slices& enc, const Ends& ends, const Mesh& target,
+                                      const std::vector<uint64_t>& counts, size_t a, size_t b) {
+  const double* V = target.V.data();
+  auto crosses = [&](size_t p, double zk) {
+    uint32_t ia, ib;
+    ends(p, ia, ib);
+    return V[3 * size_t(ia) + 2] < zk && V[3 * size_t(ib) + 2] >= zk;
+  };
+  std::vector<uint8_t> ok(b - a, 0);
+  for (size_t k = a; k < std::min(b, enc.layers()); ++k) {
+    bool good = counts[k] == layer_point_end(enc, k) - layer_point_begin(enc, k);
+    for (size_t c = enc.layer_begin[k]; good && c < enc.layer_begin[k + 1]; ++c) {
+      const size_t p0 = enc.contour_begin[c], p1 = enc.contour_begin[c + 1];
+      good = !enc.contour_open[c] && crosses(p0, enc.layer_z[k]) && crosses((p0 + p1) / 2, enc.layer_z[k]);
+    }
+    ok[k - a] = good;
+  }
+  return ok;
+}
+
 // Layers [a, b) of the target's planes (target_planes) by exact transfer, counts[k] being the
 // target's straddling faces on plane k.
 template <class Ends>
@@ -65,32 +107,8 @@ Slices transfer_exact_layers(const Slices& enc, const Ends& ends, const Mesh& ta
   // The range's encoded layers are [ta, te): ta is a when there are any, the encoding's top
   // when a lies at or above it.
   const size_t n = b - a, ta = std::min(a, enc.layers()), te = std::min(b, enc.layers());
-  // The certificate's second half first, since it is cheap (the counts are made once, in
-  // O(faces + layers)): the target must have exactly as many straddling edges as the layer has
-  // points (counted through its faces, see straddling_faces.h), or the layer is re-sliced
-  // without being transferred at all.
-  // A sample of the first half as well, as cheap (two points per contour): the first and the
-  // middle point of every contour must still cross the plane the same way up. A member that
-  // changed in z keeps its counts on most layers (its sections only move), so the counts alone
-  // let it through to a full transfer that then fails almost everywhere; the sample catches it
-  // before any point is transferred. Sampling only rejects layers the full check would reject.
-  const double* V = target.V.data();
-  auto crosses = [&](size_t p, double zk) {
-    uint32_t ia, ib;
-    ends(p, ia, ib);
-    return V[3 * size_t(ia) + 2] < zk && V[3 * size_t(ib) + 2] >= zk;
-  };
-  std::vector<uint8_t> ok(n, 0);
-  size_t candidates = 0;
-  for (size_t k = ta; k < te; ++k) {
-    bool good = counts[k] == layer_point_end(enc, k) - layer_point_begin(enc, k);
-    for (size_t c = enc.layer_begin[k]; good && c < enc.layer_begin[k + 1]; ++c) {
-      const size_t p0 = enc.contour_begin[c], p1 = enc.contour_begin[c + 1];
-      good = !enc.contour_open[c] && crosses(p0, enc.layer_z[k]) && crosses((p0 + p1) / 2, enc.layer_z[k]);
-    }
-    ok[k - a] = good;
-    candidates += good;
-  }
+  std::vector<uint8_t> ok = candidate_layers(enc, ends, target, counts, a, b);
+  const size_t candidates = size_t(std::count(ok.begin(), ok.end(), uint8_t(1)));
   std::vector<double> range(planes.begin() + long(a), planes.begin() + long(b));
   // A member that changed in z can fail most layers; transferring the rest and splicing would
   // then cost more than slicing every layer (the result is the same by construction).
@@ -209,6 +227,9 @@ ExactTransfer::ExactTransfer(const Slices& encoding, const Mesh& target)
   check_family(encoding, target);
   planes_ = target_planes(encoding, target);
   counts_ = straddling_face_counts(target, planes_);
+  transferable_ = candidate_layers(
+      encoding, EndsFromFaces{encoding.edge.data(), encoding.face.data(), target.F.data()}, target, counts_, 0,
+      planes_.size());
 }
 
 ExactTransfer::ExactTransfer(const Slices& encoding, const Buffer<uint32_t>& edge_ends, const Mesh& target)
@@ -230,6 +251,41 @@ Slices ExactTransfer::layers(size_t a, size_t b, TransferStats* stats, const Pro
   });
   if (encoding_.thickness > 0) out.z_start = encoding_.z_start + double(a) * encoding_.thickness;
   return out;
+}
+
+void ExactTransfer::check_transferable(size_t k) const {
+  if (!transferable(k))
+    throw Error(format("layer %zu cannot be transferred alone (the target has %zu layers; only those its certificate's "
+                       "counts let through can)",
+                       k, planes_.size()));
+}
+
+bool ExactTransfer::certified(size_t k) const {
+  check_transferable(k);
+  const double* V = target_.V.data();
+  const double zk = encoding_.layer_z[k];
+  const auto all_cross = [&](const auto& ends) {
+    bool good = true;
+    for (size_t p = layer_point_begin(encoding_, k); p < layer_point_end(encoding_, k); ++p) {
+      uint32_t ia, ib;
+      ends(p, ia, ib);
+      good &= (V[3 * size_t(ia) + 2] < zk) & (V[3 * size_t(ib) + 2] >= zk);
+    }
+    return good;
+  };
+  return edge_ends_ ? all_cross(EndsFromPairs{edge_ends_->data()})
+                    : all_cross(EndsFromFaces{encoding_.edge.data(), encoding_.face.data(), target_.F.data()});
+}
+
+bool ExactTransfer::layer_into(size_t k, Slices& out) const {
+  check_transferable(k);
+  layers_into(encoding_, k, k + 1, out, false);
+  const size_t p0 = layer_point_begin(encoding_, k);
+  return edge_ends_ ? transfer_layer<false>(encoding_, EndsFromPairs{edge_ends_->data()}, target_, k, p0, out)
+                    : transfer_layer<false>(encoding_,
+                                            EndsFromFaces{encoding_.edge.data(), encoding_.face.data(),
+                                                          target_.F.data()},
+                                            target_, k, p0, out);
 }
 
 }  // namespace slicereuse

@@ -62,20 +62,13 @@ Slices assemble(const std::vector<Pick>& pick, std::vector<double> planes, bool 
 }  // namespace
 
 Slices layout_of(const Slices& enc, size_t a, size_t b) {
-  const size_t c0 = enc.layer_begin[a], c1 = enc.layer_begin[b];
-  const size_t p0 = enc.contour_begin[c0], points = enc.contour_begin[c1] - p0;
+  const size_t points = enc.contour_begin[enc.layer_begin[b]] - enc.contour_begin[enc.layer_begin[a]];
   // Every transfer's output is allocated here: refused with the figures, not a bad_alloc, when
   // it would not fit.
   check_memory_for(points * 3 * sizeof(double), format("transferring %zu contour points", points),
                    "slice the source at a thicker layer, or with fewer layers (z_start)");
   Slices out;
-  out.layer_z.assign(enc.layer_z.begin() + long(a), enc.layer_z.begin() + long(b));
-  out.layer_begin.resize(b - a + 1);
-  for (size_t k = a; k <= b; ++k) out.layer_begin[k - a] = enc.layer_begin[k] - c0;
-  out.contour_begin.resize(c1 - c0 + 1);
-  for (size_t c = c0; c <= c1; ++c) out.contour_begin[c - c0] = enc.contour_begin[c] - p0;
-  out.contour_open.assign(enc.contour_open.begin() + long(c0), enc.contour_open.begin() + long(c1));
-  out.xyz.resize(3 * points);
+  layers_into(enc, a, b, out, false);
   return out;
 }
 

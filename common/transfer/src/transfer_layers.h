@@ -14,7 +14,8 @@
 // for_each_layer(L, progress, body): body(k) for k in [0, L), in parallel blocks of layers.
 // layer_point_begin/end(s, k): the range of layer k's points in s.
 // layout_of(encoding): Slices with the encoding's layers and contours and room for their xyz;
-// layout_of(encoding, a, b): the same for its layers [a, b), counted from 0.
+// layout_of(encoding, a, b): the same for its layers [a, b), counted from 0 (layers_into, slices.h,
+// after a check that they fit in memory).
 // EndsFromFaces: the two vertex ids of encoded point p's edge (corner j, then corner j+1 of its
 // face), looked up in the faces F of any mesh with the encoding's fingerprint.
 #include <cstddef>

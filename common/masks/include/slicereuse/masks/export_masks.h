@@ -55,4 +55,20 @@ struct SliceChunks {
 MaskExportStats export_masks(const SliceChunks& chunks, const PrinterProfile& profile,
                              const std::string& output_path, const Progress& progress = {});
 
+// A stack made a layer at a time, where its mask is drawn: make(k, parts) puts layer k's
+// contours into parts, as parts of one layer each (first 0; a layer's contours are those of every
+// part, and a part may have none). It is called on the encoding threads, for different layers at
+// once, each thread with its own parts, kept between its calls so that their buffers are reused:
+// memory holds a few layers, and a layer's points are drawn while they are in cache. For a stack
+// whose layers cost little to make apart (a build plate's transferred members, plate_job.h).
+struct LayerMaker {
+  size_t layers = 0;
+  double thickness = 0;
+  std::function<void(size_t k, std::vector<SlicePart>& parts)> make;
+};
+
+// The same export of the stack the maker makes, equal to exporting it whole.
+MaskExportStats export_masks(const LayerMaker& maker, const PrinterProfile& profile, const std::string& output_path,
+                             const Progress& progress = {});
+
 }  // namespace slicereuse

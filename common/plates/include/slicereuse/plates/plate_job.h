@@ -15,13 +15,16 @@
 // simply ends). Layer k's contours are the members' layer k contours one after another: their
 // footprints lie apart (arrange_plates.h), so the nonzero rule fills exactly the union of
 // their own masks, and no anti-aliased pixel is shared when they are more than a pixel apart.
-// Memory: the layers are made and exported a range at a time (SliceChunks, export_masks.h), a
-// range holding at most options.range_budget_bytes of contour points of all members (0: the
-// whole plate at once), each member's as it was made (the masks draw them where they are, with no
-// merged copy); every range equals the same layers made whole. Reusing, each member's
-// transfer is prepared once for the plate (ExactTransfer, transfer_contours.h), so that a range
-// costs what its points do, and ranges hold at most 256 MB of points (so that a plate fills at
-// most that much fresh memory); slicing directly, each range slices every member anew.
+// Memory: reusing, each member's transfer is prepared once for the plate (ExactTransfer,
+// transfer_contours.h), and each member's layer k is transferred where layer k's mask is drawn,
+// on that thread (LayerMaker, export_masks.h): the plate holds a few layers of points, and those
+// of the layers its members cannot transfer, which are sliced directly beforehand (the layers
+// the certificate refuses; a member changed in z fails it on some). When those would hold more
+// than the budget below, or slicing directly, the layers are made and exported a range at a time
+// (SliceChunks, export_masks.h), a range holding at most options.range_budget_bytes of contour
+// points of all members (0: the whole plate at once; reusing, at most 256 MB, so that a plate
+// fills at most that much fresh memory), each member's as it was made (the masks draw them where
+// they are, with no merged copy). Every way gives the same masks as the plate made whole.
 // Output: the print file of the profile (export_masks: PNG folder, .sl1, .sl1s, .goo), atomic, and
 // the figures. Throws Error for no members, an encoding without a layer thickness, or whatever
 // transfer, slicing or export refuse.
@@ -50,9 +53,11 @@ struct PlateJobStats {
   size_t points = 0;              // all members' contour points
   size_t transferred_layers = 0;  // member layers, summed over members
   size_t resliced_layers = 0;     // member layers sliced directly (all of them without an encoding)
-  size_t ranges = 1;
+  size_t ranges = 1;               // of layers made before their masks; 0: made where drawn
   double z_start = 0, thickness = 0;
-  double slicing_seconds = 0;     // transfer or slicing, in all ranges
+  // Transfer or slicing, in all ranges; made where drawn, summed over the threads that made the
+  // layers (it overlaps the masks then), plus the slicing beforehand.
+  double slicing_seconds = 0;
   MaskExportStats masks;
 };
 

@@ -48,6 +48,12 @@ struct Slices {
   bool has_encoding() const { return face.size() == points() && edge.size() == points() && t.size() == points(); }
 };
 
+// Layers [a, b) of s into out (replaced; its buffers are reused, for a layer at a time): their
+// layout (layer_z, offsets from 0, open flags), s's fingerprint, z_start that of layer a, s's
+// thickness, and their points when with_points (else room for them: xyz sized, not filled);
+// no encoding. Needs a <= b <= s.layers(), and s's points when with_points.
+void layers_into(const Slices& s, size_t a, size_t b, Slices& out, bool with_points);
+
 // Signed area of contour c's loop in the xy plane (shoelace, in double), seen from +z: positive
 // for a counter-clockwise (outer) loop, negative for a clockwise one (a hole). Needs xyz.
 double contour_area(const Slices& s, size_t c);

@@ -86,12 +86,29 @@ class ExactTransfer {
   // Throws Error unless a <= b <= layers().
   Slices layers(size_t a, size_t b, TransferStats* stats = nullptr, const Progress& progress = {}) const;
 
+  // A layer at a time, for a job that makes each layer where it is used (a plate's masks,
+  // plate_job.h), on any thread, without threads of its own:
+  // transferable(k): whether layer k passes the certificate's counts and its sample (layers()
+  // re-slices the others, and so must the caller);
+  // certified(k): whether it passes the whole certificate as well: every edge still crosses the
+  // plane the same way up (a pass over the layer's points, without computing them);
+  // layer_into(k, out): layer k by transfer into out (replaced; its buffers are reused), with
+  // z_start that of layer k, and certified(k), found while transferring. When it returns false,
+  // out is not the layer: the layer must be sliced directly.
+  // certified and layer_into throw Error unless transferable(k).
+  bool transferable(size_t k) const { return k < transferable_.size() && transferable_[k]; }
+  bool certified(size_t k) const;
+  bool layer_into(size_t k, Slices& out) const;
+
  private:
+  void check_transferable(size_t k) const;
+
   const Slices& encoding_;
   const Buffer<uint32_t>* edge_ends_;
   const Mesh& target_;
   std::vector<double> planes_;
   std::vector<uint64_t> counts_;
+  std::vector<uint8_t> transferable_;
 };
 
 }  // namespace slicereuse
