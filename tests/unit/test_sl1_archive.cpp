@@ -8,12 +8,14 @@
 #include <zip.h>
 
 #include <filesystem>
+#include <random>
 #include <string>
 #include <vector>
 
 #include "error_of.h"
 #include "mask_layers.h"
 #include "slicereuse/masks/export_masks.h"
+#include "slicereuse/masks/mask_png.h"
 #include "slicereuse/masks/printer_presets.h"
 #include "test_files.h"
 #include "thumbnail_png.h"
@@ -165,6 +167,28 @@ TEST(TopView, IsDrawnFromTheTopLayerOfEachOf128Bands) {
     for (size_t i = 0; i < drawn.size(); ++i)  // band i's top layer: the last k with k * 128 / layers == i
       EXPECT_EQ(drawn[i], layers <= 128 ? i : ((i + 1) * layers + 127) / 128 - 1) << layers << ", band " << i;
   }
+}
+
+// The pictures' PNG writer (Sub rows, RunDeflater): libpng reads back every pixel, for noise,
+// runs of one colour across rows and channels that wrap around (a byte less the one 4 before it),
+// at odd sizes; a size PNG cannot hold is refused in words.
+TEST(RgbaPng, ReadsBackEveryPixel) {
+  std::mt19937 random(3);
+  for (const auto& [w, h] : std::vector<std::pair<int, int>>{{1, 1}, {3, 7}, {400, 400}, {801, 37}}) {
+    std::vector<uint8_t> rgba(size_t(w) * size_t(h) * 4);
+    for (size_t i = 0; i < rgba.size(); ++i) {
+      const size_t pixel = i / 4, x = pixel % size_t(w);
+      rgba[i] = x < size_t(w) / 3 ? uint8_t(random()) : x < 2 * size_t(w) / 3 ? uint8_t(250 - 90 * (i % 4)) : uint8_t(x * 7 + i % 4);
+    }
+    std::vector<uint8_t> png;
+    encode_rgba_png(rgba.data(), w, h, png);
+    const Rgba back = decode_rgba(std::string(png.begin(), png.end()));
+    ASSERT_EQ(back.width, w);
+    ASSERT_EQ(back.height, h);
+    EXPECT_TRUE(back.pixels == rgba) << w << "x" << h;
+  }
+  std::vector<uint8_t> png;
+  EXPECT_EQ(test::error_of([&] { encode_rgba_png(nullptr, 0, 5, png); }), "cannot encode a 0x5 RGBA picture as PNG");
 }
 
 TEST_F(Sl1Archive, ThumbnailsPictureThePartFromAboveShadedByHeight) {

@@ -56,9 +56,10 @@ void check_size(int width, int height, int bits) {
 }
 
 // A PNG file is written around its image data in place: png_begin writes the signature, IHDR
-// and the IDAT chunk's head into out (replaced) and returns where the data goes; the deflater
+// (colour type 0: grey, 6: RGBA) and the IDAT chunk's head into out (replaced) and returns where
+// the data goes; the deflater
 // appends the zlib stream there; png_end fills in the IDAT length and CRC and adds IEND.
-size_t png_begin(int width, int height, int bits, std::vector<uint8_t>& out) {
+size_t png_begin(int width, int height, int bits, uint8_t colour_type, std::vector<uint8_t>& out) {
   static const uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   out.assign(signature, signature + 8);
   uint8_t header[13];
@@ -66,7 +67,8 @@ size_t png_begin(int width, int height, int bits, std::vector<uint8_t>& out) {
     header[i] = uint8_t(uint32_t(width) >> (24 - 8 * i));
     header[4 + i] = uint8_t(uint32_t(height) >> (24 - 8 * i));
   }
-  const uint8_t format[5] = {uint8_t(bits), 0, 0, 0, 0};  // grey, deflate, filter set 0, no interlace
+  // Deflate, filter set 0, no interlace.
+  const uint8_t format[5] = {uint8_t(bits), colour_type, 0, 0, 0};
   std::memcpy(header + 8, format, sizeof format);
   chunk(out, "IHDR", header, sizeof header);
   put32(out, 0);  // IDAT length, filled in by png_end
@@ -99,7 +101,7 @@ void encode_mask_png(const uint8_t* pixels, int width, int height, int bits,
   RunDeflater& deflater = thread_deflater();
   row.resize(1 + (size_t(width) + 7) / 8);
   row[0] = 0;
-  const size_t data_begin = png_begin(width, height, bits, out);
+  const size_t data_begin = png_begin(width, height, bits, 0, out);
   for (int r = 0; r < height; ++r) {
     const uint8_t* src = pixels + size_t(r) * size_t(width);
     if (bits == 1) {
@@ -114,10 +116,29 @@ void encode_mask_png(const uint8_t* pixels, int width, int height, int bits,
   png_end(data_begin, out);
 }
 
+void encode_rgba_png(const uint8_t* rgba, int width, int height, std::vector<uint8_t>& out) {
+  if (width <= 0 || height <= 0 || width > 65535 || height > 65535)
+    throw Error("cannot encode a " + std::to_string(width) + "x" + std::to_string(height) + " RGBA picture as PNG");
+  thread_local std::vector<uint8_t> row;
+  RunDeflater& deflater = thread_deflater();
+  const size_t bytes = 4 * size_t(width);
+  row.resize(1 + bytes);
+  row[0] = 1;  // Sub: each byte less the same channel's of the pixel before
+  const size_t data_begin = png_begin(width, height, 8, 6, out);
+  for (int r = 0; r < height; ++r) {
+    const uint8_t* src = rgba + size_t(r) * bytes;
+    std::memcpy(row.data() + 1, src, 4);
+    for (size_t i = 4; i < bytes; ++i) row[1 + i] = uint8_t(src[i] - src[i - 4]);
+    deflater.add(row.data(), row.size());
+  }
+  deflater.finish(out);
+  png_end(data_begin, out);
+}
+
 PngRows::PngRows(int width, int height, std::vector<uint8_t>& out)
     : width_(width), deflater_(thread_deflater()), runs_(deflater_.runs()), out_(out) {
   check_size(width, height, 8);
-  data_begin_ = png_begin(width, height, 8, out);
+  data_begin_ = png_begin(width, height, 8, 0, out);
 }
 
 void PngRows::finish() {

@@ -14,6 +14,7 @@
 
 #include "mask_stack.h"
 #include "print_estimate.h"
+#include "zip_file_sink.h"
 #include "slicereuse/util/atomic_file.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
@@ -256,15 +257,15 @@ void write_sl1(const std::string& path, const Sl1Job& job, const LayerPng& layer
   // source, so the entries must outlive the archive.
   Layers layers{&entry_bytes, nullptr, {}};
   std::vector<LayerEntry> entries(job.layers + 1 + kThumbnailCount);
-  // libzip writes the archive on zip_close to a temporary file next to the staged one and
-  // renames it onto it; the staged file then replaces path.
+  // libzip writes the archive on zip_close into the staged file (zip_file_sink, which starts its
+  // writeback as it goes), which then replaces path.
   StagedOutputs outputs;
   const std::string staged = outputs.file(path);
-  int error = 0;
-  zip_t* za = zip_open(staged.c_str(), ZIP_TRUNCATE, &error);
+  ZipError e;
+  zip_source_t* sink = zip_file_sink(staged, &e.e);
+  zip_t* za = sink ? zip_open_from_source(sink, ZIP_CREATE | ZIP_TRUNCATE, &e.e) : nullptr;
   if (!za) {
-    ZipError e;
-    zip_error_init_with_code(&e.e, error);
+    if (sink) zip_source_free(sink);
     throw Error("cannot write '" + path + "': " + zip_error_strerror(&e.e));
   }
   std::unique_ptr<zip_t, void (*)(zip_t*)> archive(za, zip_discard);

@@ -75,19 +75,19 @@ struct DirectLayers {
   }
 };
 
-// The member's layers (own, on the plate's planes) that its transfer t cannot make: those the
+// The member's layers that its transfer t cannot make: those the
 // cheap certificate refuses (above the source's top, or failing the counts or sample), and, when
 // there are any (the member changed in z, and then some layers that pass the sample fail the
 // whole certificate: 4 to 18 of 290 for members of the arch family), those the whole certificate
 // refuses too, found now, so that all are sliced in one pass. (Slicing one plane costs as much as
 // slicing them all, about 0.05 s for the 545k-face arch: its faces are sorted first.)
-DirectLayers layers_to_slice(const ExactTransfer& t, const std::vector<double>& planes, size_t own) {
+DirectLayers layers_to_slice(const ExactTransfer& t) {
   bool changed = false;
-  for (size_t k = 0; k < own; ++k) changed |= !t.transferable(k);
+  for (size_t k = 0; k < t.layers(); ++k) changed |= !t.transferable(k);
   DirectLayers d;
-  d.at.assign(own, kNotDirect);
-  for (size_t k = 0; k < own; ++k)
-    if (!t.transferable(k) || (changed && !t.certified(k))) d.add(k, planes[k]);
+  d.at.assign(t.layers(), kNotDirect);
+  for (size_t k = 0; k < t.layers(); ++k)
+    if (!t.transferable(k) || (changed && !t.certified(k))) d.add(k, t.plane(k));
   return d;
 }
 
@@ -103,12 +103,9 @@ DirectLayers layers_to_slice(const ExactTransfer& t, const std::vector<double>& 
 class MadeWhereDrawn {
  public:
   MadeWhereDrawn(const std::vector<Mesh>& placed, const std::vector<ExactTransfer>& transfers,
-                 const std::vector<double>& planes, const std::vector<size_t>& own, std::vector<DirectLayers> direct,
-                 double z_start, double thickness, const Progress& progress)
+                 std::vector<DirectLayers> direct, double z_start, double thickness, const Progress& progress)
       : placed_(placed),
         transfers_(transfers),
-        planes_(planes),
-        own_(own),
         z_start_(z_start),
         thickness_(thickness),
         direct_(std::move(direct)),
@@ -132,7 +129,7 @@ class MadeWhereDrawn {
     const auto t = std::chrono::steady_clock::now();
     size_t used = 0, points = 0, transferred = 0;
     for (size_t m = 0; m < placed_.size(); ++m) {
-      if (k >= own_[m]) continue;
+      if (k >= transfers_[m].layers()) continue;
       if (parts.size() == used) parts.emplace_back();
       Slices& out = parts[used++].slices;
       const DirectLayers* d = &direct_[m];
@@ -172,17 +169,16 @@ class MadeWhereDrawn {
   // Member m's layers that pass the cheap certificate but not the whole one, sliced.
   DirectLayers late_layers(size_t m) const {
     DirectLayers d;
-    d.at.assign(own_[m], kNotDirect);
-    for (size_t k = 0; k < own_[m]; ++k)
-      if (direct_[m].at[k] == kNotDirect && !transfers_[m].certified(k)) d.add(k, planes_[k]);
+    const ExactTransfer& t = transfers_[m];
+    d.at.assign(t.layers(), kNotDirect);
+    for (size_t k = 0; k < t.layers(); ++k)
+      if (direct_[m].at[k] == kNotDirect && !t.certified(k)) d.add(k, t.plane(k));
     d.slices = slice_planes(placed_[m], d.planes, {}, false);
     return d;
   }
 
   const std::vector<Mesh>& placed_;
   const std::vector<ExactTransfer>& transfers_;
-  const std::vector<double>& planes_;
-  const std::vector<size_t>& own_;
   const double z_start_, thickness_;
   std::vector<DirectLayers> direct_, late_;
   std::unique_ptr<std::once_flag[]> late_once_;
@@ -191,25 +187,10 @@ class MadeWhereDrawn {
   std::atomic<uint64_t> nanoseconds_{0};
 };
 
-}  // namespace
-
-std::vector<double> plate_planes(const std::vector<Mesh>& placed, const PlateJobOptions& o, double* z_start,
-                                 double* thickness) {
-  if (placed.empty()) throw Error("a plate needs at least one member");
-  // Members on all cores: checking and measuring a member is one thread's work.
-  std::vector<ZRange> z(placed.size());
-  parallel_blocks(
-      placed.size(),
-      [&](size_t m) {
-        validate_mesh(placed[m]);
-        z[m] = z_range(placed[m]);
-      },
-      {}, "checking the members");
-  double lowest = INFINITY, top = -INFINITY;
-  for (const ZRange& r : z) {
-    lowest = std::min(lowest, r.min);
-    top = std::max(top, r.max);
-  }
+// The plate's z_start and thickness for o (see plate_job.h), lowest being its members' lowest
+// vertex (used only slicing directly from z_start NaN).
+void plate_frame(size_t members, const PlateJobOptions& o, double lowest, double* z_start, double* thickness) {
+  if (members == 0) throw Error("a plate needs at least one member");
   if (o.encoding) {
     if (!(o.encoding->thickness > 0))
       throw Error("the encoding has no layer thickness (it was not made by slicing at a thickness), so the plate's "
@@ -220,39 +201,60 @@ std::vector<double> plate_planes(const std::vector<Mesh>& placed, const PlateJob
     *z_start = std::isnan(o.slicing.z_start) ? lowest : o.slicing.z_start;
     *thickness = o.slicing.thickness;
   }
+}
+
+}  // namespace
+
+std::vector<double> plate_planes(const std::vector<Mesh>& placed, const PlateJobOptions& o, double* z_start,
+                                 double* thickness) {
+  double lowest = INFINITY, top = -INFINITY;
+  for (const Mesh& m : placed) {
+    validate_mesh(m);
+    const ZRange z = z_range(m);
+    lowest = std::min(lowest, z.min);
+    top = std::max(top, z.max);
+  }
+  plate_frame(placed.size(), o, lowest, z_start, thickness);
   return layer_planes(*z_start, *thickness, top);
 }
 
 PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOptions& o, const PrinterProfile& profile,
                            const std::string& output_path, const Progress& progress) {
   PlateJobStats st;
-  const std::vector<double> planes = plate_planes(placed, o, &st.z_start, &st.thickness);
-  const size_t L = planes.size(), n = placed.size();
-  // Reusing, each member's transfer is prepared once for the plate, members on all cores (its
-  // O(faces) work is mostly one thread's: the family check).
+  const size_t n = placed.size();
+  std::vector<double> planes;  // slicing directly
   std::vector<ExactTransfer> transfers;
+  std::vector<DirectLayers> direct;
+  // Each member's own layer count: its direct slicing from the plate's z_start stops at its top
+  // (a transfer's layers are those).
+  std::vector<size_t> own(n, 0);
   if (o.encoding) {
+    // Reusing, each member's transfer is prepared once for the plate (which checks the member),
+    // and the layers it cannot transfer found, members on all cores in one parallel region:
+    // OpenMP's threads spin for milliseconds after each, against the masks' threads.
+    plate_frame(n, o, NAN, &st.z_start, &st.thickness);
     std::vector<std::unique_ptr<ExactTransfer>> made(n);
+    direct.resize(n);
     parallel_blocks(
         n,
         [&](size_t m) {
           made[m] = o.edge_ends ? std::make_unique<ExactTransfer>(*o.encoding, *o.edge_ends, placed[m])
                                 : std::make_unique<ExactTransfer>(*o.encoding, placed[m]);
+          direct[m] = layers_to_slice(*made[m]);
         },
         {}, "preparing the transfers");
-    for (std::unique_ptr<ExactTransfer>& t : made) transfers.push_back(std::move(*t));
-  }
-  // Each member's own layer count: its direct slicing from the plate's z_start stops at its top
-  // (a transfer's layers are those).
-  std::vector<size_t> own(n, 0);
-  for (size_t m = 0; m < n; ++m) {
-    if (!transfers.empty()) {
+    for (size_t m = 0; m < n; ++m) {
+      transfers.push_back(std::move(*made[m]));
       own[m] = transfers[m].layers();
-      continue;
     }
-    const double top = z_range(placed[m]).max;
-    if (st.z_start < top) own[m] = layer_planes(st.z_start, st.thickness, top).size();
+  } else {
+    planes = plate_planes(placed, o, &st.z_start, &st.thickness);
+    for (size_t m = 0; m < n; ++m) {
+      const double top = z_range(placed[m]).max;
+      if (st.z_start < top) own[m] = layer_planes(st.z_start, st.thickness, top).size();
+    }
   }
+  const size_t L = o.encoding ? *std::max_element(own.begin(), own.end()) : planes.size();
   // A range holds every member's points (reusing, each layer's are the certificate's counts,
   // made already).
   const uint64_t reused_budget =
@@ -260,17 +262,13 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
   st.layers = L;
   if (!transfers.empty()) {
     // Made where drawn when the layers to slice directly fit in the budget (else in ranges).
-    std::vector<DirectLayers> direct(n);
-    parallel_blocks(
-        n, [&](size_t m) { direct[m] = layers_to_slice(transfers[m], planes, own[m]); }, {},
-        "finding the layers to slice");
     uint64_t direct_points = 0;
     for (size_t m = 0; m < n; ++m)
       for (size_t k = 0; k < own[m]; ++k)
         if (direct[m].at[k] != kNotDirect) direct_points += transfers[m].layer_points()[k];
     if (direct_points * kPointBytes <= reused_budget) {
       const double share = direct_points > 0 ? 0.1 : 0;  // of the progress, for the direct slicing
-      MadeWhereDrawn made(placed, transfers, planes, own, std::move(direct), st.z_start, st.thickness,
+      MadeWhereDrawn made(placed, transfers, std::move(direct), st.z_start, st.thickness,
                           sub_progress(progress, 0, share));
       st.ranges = 0;
       st.masks = export_masks(LayerMaker{L, st.thickness, [&](size_t k, std::vector<SlicePart>& parts) {

@@ -32,13 +32,17 @@ void check_offsets(const Offsets& b, size_t expected_size, bool strict, const ch
   }
 }
 
-// Arrays of tens of millions of numbers: checked on all cores, and only when something is wrong
-// searched again in order for the first culprit (the message names it).
+// Arrays of tens of millions of numbers are checked on all cores, and only when something is
+// wrong searched again in order for the first culprit (the message names it). Small ones (a
+// layer made where its mask is drawn is checked on that thread) on the calling thread: an
+// OpenMP region there would cost a team of threads and their barrier, per layer.
+constexpr long long kParallelFrom = 1 << 16;
+
 template <class Array>
 void check_finite(const Array& a, const char* name) {
   const long long n = static_cast<long long>(a.size());
   bool bad = false;
-#pragma omp parallel for reduction(|| : bad) schedule(static)
+#pragma omp parallel for reduction(|| : bad) schedule(static) if (n >= kParallelFrom)
   for (long long i = 0; i < n; ++i) bad |= !std::isfinite(a[size_t(i)]);
   if (!bad) return;
   for (size_t i = 0; i < a.size(); ++i)
@@ -114,7 +118,7 @@ void validate_slices(const Slices& s, bool check_points) {
                 num(s.edge.size()) + "/" + num(s.t.size()) + " entries, expected " + num(P));
   if (!check_points) return;
   bool bad = false;
-#pragma omp parallel for reduction(|| : bad) schedule(static)
+#pragma omp parallel for reduction(|| : bad) schedule(static) if (P >= size_t(kParallelFrom))
   for (long long p = 0; p < static_cast<long long>(P); ++p)
     bad |= s.face[size_t(p)] >= s.fingerprint.faces || s.edge[size_t(p)] > 2 ||
            !(s.t[size_t(p)] > 0 && s.t[size_t(p)] <= 1);

@@ -78,8 +78,9 @@ class ExactTransfer {
   ExactTransfer(const Slices& encoding, const Buffer<uint32_t>& edge_ends, const Mesh& target);
 
   // The target's planes: the encoding's, up to the target's own top (a taller target's extra
-  // layers are sliced directly).
+  // layers are sliced directly): how many, and plane k's z.
   size_t layers() const { return planes_.size(); }
+  double plane(size_t k) const { return planes_[k]; }
   // The target's points on each of its layers (its faces that straddle the plane; one point
   // each on a closed layer), which the certificate checks.
   const std::vector<uint64_t>& layer_points() const { return counts_; }
