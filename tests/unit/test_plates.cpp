@@ -502,6 +502,43 @@ TEST_F(PlateJobTest, PlateMasksEqualTheUnionOfTheMembersOwnMasksByReuseAndDirect
   }
 }
 
+// Cancelled half-way through its masks, a plate leaves nothing: made where drawn (reusing),
+// in ranges (reusing within a tiny budget), and sliced directly; and the progress it reported
+// never went back.
+TEST_F(PlateJobTest, CancellingAPlateLeavesNothing) {
+  test::FamilyOptions o = small_arch();
+  const Mesh base = test::make_family_base(o);
+  std::vector<Mesh> placed;
+  for (int i = 1; i <= 2; ++i) {
+    Mesh m = test::make_family_member(base, o, i);
+    for (size_t v = 0; v < m.vertices(); ++v) m.V[3 * v] += 40.0 * (i - 1);  // apart
+    placed.push_back(m);
+  }
+  SliceOptions so;
+  so.thickness = 0.02;  // 200 layers: export reports its progress every 64
+  const Slices encoding = slice_layers(base, so);
+  PlateJobOptions reuse, ranged, direct;
+  reuse.encoding = ranged.encoding = &encoding;
+  ranged.range_budget_bytes = 100000;
+  direct.slicing = so;
+  for (const PlateJobOptions* job : {&reuse, &ranged, &direct})
+    for (const char* name : {"c.sl1", "c.goo", "c"}) {
+      SCOPED_TRACE(std::string(name) + (job == &reuse ? " reuse" : job == &ranged ? " ranges" : " direct"));
+      double last = 0;
+      bool backwards = false;
+      EXPECT_THROW(export_plate(placed, *job, display(800, 600), path(name),
+                                [&](double f, const char*) {
+                                  backwards |= f < last;
+                                  last = f;
+                                  return f < 0.5;
+                                }),
+                   Cancelled);
+      EXPECT_FALSE(backwards);
+      EXPECT_GE(last, 0.5);
+      EXPECT_TRUE(std::filesystem::is_empty(dir));
+    }
+}
+
 class PlateLayoutTest : public test::TempFolderTest {};
 
 // The members' footprints are made on all cores; a member that has none (no faces) is refused in

@@ -347,3 +347,32 @@ TEST(TransferContours, ExactTransferALayerAtATimeEqualsItsRanges) {
   }
 }
 
+
+// The progress a transfer reports never goes back, whichever way it goes: every layer
+// transferred, some re-sliced and spliced in (a z change in a band), every layer sliced (a z
+// change everywhere); and it ends at 1.
+TEST(TransferContours, ProgressNeverGoesBack) {
+  for (const test::ZChange z : {test::ZChange::None, test::ZChange::Band, test::ZChange::Everywhere}) {
+    SCOPED_TRACE(int(z));
+    test::FamilyOptions o;
+    o.shape = "ear";
+    o.faces = 6000;
+    o.height = 10;
+    o.seed = 7;
+    o.z_change = z;
+    const Mesh base = test::make_family_base(o);
+    const Slices source = slice(base, 0.05);
+    const Mesh member = test::make_family_member(base, o, 2);
+    std::vector<double> seen;
+    TransferStats st;
+    transfer_contours(source, member, TransferOptions(TransferMode::Exact), &st, [&](double f, const char*) {
+      seen.push_back(f);
+      return true;
+    });
+    ASSERT_FALSE(seen.empty());
+    EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+    EXPECT_EQ(seen.back(), 1.0);
+    if (z == test::ZChange::Band) EXPECT_GT(st.resliced_layers, 0u);
+    if (z == test::ZChange::Band) EXPECT_GT(st.transferred_layers, 0u);
+  }
+}

@@ -120,7 +120,9 @@ Slices transfer_exact_layers(const Slices& enc, const Ends& ends, const Mesh& ta
     moved.t.resize(moved.points());
   }
   const size_t p0 = layer_point_begin(enc, ta);
-  for_each_layer(te - ta, progress, [&](size_t i) {
+  // The transfer reports the first half of the progress, re-slicing what it could not transfer
+  // the second (each from 0 to 1 on its own).
+  for_each_layer(te - ta, sub_progress(progress, 0, 0.5), [&](size_t i) {
     if (ok[i])
       ok[i] = with_encoding ? transfer_layer<true>(enc, ends, target, a + i, p0, moved)
                             : transfer_layer<false>(enc, ends, target, a + i, p0, moved);
@@ -129,7 +131,8 @@ Slices transfer_exact_layers(const Slices& enc, const Ends& ends, const Mesh& ta
   std::vector<size_t> done_layer(n, kNoLayer);
   for (size_t i = 0; i < te - ta; ++i)
     if (ok[i]) done_layer[i] = i;
-  return splice_resliced(std::move(moved), done_layer, std::move(range), target, with_encoding, st, progress);
+  return splice_resliced(std::move(moved), done_layer, std::move(range), target, with_encoding, st,
+                         sub_progress(progress, 0.5, 1));
 }
 
 template <class Ends>

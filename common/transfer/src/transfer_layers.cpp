@@ -119,11 +119,12 @@ Slices splice_resliced(Slices done, const std::vector<size_t>& done_layer, std::
   if (2 * redo.size() > L) return slice_every_plane(target, std::move(planes), with_encoding, st, progress);
   st.resliced_layers = redo.size();
   st.transferred_layers = L - redo.size();
-  const Slices fresh = slice_planes(target, std::move(redo_planes), progress, with_encoding);
+  // Slicing reports the first half of the progress, splicing the second.
+  const Slices fresh = slice_planes(target, std::move(redo_planes), sub_progress(progress, 0, 0.5), with_encoding);
   std::vector<Pick> pick(L);
   for (size_t k = 0, r = 0; k < L; ++k)
     pick[k] = done_layer[k] == kNoLayer ? Pick{&fresh, r++} : Pick{&done, done_layer[k]};
-  return assemble(pick, std::move(planes), with_encoding, progress);
+  return assemble(pick, std::move(planes), with_encoding, sub_progress(progress, 0.5, 1));
 }
 
 }  // namespace slicereuse
