@@ -1,10 +1,11 @@
 // Plates (issue #17): seconds per build plate of family members, by reuse (the source's encoding
 // transferred onto every placed member, exact) against direct slicing of every placed member,
 // both writing the plate's print file, and the arrangement's own seconds. Also writes the first
-// plate's placed members as one binary STL (plate_1.stl) and PrusaSlicer's display options for
-// the profile (prusa_display_args), for bench_plates.sh's PrusaSlicer run on the same plate.
+// S plates' placed members, a plate as one binary STL (plate_<k>.stl; --stl-plates S, default
+// 1), and PrusaSlicer's display options for the profile (prusa_display_args), for
+// bench_plates.sh's PrusaSlicer runs on the same plates.
 //   bench_plates [--printer ID] [--faces N] [--thickness MM] [--members M] [--plates P] [--format EXT]
-//                [--repeat R] [--out DIR]
+//                [--repeat R] [--stl-plates S] [--out DIR]
 // --members: members besides the source (default 20); --plates: how many plates to time (default
 // all); --format: the print file's extension (.sl1, .sl1s, .goo; default the printer's own, a PNG
 // folder for the method's display, whose thousands of files time the file system more than the
@@ -68,7 +69,7 @@ void write_stl(const std::string& path, const std::vector<Mesh>& meshes) {
 
 int main(int argc, char** argv) {
   std::string printer = "prusa_sl1s_speed", extension;
-  int plates_to_time = 1 << 30, members = 20, repeat = 1;
+  int plates_to_time = 1 << 30, members = 20, repeat = 1, stl_plates = 1;
   std::vector<char*> rest{argv[0]};
   for (int i = 1; i < argc; ++i) {
     const std::string k = argv[i];
@@ -77,6 +78,7 @@ int main(int argc, char** argv) {
     else if (i + 1 < argc && k == "--members") members = std::atoi(argv[++i]);
     else if (i + 1 < argc && k == "--format") extension = argv[++i];
     else if (i + 1 < argc && k == "--repeat") repeat = std::max(1, std::atoi(argv[++i]));
+    else if (i + 1 < argc && k == "--stl-plates") stl_plates = std::atoi(argv[++i]);
     else rest.push_back(argv[i]);
   }
   BenchArgs args = parse_bench_args(int(rest.size()), rest.data());
@@ -126,7 +128,7 @@ int main(int argc, char** argv) {
   for (size_t k = 0; k < a.members.size() && int(k) < plates_to_time; ++k) {
     std::vector<Mesh> placed;
     for (size_t m : a.members[k]) placed.push_back(place_mesh(family[m], a.placement[m]));
-    if (k == 0) write_stl(args.out + "/plate_1.stl", placed);
+    if (int(k) < stl_plates) write_stl(args.out + format("/plate_%zu.stl", k + 1), placed);
     const std::string out = plate_file_name(args.out + "/plate" + extension, k + 1);
     PlateJobOptions reuse;
     reuse.encoding = &encoding;

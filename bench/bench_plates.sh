@@ -1,14 +1,19 @@
 #!/usr/bin/env bash
-# A plate of family members (issue #17): bench_plates arranges 20 members of the generated arch
-# family on plates of a printer and times the first plate by reuse and by direct slicing, then
-# PrusaSlicer slices the same arranged plate (the placed members as one STL, kept where they are
-# placed: --dont-arrange) into an .sl1 for the same display and layer height, one run.
+# Plates of family members (issue #17): bench_plates arranges 20 members of the generated arch
+# family on plates of a printer and times every plate by reuse and by direct slicing, then
+# PrusaSlicer slices the same arranged plates (each plate's placed members as one STL, kept where
+# they are placed: --dont-arrange) into an .sl1 for the same display and layer height, one run
+# per plate: each plate's ratio, and all of them together (the lab's job, plate after plate).
 #   bench/bench_plates.sh [--printer ID] [--faces N] [--thickness MM] [--members M] [--format EXT]
-# (--format: our print file's extension, bench_plates' option; PrusaSlicer writes an .sl1.)
-# Needs PrusaSlicer (apt-get install prusa-slicer) for its line; without it, that line is skipped.
+#                         [--prusa-plates P]
+# (--format: our print file's extension, bench_plates' option; PrusaSlicer writes an .sl1.
+# --prusa-plates: PrusaSlicer on the first P plates only, default all; at 1 um one plate takes it
+# two minutes.) Needs PrusaSlicer (apt-get install prusa-slicer) for its lines; without it, they
+# are skipped.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-printer=prusa_sl1s_speed faces=545000 thickness=0.05 members=20 format=()
+printer=prusa_sl1s_speed faces=545000 thickness=0.05 members=20 format=() prusa_plates=1000
+usage="usage: bench/bench_plates.sh [--printer ID] [--faces N] [--thickness MM] [--members M] [--format EXT] [--prusa-plates P]"
 while [ $# -gt 0 ]; do
   case "$1" in
     --printer) printer=$2; shift 2 ;;
@@ -16,26 +21,37 @@ while [ $# -gt 0 ]; do
     --thickness) thickness=$2; shift 2 ;;
     --members) members=$2; shift 2 ;;
     --format) format=(--format "$2"); shift 2 ;;
-    *) echo "usage: bench/bench_plates.sh [--printer ID] [--faces N] [--thickness MM] [--members M] [--format EXT]" >&2; exit 2 ;;
+    --prusa-plates) prusa_plates=$2; shift 2 ;;
+    *) echo "$usage" >&2; exit 2 ;;
   esac
 done
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+command -v prusa-slicer >/dev/null || prusa_plates=0
 "$root/build/2020/bench/bench_plates" --printer "$printer" --faces "$faces" --thickness "$thickness" \
-  --members "$members" "${format[@]}" --out "$work" | tee "$work/ours.txt"
-if ! command -v prusa-slicer >/dev/null; then
+  --members "$members" "${format[@]}" --stl-plates "$prusa_plates" --out "$work" | tee "$work/ours.txt"
+if [ "$prusa_plates" = 0 ]; then
   echo "PrusaSlicer: not installed (apt-get install prusa-slicer)"
   exit 0
 fi
-s=$(date +%s.%N)
-# shellcheck disable=SC2046  # the display options are words
-prusa-slicer --export-sla --printer-technology SLA --layer-height "$thickness" --initial-layer-height "$thickness" \
-  $(cat "$work/prusa_display_args") --no-supports-enable --no-pad-enable --dont-arrange \
-  -o "$work/ps.sl1" "$work/plate_1.stl" >/dev/null 2>&1
-e=$(date +%s.%N)
-ps=$(echo "$e - $s" | bc)
-ps_layers=$(unzip -l "$work/ps.sl1" | grep -c '[0-9]\.png$')
-reuse=$(awk '$1 == "1" {print $5}' "$work/ours.txt")
-printf "PrusaSlicer %s, the same plate: %s layers, %.2f s (one run); reuse is %.1fx faster\n" \
-  "$(prusa-slicer --help 2>/dev/null | grep -o 'PrusaSlicer-[0-9.]*' | head -n1)" "$ps_layers" "$ps" \
-  "$(echo "scale=3; $ps / $reuse" | bc)"
+version=$(prusa-slicer --help 2>/dev/null | grep -o 'PrusaSlicer-[0-9.]*' | head -n1)
+ours_total=0 ps_total=0 plates=0
+for stl in $(ls "$work"/plate_*.stl | sort -V); do
+  k=$(basename "$stl" .stl | sed 's/plate_//')
+  s=$(date +%s.%N)
+  # shellcheck disable=SC2046  # the display options are words
+  prusa-slicer --export-sla --printer-technology SLA --layer-height "$thickness" --initial-layer-height "$thickness" \
+    $(cat "$work/prusa_display_args") --no-supports-enable --no-pad-enable --dont-arrange \
+    -o "$work/ps.sl1" "$stl" >/dev/null 2>&1
+  e=$(date +%s.%N)
+  ps=$(echo "$e - $s" | bc)
+  ps_layers=$(unzip -l "$work/ps.sl1" | grep -c '[0-9]\.png$')
+  read -r n reuse < <(awk -v k="$k" '$1 == k {print $2, $5}' "$work/ours.txt")
+  printf "%s, plate %s (%s members): %s layers, %.2f s (one run); reuse %.3f s is %.1fx faster\n" \
+    "$version" "$k" "$n" "$ps_layers" "$ps" "$reuse" "$(echo "scale=3; $ps / $reuse" | bc)"
+  ours_total=$(echo "$ours_total + $reuse" | bc)
+  ps_total=$(echo "$ps_total + $ps" | bc)
+  plates=$((plates + 1))
+  rm -f "$work/ps.sl1" "$stl"
+done
+printf "These %s plates together: PrusaSlicer %.2f s, reuse %.2f s: %.1fx faster\n" "$plates" "$ps_total" "$ours_total" "$(echo "scale=3; $ps_total / $ours_total" | bc)"

@@ -77,7 +77,7 @@ void thumbnail_png(const HeightMap& view, int width, int height, std::vector<uin
         if (!covered) continue;
         const double brightness = kDarkest + (1 - kDarkest) * (double(levels) / covered - 1) / 254;
         uint8_t* p = rgba.data() + (size_t(py) * size_t(width) + size_t(px)) * 4;
-        for (int ch = 0; ch < 3; ++ch) p[ch] = uint8_t(std::lround(kResin[ch] * brightness));
+        for (int ch = 0; ch < 3; ++ch) p[ch] = uint8_t(kResin[ch] * brightness + 0.5);  // rounded (positive)
         p[3] = uint8_t((255 * covered + kSamples * kSamples / 2) / (kSamples * kSamples));
       }
   }

@@ -15,8 +15,9 @@
 // encode_rgba_png: width x height RGBA pixels (4 bytes each, row-major) -> an 8-bit RGBA PNG in
 // out (replaced), for the pictures of a print file (thumbnail_png.h): rows filtered with Sub
 // (each byte less the same channel's of the pixel before), so that a picture's runs of equal
-// pixels become runs of zeros for the same deflater. libpng with zlib at level 3 and no filter
-// took 8 ms for the two thumbnails of a plate of 3 arches, 4 % of its time.
+// pixels become runs of zeros for the same deflater. The two thumbnails of a plate of 3 arches
+// (400x400 and 800x480) took 8.4 ms with libpng (zlib level 3, no filter), 4 % of the plate's
+// time, and take 2.5-6.5 ms so, in PNGs a fifth larger (54 and 153 KB against 42 and 129 KB).
 // decode_mask_png: a PNG file's bytes -> 8-bit grey pixels (other depths and colour types are
 // converted by libpng's simplified reader); name (a path or archive:entry) only appears in
 // error messages.
