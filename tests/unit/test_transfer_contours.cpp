@@ -42,6 +42,28 @@ void expect_same_points_without_encoding(const Slices& source, const Mesh& membe
               prepared.t == full.t);
 }
 
+// The ear family the range, layer and progress tests transfer: small, with the given z change;
+// its base sliced at 0.05 mm with encoding (the source) and the source's edge ends.
+struct EarFamily {
+  test::FamilyOptions options;
+  Mesh base;
+  Slices source;
+  Buffer<uint32_t> ends;
+};
+
+EarFamily ear_family(test::ZChange z) {
+  EarFamily f;
+  f.options.shape = "ear";
+  f.options.faces = 6000;
+  f.options.height = 10;
+  f.options.seed = 7;
+  f.options.z_change = z;
+  f.base = test::make_family_base(f.options);
+  f.source = slice(f.base, 0.05);
+  f.ends = encoded_edge_ends(f.source, f.base);
+  return f;
+}
+
 struct FamilyCase {
   std::string shape;
   test::ZChange z_change;
@@ -216,15 +238,7 @@ TEST(TransferContours, LocalZEditReslicesOnlyTheLayersItTouches) {
 TEST(TransferContours, ExactTransferInRangesEqualsTheWholeTransfer) {
   for (const test::ZChange z : {test::ZChange::None, test::ZChange::Band, test::ZChange::Everywhere}) {
     SCOPED_TRACE(int(z));
-    test::FamilyOptions o;
-    o.shape = "ear";
-    o.faces = 6000;
-    o.height = 10;
-    o.seed = 7;
-    o.z_change = z;
-    const Mesh base = test::make_family_base(o);
-    const Slices source = slice(base, 0.05);
-    const Buffer<uint32_t> ends = encoded_edge_ends(source, base);
+    const auto [o, base, source, ends] = ear_family(z);
     const TransferOptions bare(TransferMode::Exact, false);
     for (int i = 1; i <= 4; ++i) {
       SCOPED_TRACE("member " + std::to_string(i));
@@ -286,15 +300,7 @@ TEST(TransferContours, ExactTransferInRangesEqualsTheWholeTransfer) {
 TEST(TransferContours, ExactTransferALayerAtATimeEqualsItsRanges) {
   for (const test::ZChange z : {test::ZChange::None, test::ZChange::Band, test::ZChange::Everywhere}) {
     SCOPED_TRACE(int(z));
-    test::FamilyOptions o;
-    o.shape = "ear";
-    o.faces = 6000;
-    o.height = 10;
-    o.seed = 7;
-    o.z_change = z;
-    const Mesh base = test::make_family_base(o);
-    const Slices source = slice(base, 0.05);
-    const Buffer<uint32_t> ends = encoded_edge_ends(source, base);
+    const auto [o, base, source, ends] = ear_family(z);
     Mesh member = test::make_family_member(base, o, 2);
     size_t broken = SIZE_MAX;
     if (z == test::ZChange::None) ASSERT_TRUE(test::move_vertex_across_unsampled_edge(source, member, &broken));
@@ -354,14 +360,7 @@ TEST(TransferContours, ExactTransferALayerAtATimeEqualsItsRanges) {
 TEST(TransferContours, ProgressNeverGoesBack) {
   for (const test::ZChange z : {test::ZChange::None, test::ZChange::Band, test::ZChange::Everywhere}) {
     SCOPED_TRACE(int(z));
-    test::FamilyOptions o;
-    o.shape = "ear";
-    o.faces = 6000;
-    o.height = 10;
-    o.seed = 7;
-    o.z_change = z;
-    const Mesh base = test::make_family_base(o);
-    const Slices source = slice(base, 0.05);
+    const auto [o, base, source, ends] = ear_family(z);
     const Mesh member = test::make_family_member(base, o, 2);
     std::vector<double> seen;
     TransferStats st;
