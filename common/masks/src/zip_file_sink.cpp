@@ -73,8 +73,7 @@ struct Sink {
   }
 };
 
-zip_int64_t sink_cb(void* ud, void* data, zip_uint64_t len, zip_source_cmd_t cmd) {
-  Sink& s = *static_cast<Sink*>(ud);
+zip_int64_t sink_call(Sink& s, void* data, zip_uint64_t len, zip_source_cmd_t cmd) {
   switch (cmd) {
     case ZIP_SOURCE_SUPPORTS:
       return ZIP_SOURCE_SUPPORTS_WRITABLE;
@@ -115,6 +114,15 @@ zip_int64_t sink_cb(void* ud, void* data, zip_uint64_t len, zip_source_cmd_t cmd
       return 0;
     default:  // reading: never asked of a new archive
       return s.fail(ZIP_ER_OPNOTSUPP, 0);
+  }
+}
+
+zip_int64_t sink_cb(void* ud, void* data, zip_uint64_t len, zip_source_cmd_t cmd) {
+  Sink& s = *static_cast<Sink*>(ud);
+  try {
+    return sink_call(s, data, len, cmd);
+  } catch (...) {  // the buffer's growth; exceptions must not unwind through libzip's C frames
+    return s.fail(ZIP_ER_MEMORY, 0);
   }
 }
 

@@ -75,12 +75,12 @@ struct DirectLayers {
   }
 };
 
-// The member's layers that its transfer t cannot make: those the
-// cheap certificate refuses (above the source's top, or failing the counts or sample), and, when
-// there are any (the member changed in z, and then some layers that pass the sample fail the
-// whole certificate: 4 to 18 of 290 for members of the arch family), those the whole certificate
-// refuses too, found now, so that all are sliced in one pass. (Slicing one plane costs as much as
-// slicing them all, about 0.05 s for the 545k-face arch: its faces are sorted first.)
+// The member's layers that its transfer t cannot make: those the cheap certificate refuses
+// (above the source's top, or failing the counts or sample), and, when there are any (the member
+// changed in z, and then some layers that pass the sample fail the whole certificate: 4 to 18 of
+// 290 for members of the arch family), those the whole certificate refuses too, found now, so
+// that all are sliced in one pass. (Slicing one plane costs as much as slicing them all, about
+// 0.05 s for the 545k-face arch: its faces are sorted first.)
 DirectLayers layers_to_slice(const ExactTransfer& t) {
   bool changed = false;
   for (size_t k = 0; k < t.layers(); ++k) changed |= !t.transferable(k);
@@ -114,11 +114,11 @@ class MadeWhereDrawn {
     const auto t = std::chrono::steady_clock::now();
     size_t layers = 0, done = 0;
     for (const DirectLayers& d : direct_) layers += d.planes.size();
-    for (DirectLayers& d : direct_) {
-      const size_t n = d.planes.size();
+    for (size_t m = 0; m < direct_.size(); ++m) {
+      const size_t n = direct_[m].planes.size();
       if (n == 0) continue;
       const Progress mp = sub_progress(progress, double(done) / double(layers), double(done + n) / double(layers));
-      d.slices = slice_planes(placed_[&d - direct_.data()], d.planes, mp, false);
+      direct_[m].slices = slice_planes(placed_[m], direct_[m].planes, mp, false);
       done += n;
     }
     direct_seconds_ = seconds_since(t);
@@ -166,7 +166,8 @@ class MadeWhereDrawn {
   }
 
  private:
-  // Member m's layers that pass the cheap certificate but not the whole one, sliced.
+  // Member m's layers that pass the cheap certificate but not the whole one, sliced (on the
+  // drawing thread that found the first: its OpenMP team is its own, a rare cost).
   DirectLayers late_layers(size_t m) const {
     DirectLayers d;
     const ExactTransfer& t = transfers_[m];
