@@ -120,6 +120,7 @@ int main(int argc, char** argv) {
   t = std::chrono::steady_clock::now();
   const Slices encoding = slice_layers(base, so);
   const Buffer<uint32_t> ends = encoded_edge_ends(encoding, base);
+  const VertexOrder order = vertex_order(ends);  // as Make Plate Job: once for all its plates
   std::printf("source sliced with encoding once: %zu layers, %zu points, %.2f s\n", encoding.layers(), encoding.points(),
               since(t));
 
@@ -133,6 +134,7 @@ int main(int argc, char** argv) {
     PlateJobOptions reuse;
     reuse.encoding = &encoding;
     reuse.edge_ends = &ends;
+    reuse.vertex_order = &order;
     reuse.range_budget_bytes = available_memory() / 4;
     PlateJobStats r;
     std::vector<double> runs;

@@ -175,10 +175,13 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
   jo.range_budget_bytes = available_memory() / 4;
   bool cached = false;
   std::shared_ptr<const CachedEncoding> entry;
+  VertexOrder order;  // once for all the plates: each member's transfer reads its vertices in it
   if (!p.encoding_file.empty()) {
     entry = encoding_cache().get(p.encoding_file, *members[0], &cached, sub_progress(progress, 0.1, 0.15));
     jo.encoding = &entry->encoding;
     jo.edge_ends = &entry->edge_ends;
+    order = vertex_order(entry->edge_ends);
+    jo.vertex_order = &order;
   }
 
   const size_t plates = arrangement.members.size();

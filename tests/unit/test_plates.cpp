@@ -492,6 +492,18 @@ TEST_F(PlateJobTest, PlateMasksEqualTheUnionOfTheMembersOwnMasksByReuseAndDirect
     EXPECT_EQ(d.layers, r.layers);
     expect_union(path(tag + "_direct.sl1"), own);
 
+    // Through the edge ends, the vertices read in the order the points use them: the same masks.
+    const Buffer<uint32_t> ends = encoded_edge_ends(encoding, base);
+    const VertexOrder order = vertex_order(ends);
+    PlateJobOptions ordered = reuse;
+    ordered.edge_ends = &ends;
+    ordered.vertex_order = &order;
+    const PlateJobStats ro = export_plate(placed, ordered, profile, path(tag + "_ordered"));
+    EXPECT_EQ(ro.ranges, 0u);
+    EXPECT_EQ(ro.points, r.points);
+    EXPECT_EQ(ro.resliced_layers, r.resliced_layers);
+    expect_union(path(tag + "_ordered"), own);
+
     // In ranges of layers, to stay within a (tiny) memory budget: the same masks.
     reuse.range_budget_bytes = 200000;
     const PlateJobStats rr = export_plate(placed, reuse, profile, path(tag + "_ranges"));

@@ -294,7 +294,8 @@ TEST(TransferContours, ExactTransferInRangesEqualsTheWholeTransfer) {
 
 // ExactTransfer a layer at a time (as a plate's masks make each member's layers): every layer it
 // lets through (transferable) and certifies equals that layer of the ranges, bit for bit, into
-// the same reused Slices; the others are refused in words. A layer whose sample and counts pass
+// the same reused Slices, also from the vertices in the order the points use them (VertexOrder);
+// the others are refused in words. A layer whose sample and counts pass
 // but whose whole certificate fails (a vertex moved across an unsampled edge; in z-changed
 // members, a few layers) is reported, by certified as well, and the ranges re-slice it.
 TEST(TransferContours, ExactTransferALayerAtATimeEqualsItsRanges) {
@@ -304,8 +305,9 @@ TEST(TransferContours, ExactTransferALayerAtATimeEqualsItsRanges) {
     Mesh member = test::make_family_member(base, o, 2);
     size_t broken = SIZE_MAX;
     if (z == test::ZChange::None) ASSERT_TRUE(test::move_vertex_across_unsampled_edge(source, member, &broken));
-    const ExactTransfer by_ends(source, ends, member), by_faces(source, member);
-    Slices one;
+    const VertexOrder order = vertex_order(ends);
+    const ExactTransfer by_ends(source, ends, member), by_faces(source, member), by_order(source, ends, member, &order);
+    Slices one, ordered;
     size_t transferable = 0, certified = 0;
     for (size_t k = 0; k < by_ends.layers(); ++k) {
       SCOPED_TRACE("layer " + std::to_string(k));
@@ -324,6 +326,8 @@ TEST(TransferContours, ExactTransferALayerAtATimeEqualsItsRanges) {
       EXPECT_EQ(by_faces.layer_into(k, other), whole);
       EXPECT_EQ(by_ends.certified(k), whole);
       EXPECT_EQ(by_faces.certified(k), whole);
+      EXPECT_EQ(by_order.certified(k), whole);
+      EXPECT_EQ(by_order.layer_into(k, ordered), whole);
       // A member changed in z fails the whole certificate on some layers that pass the sample.
       if (z == test::ZChange::None) EXPECT_EQ(whole, k != broken);
       if (!whole) {
@@ -336,11 +340,28 @@ TEST(TransferContours, ExactTransferALayerAtATimeEqualsItsRanges) {
       EXPECT_EQ(one.layer_begin, range.layer_begin);
       EXPECT_EQ(one.contour_begin, range.contour_begin);
       EXPECT_EQ(one.contour_open, range.contour_open);
-      EXPECT_TRUE(one.xyz == range.xyz && other.xyz == range.xyz);
+      EXPECT_TRUE(one.xyz == range.xyz && other.xyz == range.xyz && ordered.xyz == range.xyz);
       EXPECT_DOUBLE_EQ(one.z_start, range.z_start);
       EXPECT_EQ(one.thickness, source.thickness);
       EXPECT_FALSE(one.has_encoding());
     }
+    // Every vertex a point uses, once, numbered in the order of first use.
+    std::vector<uint32_t> sorted = order.vertex;
+    std::sort(sorted.begin(), sorted.end());
+    EXPECT_TRUE(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end());
+    for (size_t i = 0; i < ends.size(); ++i) ASSERT_EQ(order.vertex[order.ends[i]], ends[i]);
+    uint32_t next = 0;  // a point's vertex is one numbered before, or the next number
+    for (uint32_t v : order.ends) {
+      ASSERT_LE(v, next);
+      next = std::max(next, v + 1);
+    }
+    EXPECT_EQ(next, order.vertex.size());
+    Buffer<uint32_t> fewer = ends;
+    fewer.resize(ends.size() - 2);
+    const VertexOrder other_order = vertex_order(fewer);
+    EXPECT_NE(test::error_of([&] { ExactTransfer(source, ends, member, &other_order); })
+                  .find("a vertex order was made for another encoding"),
+              std::string::npos);
     const std::string beyond = test::error_of([&] { by_ends.layer_into(by_ends.layers(), one); });
     EXPECT_NE(beyond.find("the target has " + std::to_string(by_ends.layers()) + " layers"), std::string::npos)
         << beyond;

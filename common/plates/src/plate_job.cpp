@@ -239,8 +239,9 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
     parallel_blocks(
         n,
         [&](size_t m) {
-          made[m] = o.edge_ends ? std::make_unique<ExactTransfer>(*o.encoding, *o.edge_ends, placed[m])
-                                : std::make_unique<ExactTransfer>(*o.encoding, placed[m]);
+          made[m] = o.edge_ends
+                        ? std::make_unique<ExactTransfer>(*o.encoding, *o.edge_ends, placed[m], o.vertex_order)
+                        : std::make_unique<ExactTransfer>(*o.encoding, placed[m]);
           direct[m] = layers_to_slice(*made[m]);
         },
         {}, "preparing the transfers");

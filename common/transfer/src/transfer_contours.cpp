@@ -32,16 +32,15 @@ constexpr size_t kPrefetchPoints = 16;
 // out has room for it. Returns the certificate's first half: every edge still crosses from corner
 // j below to corner j+1 at or above.
 template <bool WithEncoding, class Ends>
-bool transfer_layer(const Slices& enc, const Ends& ends, const Mesh& target, size_t k, size_t p0, Slices& out) {
+bool transfer_layer(const Slices& enc, const Ends& ends, const double* V, size_t k, size_t p0, Slices& out) {
   const double zk = enc.layer_z[k];
-  const double* V = target.V.data();
   double* xyz = out.xyz.data();
   bool good = true;
   const size_t p1 = layer_point_begin(enc, k), p2 = layer_point_end(enc, k);
   for (size_t p = p1; p < p2; ++p) {
-    // The vertices a few points ahead are fetched now: they lie anywhere in the target's
-    // arrays, and a layer made where it is drawn (plate_job.h) finds them out of cache, since the
-    // masks ran on this core in between; waiting for them was most of its time.
+    // The vertices a few points ahead are fetched now: in the mesh's own order they lie anywhere
+    // in its arrays (see VertexOrder), and a layer made where it is drawn (plate_job.h) finds
+    // them out of cache, since the masks ran on this core in between.
     if (p + kPrefetchPoints < p2) {
       uint32_t fa, fb;
       ends(p + kPrefetchPoints, fa, fb);
@@ -124,8 +123,8 @@ Slices transfer_exact_layers(const Slices& enc, const Ends& ends, const Mesh& ta
   // the second (each from 0 to 1 on its own).
   for_each_layer(te - ta, sub_progress(progress, 0, 0.5), [&](size_t i) {
     if (ok[i])
-      ok[i] = with_encoding ? transfer_layer<true>(enc, ends, target, a + i, p0, moved)
-                            : transfer_layer<false>(enc, ends, target, a + i, p0, moved);
+      ok[i] = with_encoding ? transfer_layer<true>(enc, ends, target.V.data(), a + i, p0, moved)
+                            : transfer_layer<false>(enc, ends, target.V.data(), a + i, p0, moved);
   });
 
   std::vector<size_t> done_layer(n, kNoLayer);
@@ -235,10 +234,32 @@ ExactTransfer::ExactTransfer(const Slices& encoding, const Mesh& target)
       planes_.size());
 }
 
-ExactTransfer::ExactTransfer(const Slices& encoding, const Buffer<uint32_t>& edge_ends, const Mesh& target)
+ExactTransfer::ExactTransfer(const Slices& encoding, const Buffer<uint32_t>& edge_ends, const Mesh& target,
+                             const VertexOrder* order)
     : ExactTransfer(encoding, target) {
   check_edge_ends(encoding, edge_ends);
   edge_ends_ = &edge_ends;
+  if (!order) return;
+  if (order->ends.size() != edge_ends.size())
+    throw Error("a vertex order was made for another encoding (" + std::to_string(order->ends.size() / 2) +
+                " points, the encoding has " + std::to_string(encoding.points()) + ")");
+  order_ = order;
+  ordered_vertices_.resize(3 * order->vertex.size());
+  const double* V = target.V.data();
+  for (size_t i = 0; i < order->vertex.size(); ++i) {
+    if (order->vertex[i] >= target.vertices())
+      throw Error("a vertex order names vertex " + std::to_string(order->vertex[i]) + ", but the target has " +
+                  std::to_string(target.vertices()));
+    std::memcpy(&ordered_vertices_[3 * i], V + 3 * size_t(order->vertex[i]), 3 * sizeof(double));
+  }
+}
+
+const uint32_t* ExactTransfer::transfer_ends() const {
+  return order_ ? order_->ends.data() : edge_ends_ ? edge_ends_->data() : nullptr;
+}
+
+const double* ExactTransfer::transfer_vertices() const {
+  return order_ ? ordered_vertices_.data() : target_.V.data();
 }
 
 Slices ExactTransfer::layers(size_t a, size_t b, TransferStats* stats, const Progress& progress) const {
@@ -265,7 +286,7 @@ void ExactTransfer::check_transferable(size_t k) const {
 
 bool ExactTransfer::certified(size_t k) const {
   check_transferable(k);
-  const double* V = target_.V.data();
+  const double* V = transfer_vertices();
   const double zk = encoding_.layer_z[k];
   const auto all_cross = [&](const auto& ends) {
     bool good = true;
@@ -276,19 +297,36 @@ bool ExactTransfer::certified(size_t k) const {
     }
     return good;
   };
-  return edge_ends_ ? all_cross(EndsFromPairs{edge_ends_->data()})
-                    : all_cross(EndsFromFaces{encoding_.edge.data(), encoding_.face.data(), target_.F.data()});
+  if (const uint32_t* ends = transfer_ends()) return all_cross(EndsFromPairs{ends});
+  return all_cross(EndsFromFaces{encoding_.edge.data(), encoding_.face.data(), target_.F.data()});
 }
 
 bool ExactTransfer::layer_into(size_t k, Slices& out) const {
   check_transferable(k);
   layers_into(encoding_, k, k + 1, out, false);
   const size_t p0 = layer_point_begin(encoding_, k);
-  return edge_ends_ ? transfer_layer<false>(encoding_, EndsFromPairs{edge_ends_->data()}, target_, k, p0, out)
-                    : transfer_layer<false>(encoding_,
-                                            EndsFromFaces{encoding_.edge.data(), encoding_.face.data(),
-                                                          target_.F.data()},
-                                            target_, k, p0, out);
+  if (const uint32_t* ends = transfer_ends())
+    return transfer_layer<false>(encoding_, EndsFromPairs{ends}, transfer_vertices(), k, p0, out);
+  return transfer_layer<false>(encoding_,
+                               EndsFromFaces{encoding_.edge.data(), encoding_.face.data(), target_.F.data()},
+                               target_.V.data(), k, p0, out);
+}
+
+VertexOrder vertex_order(const Buffer<uint32_t>& edge_ends) {
+  VertexOrder o;
+  o.ends.resize(edge_ends.size());
+  uint32_t top = 0;
+  for (uint32_t v : edge_ends) top = std::max(top, v);
+  std::vector<uint32_t> renamed(edge_ends.empty() ? 0 : size_t(top) + 1, UINT32_MAX);
+  for (size_t i = 0; i < edge_ends.size(); ++i) {
+    uint32_t& r = renamed[edge_ends[i]];
+    if (r == UINT32_MAX) {
+      r = uint32_t(o.vertex.size());
+      o.vertex.push_back(edge_ends[i]);
+    }
+    o.ends[i] = r;
+  }
+  return o;
 }
 
 }  // namespace slicereuse

@@ -36,6 +36,7 @@
 #include "slicereuse/mesh/mesh.h"
 #include "slicereuse/slicing/slice_layers.h"
 #include "slicereuse/slicing/slices.h"
+#include "slicereuse/transfer/transfer_contours.h"
 #include "slicereuse/util/progress.h"
 
 namespace slicereuse {
@@ -44,6 +45,9 @@ struct PlateJobOptions {
   const Slices* encoding = nullptr;  // the source's encoding (reuse), or null (direct slicing)
   // Its encoded_edge_ends (transfer_contours.h), or null: then looked up in each member's faces.
   const Buffer<uint32_t>* edge_ends = nullptr;
+  // With edge_ends, their vertex_order (transfer_contours.h), or null: then each member's layers
+  // are transferred from its own vertex array, in its own order.
+  const VertexOrder* vertex_order = nullptr;
   SliceOptions slicing;              // direct slicing's thickness and z_start
   uint64_t range_budget_bytes = 0;
 };

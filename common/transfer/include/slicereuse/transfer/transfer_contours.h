@@ -71,11 +71,27 @@ Slices transfer_contours(const Slices& encoding, const Buffer<uint32_t>& edge_en
 // plane of the target, is done once, when it is made; layers(a, b) then costs what its points
 // do, and equals layers [a, b) of transfer_contours(encoding, [edge_ends,] target, exact without
 // encoding), re-sliced layers included, with z_start that of layer a.
+// VertexOrder: a family's vertices numbered in the order the encoding's points first use them
+// (layer after layer), and the points' edge ends (encoded_edge_ends) in those numbers. A layer's
+// few thousand vertices lie all over a mesh's own vertex array; a transfer that reads a copy
+// in this order (ExactTransfer with an order) reads them nearly in sequence. Made once for any
+// number of members, from the edge ends alone, in one pass over them.
+struct VertexOrder {
+  Buffer<uint32_t> ends;         // 2 per point
+  std::vector<uint32_t> vertex;  // number -> the mesh's vertex id
+};
+
+VertexOrder vertex_order(const Buffer<uint32_t>& edge_ends);
+
 class ExactTransfer {
  public:
   // Throws what transfer_contours throws for these. Keeps references to all of them.
   ExactTransfer(const Slices& encoding, const Mesh& target);
-  ExactTransfer(const Slices& encoding, const Buffer<uint32_t>& edge_ends, const Mesh& target);
+  // With an order (vertex_order of edge_ends), the transfer keeps a copy of the target's vertices
+  // in that order, which layer_into and certified read; throws Error for an order of other edge
+  // ends or another mesh.
+  ExactTransfer(const Slices& encoding, const Buffer<uint32_t>& edge_ends, const Mesh& target,
+                const VertexOrder* order = nullptr);
 
   // The target's planes: the encoding's, up to the target's own top (a taller target's extra
   // layers are sliced directly): how many, and plane k's z.
@@ -103,6 +119,8 @@ class ExactTransfer {
 
  private:
   void check_transferable(size_t k) const;
+  const uint32_t* transfer_ends() const;  // null: looked up in the faces
+  const double* transfer_vertices() const;
 
   const Slices& encoding_;
   const Buffer<uint32_t>* edge_ends_;
@@ -110,6 +128,8 @@ class ExactTransfer {
   std::vector<double> planes_;
   std::vector<uint64_t> counts_;
   std::vector<uint8_t> transferable_;
+  const VertexOrder* order_ = nullptr;
+  Buffer<double> ordered_vertices_;  // with an order: the target's vertices in it, 3 per vertex
 };
 
 }  // namespace slicereuse
