@@ -65,12 +65,6 @@ Slices transfer_contours(const Slices& encoding, const Buffer<uint32_t>& edge_en
                          const TransferOptions& options, TransferStats* stats = nullptr,
                          const Progress& progress = {});
 
-// ExactTransfer: the exact transfer (without the target's encoding) a range of layers at a time,
-// for a job that holds only some of a member's layers in memory at once (a build plate,
-// plate_job.h). What costs O(faces), the family check and the certificate's counts on every
-// plane of the target, is done once, when it is made; layers(a, b) then costs what its points
-// do, and equals layers [a, b) of transfer_contours(encoding, [edge_ends,] target, exact without
-// encoding), re-sliced layers included, with z_start that of layer a.
 // VertexOrder: a family's vertices numbered in the order the encoding's points first use them
 // (layer after layer), and the points' edge ends (encoded_edge_ends) in those numbers. A layer's
 // few thousand vertices lie all over a mesh's own vertex array; a transfer that reads a copy
@@ -83,6 +77,12 @@ struct VertexOrder {
 
 VertexOrder vertex_order(const Buffer<uint32_t>& edge_ends);
 
+// ExactTransfer: the exact transfer (without the target's encoding) a range of layers at a time,
+// for a job that holds only some of a member's layers in memory at once (a build plate,
+// plate_job.h). What costs O(faces), the family check and the certificate's counts on every
+// plane of the target, is done once, when it is made; layers(a, b) then costs what its points
+// do, and equals layers [a, b) of transfer_contours(encoding, [edge_ends,] target, exact without
+// encoding), re-sliced layers included, with z_start that of layer a.
 class ExactTransfer {
  public:
   // Throws what transfer_contours throws for these. Keeps references to all of them.
