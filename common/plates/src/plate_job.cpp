@@ -298,7 +298,7 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
                        const auto t = std::chrono::steady_clock::now();
                        std::vector<SlicePart> s =
                            plate_range(placed, transfers, planes, own, first[i], first[i + 1], st, range_progress);
-                       st.slicing_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+                       st.slicing_seconds += seconds_since(t);
                        return s;
                      }};
   st.masks = export_masks(chunks, profile, output_path, progress);

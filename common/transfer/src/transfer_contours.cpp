@@ -76,21 +76,26 @@ bool transfer_layer(const Slices& enc, const Ends& ends, const double* V, size_t
 // keeps its counts on most layers (its sections only move), so the counts alone let it through
 // to a full transfer that then fails almost everywhere; the sample catches it before any point
 // is transferred. Sampling only rejects layers the full check would reject.
+// The certificate for point p: its edge still crosses plane zk from corner j below to corner
+// j+1 at or above (V: the vertices ends numbers).
+template <class Ends>
+bool crosses(const Ends& ends, const double* V, size_t p, double zk) {
+  uint32_t ia, ib;
+  ends(p, ia, ib);
+  return (V[3 * size_t(ia) + 2] < zk) & (V[3 * size_t(ib) + 2] >= zk);
+}
+
 template <class Ends>
 std::vector<uint8_t> candidate_layers(const Slices& enc, const Ends& ends, const Mesh& target,
                                       const std::vector<uint64_t>& counts, size_t a, size_t b) {
   const double* V = target.V.data();
-  auto crosses = [&](size_t p, double zk) {
-    uint32_t ia, ib;
-    ends(p, ia, ib);
-    return V[3 * size_t(ia) + 2] < zk && V[3 * size_t(ib) + 2] >= zk;
-  };
   std::vector<uint8_t> ok(b - a, 0);
   for (size_t k = a; k < std::min(b, enc.layers()); ++k) {
     bool good = counts[k] == layer_point_end(enc, k) - layer_point_begin(enc, k);
     for (size_t c = enc.layer_begin[k]; good && c < enc.layer_begin[k + 1]; ++c) {
       const size_t p0 = enc.contour_begin[c], p1 = enc.contour_begin[c + 1];
-      good = !enc.contour_open[c] && crosses(p0, enc.layer_z[k]) && crosses((p0 + p1) / 2, enc.layer_z[k]);
+      good = !enc.contour_open[c] && crosses(ends, V, p0, enc.layer_z[k]) &&
+             crosses(ends, V, (p0 + p1) / 2, enc.layer_z[k]);
     }
     ok[k - a] = good;
   }
@@ -290,11 +295,8 @@ bool ExactTransfer::certified(size_t k) const {
   const double zk = encoding_.layer_z[k];
   const auto all_cross = [&](const auto& ends) {
     bool good = true;
-    for (size_t p = layer_point_begin(encoding_, k); p < layer_point_end(encoding_, k); ++p) {
-      uint32_t ia, ib;
-      ends(p, ia, ib);
-      good &= (V[3 * size_t(ia) + 2] < zk) & (V[3 * size_t(ib) + 2] >= zk);
-    }
+    for (size_t p = layer_point_begin(encoding_, k); p < layer_point_end(encoding_, k); ++p)
+      good &= crosses(ends, V, p, zk);
     return good;
   };
   if (const uint32_t* ends = transfer_ends()) return all_cross(EndsFromPairs{ends});
