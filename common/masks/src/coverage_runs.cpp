@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -55,36 +56,42 @@ Point pixel_point(const PixelMap& m, const double* xyz, int W, int H) {
   return p;
 }
 
-// The sums of a strip of rows [r0, r1), per pixel and, in column -1, for everything left of the
-// display: area, the sum of dv * (2 kOne - x_in - x_out) over the pieces of edges in the pixel
-// (a piece's height times the part of the pixel right of it, doubled), and cover, the sum of
-// their heights dv, which every pixel further right in the row gets in full; and which pixels
-// have any, one bit each, and which words of those bits are not zero, one bit each (so that a
-// row's sweep visits only those: on a wide display most of a row's words are zero). Pixel
-// (r, c) is number (r - r0) * stride + c + 1 in all; stride, a multiple of 64, is at least
-// W + 1, so each row's bits are whole words. A strip is small enough to stay in cache: the
-// pieces are added straight into it, in any order (the sums are of integers).
+// The sums of a pixel: area, the sum of dv * (2 kOne - x_in - x_out) over the pieces of edges
+// in it (a piece's height times the part of the pixel right of it, doubled), and cover, the sum
+// of their heights dv, which every pixel further right in the row gets in full.
+struct PixelSums {
+  int64_t area, cover;
+};
+
+// A strip of rows [r0, r1): the sums per pixel and, in column -1, for everything left of the
+// display; which pixels have any, one bit each; and, with kSummary, which words of those bits
+// are not zero, one bit each, so that a row's sweep visits only those. The summary is kept on
+// displays whose rows have more than kScannedWords words of bits (most of a wide display's
+// words are zero); a narrower row's sweep reads its every word, which costs less than keeping
+// the summary (4 % of a 2560-pixel SL1S layer, where keeping it on an 11520-pixel Saturn saves
+// 6 %). Pixel (r, c) is number (r - r0) * stride + c + 1 in all; stride, a multiple of 64, is
+// at least W + 1, so each row's bits are whole words. A strip is small enough to stay in cache:
+// the pieces are added straight into it, in any order (the sums are of integers).
+template <bool kSummary>
 struct Strip {
-  struct Sums {
-    int64_t area, cover;
-  };
+  static constexpr bool summary = kSummary;
   int32_t r0, r1;
   int W;
   int32_t stride;
-  Sums* sums;
+  PixelSums* sums;
   uint64_t* touched;
-  uint64_t* touched_words;
+  uint64_t* touched_words;  // with kSummary
 
   // A piece of height dv (signed: positive when the contour runs downwards) in pixel (row, col),
   // entering and leaving at x_in and x_out, x_sum = x_in + x_out. A piece without height adds
   // nothing, and its pixel comes out as if untouched.
   void add(int32_t row, int32_t col, int32_t dv, int32_t x_sum) const {
     const size_t i = size_t((row - r0) * stride + col + 1);
-    Sums& s = sums[i];
+    PixelSums& s = sums[i];
     s.area += int64_t(dv) * (2 * kOne - x_sum);
     s.cover += dv;
     touched[i >> 6] |= uint64_t(1) << (i & 63);
-    touched_words[i >> 12] |= uint64_t(1) << ((i >> 6) & 63);
+    if constexpr (kSummary) touched_words[i >> 12] |= uint64_t(1) << ((i >> 6) & 63);
   }
 };
 
@@ -130,6 +137,7 @@ Oriented oriented(const Point* e) {
 // Every crossing is computed from the lower endpoint a (smaller v), so an edge and its reverse
 // give the same pieces, and so does an edge that two strips share. Pixels beyond the display's
 // right side are skipped; those left of it add their height to column -1.
+template <class Strip>
 void add_edge(const Point* e, const Strip& st) {
   const Point &p = e[0], &q = e[1];
   if (p.row == q.row && p.col == q.col) {  // one piece
@@ -178,6 +186,7 @@ void add_edge(const Point* e, const Strip& st) {
 // itself): more crossings, a horizontal edge, or one that leaves the strip or the display's rows.
 enum EdgeKind : uint32_t { kOnePiece, kR, kC, kRR, kCC, kRC, kOther, kKinds };
 
+template <class Strip>
 void add_one_piece(const Point* e, const Strip& st) {
   if (e[0].col < st.W) st.add(e[0].row, e[0].col, e[1].fy - e[0].fy, e[0].fx + e[1].fx);
 }
@@ -187,6 +196,7 @@ void add_one_piece(const Point* e, const Strip& st) {
 int32_t at_row(const Point& a, double du_dv, int32_t y, int32_t c) { return fraction(a.u + (y - a.v) * du_dv - c); }
 int32_t at_column(const Point& a, double dv_du, double x, int32_t r) { return fraction(a.v + (x - a.u) * dv_du - r); }
 
+template <class Strip>
 void add_r(const Point* e, const Strip& st) {
   const Oriented o = oriented(e);
   const Point &a = *o.a, &b = *o.b;
@@ -196,6 +206,7 @@ void add_r(const Point* e, const Strip& st) {
   st.add(b.row, b.col, o.sign * b.fy, x + b.fx);
 }
 
+template <class Strip>
 void add_rr(const Point* e, const Strip& st) {
   const Oriented o = oriented(e);
   const Point &a = *o.a, &b = *o.b;
@@ -209,6 +220,7 @@ void add_rr(const Point* e, const Strip& st) {
 
 // The column crossings of kC and kCC: towards larger columns (right) they leave a pixel at its
 // right side, x = kOne, and enter the next at 0.
+template <class Strip>
 void add_c(const Point* e, const Strip& st) {
   const Oriented o = oriented(e);
   const Point &a = *o.a, &b = *o.b;
@@ -219,6 +231,7 @@ void add_c(const Point* e, const Strip& st) {
   if (b.col < st.W) st.add(b.row, b.col, o.sign * (b.fy - t), kOne - side + b.fx);
 }
 
+template <class Strip>
 void add_cc(const Point* e, const Strip& st) {
   const Oriented o = oriented(e);
   const Point &a = *o.a, &b = *o.b;
@@ -234,6 +247,7 @@ void add_cc(const Point* e, const Strip& st) {
 
 // One row and one column crossing, in the order the edge meets them: the middle piece is in the
 // pixel below a's (row first) or beside it.
+template <class Strip>
 void add_rc(const Point* e, const Strip& st) {
   const Oriented o = oriented(e);
   const Point &a = *o.a, &b = *o.b;
@@ -309,7 +323,7 @@ struct Scratch {
   std::vector<uint64_t> crossing;  // and so per strip of an edge in several (or beyond the rows)
   std::vector<uint32_t> begin;    // per strip and kind, where its edges begin in edges
   Buffer<uint32_t> edges;         // edge i joins points i and i + 1
-  std::vector<Strip::Sums> sums;
+  std::vector<PixelSums> sums;
   std::vector<uint64_t> touched;
   std::vector<uint64_t> touched_words;
   std::vector<std::pair<uint8_t, size_t>> spans;  // a row's, to be mirrored
@@ -320,6 +334,10 @@ struct Scratch {
 // Rows per strip: a power of two, for about kStripPixels pixels' sums (16 bytes each), which
 // stay in cache.
 constexpr size_t kStripPixels = 32768;
+
+// Rows of at most this many words of touched bits (displays up to 4095 pixels wide) are swept
+// without the words' summary (Strip).
+constexpr int32_t kScannedWords = 64;
 
 int strip_shift(int32_t stride) {
   int shift = 0;
@@ -347,7 +365,8 @@ size_t add_edges(const LayerView& layer, const PixelMap& map, int W, int H, int 
   w.crossing.clear();
   w.begin.assign(strips * kKinds + 1, 0);
   uint32_t* const count = w.begin.data() + 1;  // per bucket, for now
-  const size_t open = for_each_closed_contour(layer, [&](const double* xyz, uint64_t n) {
+  // The scalars by value: captured by reference, they could be any int the loop stores to.
+  const size_t open = for_each_closed_contour(layer, [&w, count, map, W, H, shift](const double* xyz, uint64_t n) {
     const size_t base = w.points.size(), used = w.entries.size();
     w.points.resize(base + n + 1);
     w.entries.resize(used + n);
@@ -386,19 +405,20 @@ size_t add_edges(const LayerView& layer, const PixelMap& map, int W, int H, int 
 }
 
 // The pieces of strip i's edges, kind by kind.
+template <class Strip>
 void add_strip_edges(const Scratch& w, size_t i, const Strip& st) {
   const Point* const pts = w.points.data();
   const uint32_t* const edges = w.edges.data();
   auto each = [&](uint32_t kind, auto add) {
     for (uint32_t j = w.begin[i * kKinds + kind]; j < w.begin[i * kKinds + kind + 1]; ++j) add(pts + edges[j], st);
   };
-  each(kOnePiece, [](const Point* e, const Strip& s) { add_one_piece(e, s); });
-  each(kR, [](const Point* e, const Strip& s) { add_r(e, s); });
-  each(kC, [](const Point* e, const Strip& s) { add_c(e, s); });
-  each(kRR, [](const Point* e, const Strip& s) { add_rr(e, s); });
-  each(kCC, [](const Point* e, const Strip& s) { add_cc(e, s); });
-  each(kRC, [](const Point* e, const Strip& s) { add_rc(e, s); });
-  each(kOther, [](const Point* e, const Strip& s) { add_edge(e, s); });
+  each(kOnePiece, [](const Point* e, const auto& s) { add_one_piece(e, s); });
+  each(kR, [](const Point* e, const auto& s) { add_r(e, s); });
+  each(kC, [](const Point* e, const auto& s) { add_c(e, s); });
+  each(kRR, [](const Point* e, const auto& s) { add_rr(e, s); });
+  each(kCC, [](const Point* e, const auto& s) { add_cc(e, s); });
+  each(kRC, [](const Point* e, const auto& s) { add_rc(e, s); });
+  each(kOther, [](const Point* e, const auto& s) { add_edge(e, s); });
 }
 
 // Strip row r as spans of one level, left to right, covering the row: emit(level, n), n >= 0.
@@ -407,35 +427,48 @@ void add_strip_edges(const Scratch& w, size_t i, const Strip& st) {
 // its area. Touched pixels are visited without a branch on their kind: a span, maybe empty, of
 // the pixels before one (levels of the cover alone, which levels() maps to 0 or 255 when the
 // cover is 0 or a whole winding) and the pixel itself. Leaves the row's sums and bits zero.
-template <class Emit>
+template <class Strip, class Emit>
 void sweep_row(const Strip& st, int32_t r, const CoverageLevels& levels, Emit&& emit) {
-  Strip::Sums* const sums = st.sums + size_t(r - st.r0) * size_t(st.stride);
+  PixelSums* const sums = st.sums + size_t(r - st.r0) * size_t(st.stride);
   const size_t w0 = size_t(r - st.r0) * size_t(st.stride / 64), w1 = w0 + size_t(st.stride / 64);
   // Column -1, everything left of the display, only carries its cover into the row (its sums
   // are zero when untouched).
-  int64_t carry = std::exchange(sums[0], Strip::Sums{0, 0}).cover;  // in units of kOne
+  int64_t carry = std::exchange(sums[0], PixelSums{0, 0}).cover;  // in units of kOne
   st.touched[w0] &= ~uint64_t(1);
   int at = 0;  // columns before it are emitted
-  // The row's words are w0 .. w1 - 1; those in the same summary word as a neighbouring row's
-  // keep that row's bits.
-  for (size_t sw = w0 >> 6; sw <= (w1 - 1) >> 6; ++sw) {
-    const uint64_t from = sw << 6 < w0 ? ~uint64_t(0) << (w0 & 63) : ~uint64_t(0);
-    const uint64_t to = (sw + 1) << 6 > w1 ? ~uint64_t(0) >> (64 - (w1 & 63)) : ~uint64_t(0);
-    uint64_t words = st.touched_words[sw] & from & to;
-    st.touched_words[sw] &= ~words;
-    while (words) {
-      const size_t word = (sw << 6) + size_t(__builtin_ctzll(words));
-      words &= words - 1;
-      uint64_t bits = std::exchange(st.touched[word], 0);
-      while (bits) {
-        const int64_t j = int64_t(word - w0) * 64 + __builtin_ctzll(bits);
-        bits &= bits - 1;
-        const Strip::Sums here = std::exchange(sums[j], Strip::Sums{0, 0});
-        const int col = int(j) - 1;
-        emit(levels(carry * (2 * kOne)), size_t(col - at));
-        emit(levels(carry * (2 * kOne) + here.area), size_t(1));
-        at = col + 1;
-        carry += here.cover;
+  // The touched pixels of word `word` of the row, bits, left to right. (Inlined by force: called
+  // from two loops, GCC 12 otherwise keeps carry and at in memory, 3 % of an SL1S layer.)
+  auto visit = [&](size_t word, uint64_t bits) __attribute__((always_inline)) {
+    while (bits) {
+      const int64_t j = int64_t(word - w0) * 64 + __builtin_ctzll(bits);
+      bits &= bits - 1;
+      const PixelSums here = std::exchange(sums[j], PixelSums{0, 0});
+      const int col = int(j) - 1;
+      emit(levels(carry * (2 * kOne)), size_t(col - at));
+      emit(levels(carry * (2 * kOne) + here.area), size_t(1));
+      at = col + 1;
+      carry += here.cover;
+    }
+  };
+  if constexpr (!Strip::summary) {
+    for (size_t word = w0; word < w1; ++word) {
+      const uint64_t bits = st.touched[word];
+      if (!bits) continue;
+      st.touched[word] = 0;
+      visit(word, bits);
+    }
+  } else {
+    // The row's words are w0 .. w1 - 1; those in the same summary word as a neighbouring row's
+    // keep that row's bits.
+    for (size_t sw = w0 >> 6; sw <= (w1 - 1) >> 6; ++sw) {
+      const uint64_t from = sw << 6 < w0 ? ~uint64_t(0) << (w0 & 63) : ~uint64_t(0);
+      const uint64_t to = (sw + 1) << 6 > w1 ? ~uint64_t(0) >> (64 - (w1 & 63)) : ~uint64_t(0);
+      uint64_t words = st.touched_words[sw] & from & to;
+      st.touched_words[sw] &= ~words;
+      while (words) {
+        const size_t word = (sw << 6) + size_t(__builtin_ctzll(words));
+        words &= words - 1;
+        visit(word, std::exchange(st.touched[word], 0));
       }
     }
   }
@@ -462,34 +495,42 @@ size_t rasterize_coverage(const LayerView& layer, const PrinterProfile& p, Sink&
   // The sweep leaves every sum and bit zero again, so they are cleared only when their size
   // changes or a former call stopped half-way (an exception).
   const size_t pixels = size_t(rows) * size_t(stride);
-  if (!w.clear || w.sums.size() != pixels) {
-    w.sums.assign(pixels, Strip::Sums{0, 0});
+  const size_t summary_words = stride / 64 > kScannedWords ? (pixels / 64 + 63) / 64 : 0;
+  if (!w.clear || w.sums.size() != pixels || w.touched_words.size() != summary_words) {
+    w.sums.assign(pixels, PixelSums{0, 0});
     w.touched.assign(pixels / 64, 0);
-    w.touched_words.assign((pixels / 64 + 63) / 64, 0);
+    w.touched_words.assign(summary_words, 0);
   }
   w.clear = false;
-  for (size_t n = 0; n < strips; ++n) {
-    const size_t i = image.rows_ascend ? strips - 1 - n : n;
-    const int32_t r0 = int32_t(i) * rows;
-    const Strip st{r0, std::min(r0 + rows, H), W, stride, w.sums.data(), w.touched.data(), w.touched_words.data()};
-    if (w.begin[i * kKinds] == w.begin[(i + 1) * kKinds]) {
-      sink.empty_rows(size_t(st.r1 - st.r0));
-      continue;
-    }
-    add_strip_edges(w, i, st);
-    for (int32_t m = 0; m < st.r1 - st.r0; ++m) {
-      const int32_t r = image.rows_ascend ? st.r1 - 1 - m : st.r0 + m;
-      if (!image.columns_descend) {
-        sink.row([&](auto&& pixels) { sweep_row(st, r, w.levels, pixels); });
+  auto sweep_strips = [&](auto summary) {
+    for (size_t n = 0; n < strips; ++n) {
+      const size_t i = image.rows_ascend ? strips - 1 - n : n;
+      const int32_t r0 = int32_t(i) * rows;
+      const Strip<decltype(summary)::value> st{
+          r0, std::min(r0 + rows, H), W, stride, w.sums.data(), w.touched.data(), w.touched_words.data()};
+      if (w.begin[i * kKinds] == w.begin[(i + 1) * kKinds]) {
+        sink.empty_rows(size_t(st.r1 - st.r0));
         continue;
       }
-      w.spans.clear();
-      sweep_row(st, r, w.levels, [&](uint8_t level, size_t count) { w.spans.push_back({level, count}); });
-      sink.row([&](auto&& pixels) {
-        for (size_t q = w.spans.size(); q-- > 0;) pixels(w.spans[q].first, w.spans[q].second);
-      });
+      add_strip_edges(w, i, st);
+      for (int32_t m = 0; m < st.r1 - st.r0; ++m) {
+        const int32_t r = image.rows_ascend ? st.r1 - 1 - m : st.r0 + m;
+        if (!image.columns_descend) {
+          sink.row([&](auto&& pixels) { sweep_row(st, r, w.levels, pixels); });
+          continue;
+        }
+        w.spans.clear();
+        sweep_row(st, r, w.levels, [&](uint8_t level, size_t count) { w.spans.push_back({level, count}); });
+        sink.row([&](auto&& pixels) {
+          for (size_t q = w.spans.size(); q-- > 0;) pixels(w.spans[q].first, w.spans[q].second);
+        });
+      }
     }
-  }
+  };
+  if (summary_words > 0)
+    sweep_strips(std::true_type());
+  else
+    sweep_strips(std::false_type());
   w.clear = true;
   return open;
 }
