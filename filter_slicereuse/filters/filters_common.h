@@ -15,6 +15,7 @@
 #include "slicereuse/slicing/slice_layers.h"
 #include "slicereuse/transfer/encoding_cache.h"
 #include "slicereuse/util/format.h"
+#include "slicereuse/util/seconds_since.h"
 
 namespace slicereuse::plugin {
 
@@ -72,7 +73,5 @@ FileFormat format_for_name(const std::string& path);
 // Checks that every non-empty output path can be written and that no two are the same file,
 // naming the parameter in the error; called before any work is done.
 void check_outputs(const std::vector<std::pair<const char*, std::string>>& named_paths);
-
-double seconds_since(std::chrono::steady_clock::time_point start);
 
 }  // namespace slicereuse::plugin

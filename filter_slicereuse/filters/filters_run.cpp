@@ -52,8 +52,4 @@ void check_outputs(const std::vector<std::pair<const char*, std::string>>& named
   }
 }
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 }  // namespace slicereuse::plugin

@@ -51,6 +51,7 @@
 #include "slicereuse/mesh/mesh_topology.h"
 #include "slicereuse/mesh/vertex_normals.h"
 #include "slicereuse/util/error.h"
+#include "slicereuse/util/seconds_since.h"
 #include "surface_grid.h"
 #include "surface_patches.h"
 
@@ -343,7 +344,7 @@ CrossParamResult cross_parameterize(const Mesh& source, const Mesh& target, cons
     result.target_patch[i] = result.source_patch[source.F[3 * size_t(s.face) + corner]];
   }
   result.registered = std::move(moved);
-  q.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  q.seconds = seconds_since(t0);
   report_progress(progress, 1, "done");
   return result;
 }

@@ -33,6 +33,7 @@
 #include "slicereuse/util/format.h"
 #include "slicereuse/util/ordered_parallel.h"
 #include "slicereuse/util/parallel_blocks.h"
+#include "slicereuse/util/seconds_since.h"
 
 namespace slicereuse {
 namespace {
@@ -398,7 +399,7 @@ MaskExportStats export_stack(Stack& stack, const PrinterProfile& profile, const 
   stats.ignored_open_contours += stack.made_open_contours();
   stats.layers = stack.layers();
   summary.measure_extent(profile, stats);
-  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stats.seconds = seconds_since(start);
   return stats;
 }
 

@@ -14,6 +14,7 @@
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
 #include "slicereuse/util/parallel_blocks.h"
+#include "slicereuse/util/seconds_since.h"
 
 namespace slicereuse {
 namespace {
@@ -57,10 +58,6 @@ std::vector<SlicePart> plate_range(const std::vector<Mesh>& placed, const std::v
 
 constexpr size_t kPointBytes = 3 * sizeof(double);
 constexpr size_t kNotDirect = SIZE_MAX;
-
-double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
 
 // A member's layers sliced directly on a plate made where drawn (MadeWhereDrawn): the planes,
 // their slices once made, and for each of the member's layers its layer there (or kNotDirect).

@@ -66,6 +66,15 @@ bool transfer_layer(const Slices& enc, const Ends& ends, const double* V, size_t
   return good;
 }
 
+// The certificate for point p: its edge still crosses plane zk from corner j below to corner
+// j+1 at or above (V: the vertices ends numbers).
+template <class Ends>
+bool crosses(const Ends& ends, const double* V, size_t p, double zk) {
+  uint32_t ia, ib;
+  ends(p, ia, ib);
+  return (V[3 * size_t(ia) + 2] < zk) & (V[3 * size_t(ib) + 2] >= zk);
+}
+
 // The certificate's second half, and a sample of its first, for layers [a, b) of the target's
 // planes (counts[k]: the target's straddling faces on plane k): 1 where layer k may be
 // transferred, 0 where it must be re-sliced (a layer above the encoding's top has nothing to
@@ -76,15 +85,6 @@ bool transfer_layer(const Slices& enc, const Ends& ends, const double* V, size_t
 // keeps its counts on most layers (its sections only move), so the counts alone let it through
 // to a full transfer that then fails almost everywhere; the sample catches it before any point
 // is transferred. Sampling only rejects layers the full check would reject.
-// The certificate for point p: its edge still crosses plane zk from corner j below to corner
-// j+1 at or above (V: the vertices ends numbers).
-template <class Ends>
-bool crosses(const Ends& ends, const double* V, size_t p, double zk) {
-  uint32_t ia, ib;
-  ends(p, ia, ib);
-  return (V[3 * size_t(ia) + 2] < zk) & (V[3 * size_t(ib) + 2] >= zk);
-}
-
 template <class Ends>
 std::vector<uint8_t> candidate_layers(const Slices& enc, const Ends& ends, const Mesh& target,
                                       const std::vector<uint64_t>& counts, size_t a, size_t b) {
