@@ -4,28 +4,26 @@
 #include <cmath>
 #include <limits>
 
+#include "slicereuse/mesh/vec3.h"
+
 namespace slicereuse {
 namespace {
-
-inline double dot3(const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 // Closest point of triangle (a, b, c) to p (Ericson, Real-Time Collision Detection 5.1.5), as
 // barycentric coordinates.
 void closest_on_triangle(const double* p, const double* a, const double* b, const double* c, double w[3]) {
-  double ab[3], ac[3], ap[3];
-  for (int i = 0; i < 3; ++i) ab[i] = b[i] - a[i], ac[i] = c[i] - a[i], ap[i] = p[i] - a[i];
-  const double d1 = dot3(ab, ap), d2 = dot3(ac, ap);
+  const Vec3 ab = sub(b, a), ac = sub(c, a), ap = sub(p, a);
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
   if (d1 <= 0 && d2 <= 0) return void((w[0] = 1, w[1] = 0, w[2] = 0));
-  double bp[3], cp[3];
-  for (int i = 0; i < 3; ++i) bp[i] = p[i] - b[i], cp[i] = p[i] - c[i];
-  const double d3 = dot3(ab, bp), d4 = dot3(ac, bp);
+  const Vec3 bp = sub(p, b), cp = sub(p, c);
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
   if (d3 >= 0 && d4 <= d3) return void((w[0] = 0, w[1] = 1, w[2] = 0));
   const double vc = d1 * d4 - d3 * d2;
   if (vc <= 0 && d1 >= 0 && d3 <= 0) {
     const double v = d1 / (d1 - d3);
     return void((w[0] = 1 - v, w[1] = v, w[2] = 0));
   }
-  const double d5 = dot3(ab, cp), d6 = dot3(ac, cp);
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
   if (d6 >= 0 && d5 <= d6) return void((w[0] = 0, w[1] = 0, w[2] = 1));
   const double vb = d5 * d2 - d1 * d6;
   if (vb <= 0 && d2 >= 0 && d6 <= 0) {
@@ -59,22 +57,12 @@ SurfaceGrid::SurfaceGrid(const Mesh& mesh, double cell_size) : mesh_(mesh) {
                           V + 3 * size_t(mesh.F[3 * f + 2])};
     zlo_[f] = std::min({p[0][2], p[1][2], p[2][2]});
     zhi_[f] = std::max({p[0][2], p[1][2], p[2][2]});
-    double e1[3], e2[3];
-    for (int a = 0; a < 3; ++a) {
-      e1[a] = p[1][a] - p[0][a], e2[a] = p[2][a] - p[0][a];
+    for (int a = 0; a < 3; ++a)
       for (int j = 0; j < 3; ++j) lo_[a] = std::min(lo_[a], p[j][a]), hi[a] = std::max(hi[a], p[j][a]);
-    }
-    double* n = &normal_[3 * f];
-    n[0] = e1[1] * e2[2] - e1[2] * e2[1];
-    n[1] = e1[2] * e2[0] - e1[0] * e2[2];
-    n[2] = e1[0] * e2[1] - e1[1] * e2[0];
-    const double len = std::sqrt(dot3(n, n));
-    for (int a = 0; a < 3; ++a) n[a] = len > 0 ? n[a] / len : 0;
-    for (int j = 0; j < 3; ++j) {
-      const double* q = p[(j + 1) % 3];
-      edge_sum += std::sqrt((q[0] - p[j][0]) * (q[0] - p[j][0]) + (q[1] - p[j][1]) * (q[1] - p[j][1]) +
-                            (q[2] - p[j][2]) * (q[2] - p[j][2]));
-    }
+    const Vec3 n = cross(sub(p[1], p[0]), sub(p[2], p[0]));
+    const double len = norm(n);
+    for (int a = 0; a < 3; ++a) normal_[3 * f + a] = len > 0 ? n[a] / len : 0;
+    for (int j = 0; j < 3; ++j) edge_sum += std::sqrt(squared_distance(p[(j + 1) % 3], p[j]));
   }
   mean_edge_ = edge_sum / double(3 * nf);
   const double extent = std::max({hi[0] - lo_[0], hi[1] - lo_[1], hi[2] - lo_[2], 1e-9});
@@ -153,7 +141,7 @@ SurfacePoint SurfaceGrid::nearest_on_level(const double p[3], double z, const do
   const double* V = mesh_.V.data();
   auto test_face = [&](uint32_t f) {
     if (z < zlo_[f] || z > zhi_[f]) return;
-    if (normal && dot3(&normal_[3 * size_t(f)], normal) < min_dot) return;
+    if (normal && dot(&normal_[3 * size_t(f)], normal) < min_dot) return;
     const uint32_t* F = &mesh_.F[3 * size_t(f)];
     const double* v[3] = {V + 3 * size_t(F[0]), V + 3 * size_t(F[1]), V + 3 * size_t(F[2])};
     // The face's section by the plane: corners on it and strict edge crossings.
@@ -221,14 +209,14 @@ SurfacePoint SurfaceGrid::nearest_on_surface(const double p[3], const double* no
   cell_of(p, c);
   const double* V = mesh_.V.data();
   auto test_face = [&](uint32_t f) {
-    if (normal && dot3(&normal_[3 * size_t(f)], normal) < min_dot) return;
+    if (normal && dot(&normal_[3 * size_t(f)], normal) < min_dot) return;
     const uint32_t* F = &mesh_.F[3 * size_t(f)];
     const double* v[3] = {V + 3 * size_t(F[0]), V + 3 * size_t(F[1]), V + 3 * size_t(F[2])};
     double w[3], x[3] = {0, 0, 0};
     closest_on_triangle(p, v[0], v[1], v[2], w);
     for (int j = 0; j < 3; ++j)
       for (int a = 0; a < 3; ++a) x[a] += w[j] * v[j][a];
-    const double d2 = (x[0] - p[0]) * (x[0] - p[0]) + (x[1] - p[1]) * (x[1] - p[1]) + (x[2] - p[2]) * (x[2] - p[2]);
+    const double d2 = squared_distance(x, p);
     if (d2 < best_d2) {
       best_d2 = d2;
       best.face = f;

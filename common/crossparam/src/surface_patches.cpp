@@ -5,16 +5,15 @@
 #include <limits>
 #include <queue>
 
+#include "slicereuse/mesh/vec3.h"
+
 namespace slicereuse {
 
 std::vector<uint32_t> surface_patches(const Mesh& mesh, size_t count,
                                       const std::vector<std::array<double, 3>>& first_seeds) {
   const size_t nv = mesh.vertices();
   const double* V = mesh.V.data();
-  auto d2 = [&](size_t i, const double* p) {
-    const double* v = V + 3 * i;
-    return (v[0] - p[0]) * (v[0] - p[0]) + (v[1] - p[1]) * (v[1] - p[1]) + (v[2] - p[2]) * (v[2] - p[2]);
-  };
+  auto d2 = [&](size_t i, const double* p) { return squared_distance(V + 3 * i, p); };
   count = std::max<size_t>(1, std::min(count, nv));
   std::vector<uint32_t> seeds;
   std::vector<double> nearest(nv, std::numeric_limits<double>::infinity());

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "slicereuse/mesh/mesh_topology.h"
+#include "slicereuse/mesh/vec3.h"
 #include "slicereuse/util/format.h"
 
 namespace slicereuse {
@@ -41,9 +42,7 @@ MeshDefects find_mesh_defects(const Mesh& mesh) {
     const double* a = V + 3 * size_t(c[0]);
     const double* b = V + 3 * size_t(c[1]);
     const double* e = V + 3 * size_t(c[2]);
-    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-    const double w[3] = {e[0] - a[0], e[1] - a[1], e[2] - a[2]};
-    const double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+    const Vec3 n = cross(sub(b, a), sub(e, a));
     if (n[0] == 0 && n[1] == 0 && n[2] == 0) count(d.zero_area_faces, d.first_zero_area_face, f);
   }
   std::sort(faces.begin(), faces.end());

@@ -1,6 +1,6 @@
 #include "slicereuse/mesh/vertex_normals.h"
 
-#include <cmath>
+#include "slicereuse/mesh/vec3.h"
 
 namespace slicereuse {
 
@@ -10,14 +10,13 @@ std::vector<double> vertex_normals(const std::vector<double>& V, const std::vect
     const double* a = &V[3 * size_t(F[f])];
     const double* b = &V[3 * size_t(F[f + 1])];
     const double* c = &V[3 * size_t(F[f + 2])];
-    const double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
     // The cross product's length is twice the area: summing it weights by area.
-    const double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+    const Vec3 n = cross(sub(b, a), sub(c, a));
     for (int j = 0; j < 3; ++j)
       for (int k = 0; k < 3; ++k) N[3 * size_t(F[f + j]) + k] += n[k];
   }
   for (size_t i = 0; i < N.size(); i += 3) {
-    const double len = std::sqrt(N[i] * N[i] + N[i + 1] * N[i + 1] + N[i + 2] * N[i + 2]);
+    const double len = norm(&N[i]);
     if (len > 0)
       for (int k = 0; k < 3; ++k) N[i + k] /= len;
   }
