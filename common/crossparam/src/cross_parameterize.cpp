@@ -49,6 +49,7 @@
 #include "lattice_registration.h"
 #include "slicereuse/mesh/fingerprint.h"
 #include "slicereuse/mesh/mesh_topology.h"
+#include "slicereuse/mesh/vec3.h"
 #include "slicereuse/mesh/vertex_normals.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/seconds_since.h"
@@ -61,9 +62,9 @@ namespace {
 constexpr size_t kPatches = 12;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kPi = 3.14159265358979323846;
-// A vertex normal with at least this horizontal length faces sideways (see place()).
+// A vertex normal with at least this horizontal length faces sideways (see ImagePlacer::place).
 constexpr double kSideways = 0.3;
-// Untangling (see cross_parameterize): at most this many passes, and this many placements of a
+// Untangling (see untangle): at most this many passes, and this many placements of a
 // vertex on its level set before it takes the nearest surface point instead.
 constexpr int kUntanglePasses = 64;
 constexpr int kLevelTries = 8;
@@ -106,36 +107,31 @@ std::vector<std::array<double, 3>> snapped(const std::vector<std::array<double, 
 }
 
 // Half the cross product's length; n receives the cross product.
-double cross_area(const double* const p[3], double n[3]) {
-  double u[3], v[3];
-  for (int k = 0; k < 3; ++k) u[k] = p[1][k] - p[0][k], v[k] = p[2][k] - p[0][k];
-  n[0] = u[1] * v[2] - u[2] * v[1], n[1] = u[2] * v[0] - u[0] * v[2], n[2] = u[0] * v[1] - u[1] * v[0];
-  return std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) / 2;
+double cross_area(const double* const p[3], Vec3& n) {
+  n = cross(sub(p[1], p[0]), sub(p[2], p[0]));
+  return norm(n) / 2;
 }
 
 double angle(const double* a, const double* b, const double* c) {  // at a
-  double u[3], v[3];
-  for (int k = 0; k < 3; ++k) u[k] = b[k] - a[k], v[k] = c[k] - a[k];
-  const double cr[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-  return std::atan2(std::sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]), u[0] * v[0] + u[1] * v[1] + u[2] * v[2]);
+  const Vec3 u = sub(b, a), v = sub(c, a);
+  return std::atan2(norm(cross(u, v)), dot(u, v));
 }
 
 // Whether the image of source face f is folded over: its normal points against the normal of
 // the registered source triangle (`moved`) it stands for, or it has no area. -1 for a
 // degenerate registered triangle, which has no orientation to keep. Why the registered
 // triangle: the registration is a smooth displacement field that keeps every triangle's
-// orientation; only the projection onto the target can fold. (Comparing with the target face
-// nearest to the image's centroid, as before, miscounts long thin triangles over a tight bend:
-// at the arch's end-cap poles that centroid lies nearer the wall's other side, and the true
-// deformation itself scored 3-19 "flips" there.)
+// orientation; only the projection onto the target can fold. (The target face nearest to the
+// image's centroid would miscount long thin triangles over a tight bend, such as the arch's
+// end-cap poles, where that centroid lies nearer the wall's other side.)
 int folded(const Mesh& source, const std::vector<double>& moved, const std::vector<double>& image, size_t f) {
   const uint32_t* F = &source.F[3 * f];
   const double* r[3] = {&moved[3 * size_t(F[0])], &moved[3 * size_t(F[1])], &moved[3 * size_t(F[2])]};
   const double* m[3] = {&image[3 * size_t(F[0])], &image[3 * size_t(F[1])], &image[3 * size_t(F[2])]};
-  double nr[3], ni[3];
+  Vec3 nr, ni;
   if (cross_area(r, nr) == 0) return -1;
   cross_area(m, ni);
-  return !(ni[0] * nr[0] + ni[1] * nr[1] + ni[2] * nr[2] > 0);
+  return !(dot(ni, nr) > 0);
 }
 
 // Height error, folded triangles, area and angle distortion of the map (image: 3 per vertex).
@@ -164,7 +160,7 @@ void measure(const Mesh& source, const std::vector<double>& moved, const std::ve
       ++flipped;
       continue;
     }
-    double ns[3], ni[3];
+    Vec3 ns, ni;
     const double as = cross_area(s, ns), ai = cross_area(m, ni);
     area_sum += std::abs(std::log(ai / as));
     for (int j = 0; j < 3; ++j)
@@ -175,72 +171,82 @@ void measure(const Mesh& source, const std::vector<double>& moved, const std::ve
   q.angle_distortion = measured ? angle_sum / double(3 * measured) * 180 / kPi : 0;
 }
 
-}  // namespace
-
-CrossParamResult cross_parameterize(const Mesh& source, const Mesh& target, const CrossParamOptions& options,
-                                    const Progress& progress) {
-  const auto t0 = std::chrono::steady_clock::now();
-  CrossParamResult result;
-  CrossParamQuality& q = result.quality;
-  const bool in_plane = options.in_plane;
-  report_progress(progress, 0, "checking");
-  check_topology(source, target, q);
-  if (options.source_landmarks.size() != options.target_landmarks.size())
-    throw Error("cross-parameterization: " + num(int64_t(options.source_landmarks.size())) + " source and " +
+void check_landmark_counts(const CrossParamOptions& options) {
+  const size_t n = options.source_landmarks.size();
+  if (n != options.target_landmarks.size())
+    throw Error("cross-parameterization: " + num(int64_t(n)) + " source and " +
                 num(int64_t(options.target_landmarks.size())) + " target landmarks; they must correspond one to one");
-  const bool landmarks = !options.source_landmarks.empty();
-  if (landmarks && options.source_landmarks.size() < 3)
-    throw Error("cross-parameterization: at least 3 landmark pairs are needed, got " +
-                num(int64_t(options.source_landmarks.size())));
+  if (n > 0 && n < 3)
+    throw Error("cross-parameterization: at least 3 landmark pairs are needed, got " + num(int64_t(n)));
+}
 
-  const SurfaceGrid grid(target);
-  report_progress(progress, 0.1, "aligning");
+// The source aligned to the target: with landmarks, warped by the LandmarkWarp between their
+// snapped positions, which then also pull the registration as point constraints; without, as it
+// is, since family members sit on the same build plate.
+struct Alignment {
+  std::vector<double> V;                             // 3 per source vertex
+  std::vector<PointConstraint> constraints;          // warped source landmark -> target landmark
+  std::vector<std::array<double, 3>> source_marks;  // the snapped source landmarks
+};
+
+Alignment align(const Mesh& source, const SurfaceGrid& grid, const CrossParamOptions& options) {
+  Alignment out{source.V, {}, {}};
+  if (options.source_landmarks.empty()) return out;
+  out.source_marks = snapped(options.source_landmarks, SurfaceGrid(source));
+  const std::vector<std::array<double, 3>> target_marks = snapped(options.target_landmarks, grid);
+  const LandmarkWarp warp(out.source_marks, target_marks, options.in_plane);
   const size_t nv = source.vertices();
-  std::vector<double> aligned = source.V;
-  std::vector<PointConstraint> constraints;
-  std::vector<std::array<double, 3>> source_marks;
-  if (landmarks) {
-    source_marks = snapped(options.source_landmarks, SurfaceGrid(source));
-    const std::vector<std::array<double, 3>> target_marks = snapped(options.target_landmarks, grid);
-    const LandmarkWarp warp(source_marks, target_marks, in_plane);
 #pragma omp parallel for schedule(static)
-    for (long long i = 0; i < (long long)nv; ++i) warp.apply(&source.V[3 * i], &aligned[3 * i]);
-    for (size_t k = 0; k < source_marks.size(); ++k) {
-      PointConstraint c;
-      warp.apply(source_marks[k].data(), c.source.data());
-      c.target = target_marks[k];
-      if (in_plane) c.target[2] = c.source[2];
-      constraints.push_back(c);
-    }
+  for (long long i = 0; i < (long long)nv; ++i) warp.apply(&source.V[3 * i], &out.V[3 * i]);
+  for (size_t k = 0; k < out.source_marks.size(); ++k) {
+    PointConstraint c;
+    warp.apply(out.source_marks[k].data(), c.source.data());
+    c.target = target_marks[k];
+    if (options.in_plane) c.target[2] = c.source[2];
+    out.constraints.push_back(c);
   }
+  return out;
+}
 
-  RegistrationStats reg;
-  const DisplacementField field =
-      register_on_lattice(aligned, source.F, grid, constraints, in_plane, &reg, sub_progress(progress, 0.1, 0.7));
-  report_progress(progress, 0.7, "projecting");
-  std::vector<double> moved(3 * nv);
+// The aligned source vertices moved by the registration's field.
+std::vector<double> moved_by(const DisplacementField& field, const std::vector<double>& aligned) {
+  std::vector<double> moved(aligned.size());
 #pragma omp parallel for schedule(static)
-  for (long long i = 0; i < (long long)nv; ++i) field.apply(&aligned[3 * i], &moved[3 * i]);
-  const std::vector<double> normal = vertex_normals(moved, source.F);
+  for (long long i = 0; i < (long long)(aligned.size() / 3); ++i) field.apply(&aligned[3 * i], &moved[3 * i]);
+  return moved;
+}
 
-  SurfaceMap& map = result.map;
+// A map from source to target with room for every source vertex's image.
+SurfaceMap empty_map(const Mesh& source, const Mesh& target) {
+  SurfaceMap map;
   map.source = mesh_fingerprint(source);
   map.target = mesh_fingerprint(target);
-  map.source_vertices = nv;
+  map.source_vertices = source.vertices();
   map.target_vertices = target.vertices();
   map.source_faces = source.F;
-  map.face.resize(nv);
-  map.bary.resize(3 * nv);
-  std::vector<double> image(3 * nv);
+  map.face.resize(source.vertices());
+  map.bary.resize(3 * source.vertices());
+  return map;
+}
+
+// Places source vertices' images on the target: face and barycentric coordinates into the map,
+// the point into image (3 per vertex).
+struct ImagePlacer {
+  const SurfaceGrid& grid;
+  std::vector<double> normal;  // of the registered source, 3 per vertex
+  bool in_plane;
   // A level-set point is taken when it is at most this much farther than the nearest surface
   // point: on walls the two coincide; where they differ by more, the target has no level set
   // near this height here (a lower ridge top) and the nearest point wins.
-  const double tolerance = 2 * grid.mean_edge();
-  const double reach = std::max(10 * reg.rms, 10 * grid.mean_edge());
+  double tolerance;
+  double reach;  // farthest image sought facing the same way
+  SurfaceMap& map;
+  std::vector<double>& image;
+
   // Places source vertex i's image at the target point for p (p's z is the vertex's own height
   // in the plane); false when nothing faces the same way within reach. on_level = false takes
   // the nearest surface point only (the soft height term).
-  auto place = [&](size_t i, const double p[3], bool on_level) {
+  bool place(size_t i, const double p[3], bool on_level) {
     const double* n = &normal[3 * i];
     const bool has_normal = n[0] != 0 || n[1] != 0 || n[2] != 0;
     SurfacePoint best = grid.nearest_on_surface(p, has_normal ? n : nullptr, 0.0, reach);
@@ -259,21 +265,38 @@ CrossParamResult cross_parameterize(const Mesh& source, const Mesh& target, cons
     map.face[i] = best.face;
     for (int j = 0; j < 3; ++j) map.bary[3 * i + j] = best.bary[j], image[3 * i + j] = best.xyz[j];
     return found;
-  };
+  }
+};
+
+ImagePlacer image_placer(const SurfaceGrid& grid, const Mesh& source, const std::vector<double>& moved,
+                         const RegistrationStats& reg, bool in_plane, SurfaceMap& map, std::vector<double>& image) {
+  const double tolerance = 2 * grid.mean_edge(), reach = std::max(10 * reg.rms, 10 * grid.mean_edge());
+  return {grid, vertex_normals(moved, source.F), in_plane, tolerance, reach, map, image};
+}
+
+// Every source vertex's image, from its registered position (at its own height in the plane);
+// returns how many found no target surface facing the same way within reach.
+uint64_t project_vertices(const Mesh& source, const std::vector<double>& moved, ImagePlacer& placer) {
+  const bool in_plane = placer.in_plane;
   uint64_t far = 0;
 #pragma omp parallel for schedule(dynamic, 512) reduction(+ : far)
-  for (long long i = 0; i < (long long)nv; ++i) {
+  for (long long i = 0; i < (long long)source.vertices(); ++i) {
     const double p[3] = {moved[3 * i], moved[3 * i + 1], in_plane ? source.V[3 * i + 2] : moved[3 * i + 2]};
-    far += !place(size_t(i), p, true);
+    far += !placer.place(size_t(i), p, true);
   }
-  // Local untangling: where independent projections of neighbours fold a small triangle over
-  // (tight level-set curves near a saddle such as the arch's end-cap poles), each corner of a
-  // folded triangle is placed again from the mean image of its neighbours (a Laplacian step).
-  // A vertex still folded after kLevelTries placements sits where the target's level set at its
-  // height cannot hold its neighbourhood (a ridge top that reaches that height in one point on
-  // the target, a whole row of vertices on the source): it takes the nearest surface point
-  // instead, the soft height term, and its |dz| is reported as height error.
-  const size_t nf = source.faces();
+  return far;
+}
+
+// Local untangling: where independent projections of neighbours fold a small triangle over
+// (tight level-set curves near a saddle such as the arch's end-cap poles), each corner of a
+// folded triangle is placed again from the mean image of its neighbours (a Laplacian step).
+// A vertex still folded after kLevelTries placements sits where the target's level set at its
+// height cannot hold its neighbourhood (a ridge top that reaches that height in one point on
+// the target, a whole row of vertices on the source): it takes the nearest surface point
+// instead, the soft height term, and its |dz| is reported as height error.
+void untangle(const Mesh& source, const std::vector<double>& moved, ImagePlacer& placer) {
+  const std::vector<double>& image = placer.image;
+  const size_t nv = source.vertices(), nf = source.faces();
   // After the first pass only faces around moved vertices can change: only they are checked.
   std::vector<uint8_t> bad(nf), moved_vertex(nv, 1), tries(nv, 0);
   for (int pass = 0; pass < kUntanglePasses; ++pass) {
@@ -309,26 +332,29 @@ CrossParamResult cross_parameterize(const Mesh& source, const Mesh& target, cons
       const size_t v = touched[k];
       double p[3];
       for (int a = 0; a < 3; ++a) p[a] = sum[3 * v + a] / count[v];
-      if (in_plane) p[2] = source.V[3 * v + 2];
-      place(v, p, ++tries[v] < kLevelTries);
+      if (placer.in_plane) p[2] = source.V[3 * v + 2];
+      placer.place(v, p, ++tries[v] < kLevelTries);
     }
   }
+}
 
-  report_progress(progress, 0.8, "measuring");
-  measure(source, moved, image, q);
-  // Without landmarks nothing but the registration vouches for the correspondence: refuse a
-  // result where much of the source found no matching surface or the image folds over.
-  const double far_share = double(far) / double(std::max<size_t>(1, nv));
-  if (!landmarks && (reg.matched < 0.9 || far_share > 0.02 || q.flipped_triangles * 100 > source.faces()))
+// Without landmarks nothing but the registration vouches for the correspondence: refuses a
+// result where much of the source found no matching surface or the image folds over.
+void refuse_unregistered(const Mesh& source, const RegistrationStats& reg, uint64_t far, const CrossParamQuality& q) {
+  const double far_share = double(far) / double(std::max<size_t>(1, source.vertices()));
+  if (reg.matched < 0.9 || far_share > 0.02 || q.flipped_triangles * 100 > source.faces())
     throw Error("cross-parameterization: the meshes could not be registered automatically (" +
                 std::to_string(int(std::lround(100 * (1 - reg.matched)))) +
                 " % of the source found no matching target surface, " + num(int64_t(q.flipped_triangles)) +
                 " folded triangles); give corresponding landmarks (.pp files picked in MeshLab) for both meshes");
+}
 
-  report_progress(progress, 0.9, "patches");
-  result.source_patch = surface_patches(source, kPatches, source_marks);
-  q.patches = *std::max_element(result.source_patch.begin(), result.source_patch.end()) + 1;
-  // A target vertex takes the patch of the source triangle whose image is nearest to it.
+// About kPatches patches on the source (seeded at the landmarks first); a target vertex takes
+// the patch of the source triangle whose image is nearest to it.
+void colour_patches(const Mesh& source, const Mesh& target, const std::vector<double>& image,
+                    const std::vector<std::array<double, 3>>& seeds, CrossParamResult& result) {
+  result.source_patch = surface_patches(source, kPatches, seeds);
+  result.quality.patches = *std::max_element(result.source_patch.begin(), result.source_patch.end()) + 1;
   Mesh image_mesh;
   image_mesh.V = image;
   image_mesh.F = source.F;
@@ -343,8 +369,41 @@ CrossParamResult cross_parameterize(const Mesh& source, const Mesh& target, cons
     const int corner = int(std::max_element(s.bary, s.bary + 3) - s.bary);
     result.target_patch[i] = result.source_patch[source.F[3 * size_t(s.face) + corner]];
   }
+}
+
+}  // namespace
+
+CrossParamResult cross_parameterize(const Mesh& source, const Mesh& target, const CrossParamOptions& options,
+                                    const Progress& progress) {
+  const auto t0 = std::chrono::steady_clock::now();
+  CrossParamResult result;
+  report_progress(progress, 0, "checking");
+  check_topology(source, target, result.quality);
+  check_landmark_counts(options);
+
+  const SurfaceGrid grid(target);
+  report_progress(progress, 0.1, "aligning");
+  const Alignment aligned = align(source, grid, options);
+  RegistrationStats reg;
+  const DisplacementField field = register_on_lattice(aligned.V, source.F, grid, aligned.constraints, options.in_plane,
+                                                      &reg, sub_progress(progress, 0.1, 0.7));
+
+  report_progress(progress, 0.7, "projecting");
+  std::vector<double> moved = moved_by(field, aligned.V);
+  result.map = empty_map(source, target);
+  std::vector<double> image(3 * source.vertices());
+  ImagePlacer placer = image_placer(grid, source, moved, reg, options.in_plane, result.map, image);
+  const uint64_t far = project_vertices(source, moved, placer);
+  untangle(source, moved, placer);
+
+  report_progress(progress, 0.8, "measuring");
+  measure(source, moved, image, result.quality);
+  if (options.source_landmarks.empty()) refuse_unregistered(source, reg, far, result.quality);
+
+  report_progress(progress, 0.9, "patches");
+  colour_patches(source, target, image, aligned.source_marks, result);
   result.registered = std::move(moved);
-  q.seconds = seconds_since(t0);
+  result.quality.seconds = seconds_since(t0);
   report_progress(progress, 1, "done");
   return result;
 }
