@@ -130,6 +130,183 @@ Spot best_spot(const PlateGrid& g, const std::vector<Pose>& poses) {
   return best;
 }
 
+void check_options(const std::vector<const Mesh*>& members, const std::vector<std::string>& names,
+                   const ArrangeOptions& o) {
+  if (names.size() != members.size())
+    throw Error(format("arrangement: %zu names for %zu members", names.size(), members.size()));
+  if (!(o.spacing_mm >= 0) || !std::isfinite(o.spacing_mm))
+    throw Error(format("spacing %g mm is not a number >= 0", o.spacing_mm));
+  if (!(o.cell_mm > 0) || !std::isfinite(o.cell_mm) || o.cell_mm > 10)
+    throw Error(format("footprint cell size %g mm is not within (0, 10] mm", o.cell_mm));
+  if (!(o.rotation_step_deg > 0) || !(o.rotation_step_deg <= 360))
+    throw Error(format("rotation step %g degrees is not within (0, 360]", o.rotation_step_deg));
+}
+
+// A plate's grid of cells: the platform inside the spacing from its edges.
+struct GridFrame {
+  double usable_w, usable_h;  // mm
+  int width, height;          // cells
+  double x0, y0;              // the first cell's corner in model coordinates
+};
+
+GridFrame grid_frame(const Platform& platform, const ArrangeOptions& o) {
+  GridFrame g;
+  g.usable_w = platform.x1 - platform.x0 - 2 * o.spacing_mm;
+  g.usable_h = platform.y1 - platform.y0 - 2 * o.spacing_mm;
+  g.width = int(std::floor(g.usable_w / o.cell_mm)), g.height = int(std::floor(g.usable_h / o.cell_mm));
+  if (!(g.usable_w > 0) || !(g.usable_h > 0) || g.width < 1 || g.height < 1)
+    throw Error(format("the platform (%g x %g mm) leaves no room inside a spacing of %g mm from its edges",
+                       platform.x1 - platform.x0, platform.y1 - platform.y0, o.spacing_mm));
+  g.x0 = platform.x0 + o.spacing_mm, g.y0 = platform.y0 + o.spacing_mm;
+  return g;
+}
+
+// The rotations tried, k * step for k = 0, 1, ... below 360 degrees.
+std::vector<double> rotations(double step_deg) {
+  std::vector<double> thetas;
+  for (int k = 0; k * step_deg < 360 - 1e-9; ++k) thetas.push_back(k * step_deg);
+  return thetas;
+}
+
+void check_meshes(const std::vector<const Mesh*>& members, const std::vector<std::string>& names) {
+  for (size_t m = 0; m < members.size(); ++m) {
+    try {
+      validate_mesh(*members[m]);
+    } catch (const Error& e) {
+      throw Error("member '" + names[m] + "': " + e.what());
+    }
+  }
+}
+
+// Each member's footprint at 0 degrees (kept for its first pose) and its cells. Every member
+// must fit an empty plate at some rotation, refused before anything is placed; members are
+// looked at on all cores, and the first refused, in their order, is named.
+struct Unturned {
+  std::vector<Footprint> footprint;
+  std::vector<size_t> cells;
+};
+
+Unturned unturned_footprints(const std::vector<const Mesh*>& members, const std::vector<std::string>& names,
+                             const std::vector<double>& thetas, const Platform& platform, const GridFrame& grid,
+                             const ArrangeOptions& o, const Progress& progress) {
+  const size_t n = members.size();
+  std::vector<uint8_t> fits(n, 0);
+  Unturned out{std::vector<Footprint>(n), std::vector<size_t>(n)};
+  parallel_blocks(
+      n,
+      [&](size_t m) {
+        const std::vector<double> points = plan_points(*members[m]);
+        for (double theta : thetas) {
+          const FootprintExtent e = footprint_extent(points, theta, o.cell_mm);
+          fits[m] |= e.width <= grid.width && e.height <= grid.height;
+        }
+        if (!fits[m]) return;
+        out.footprint[m] = mesh_footprint(*members[m], points, 0, o.cell_mm);
+        out.cells[m] = out.footprint[m].marked();
+      },
+      progress, "arranging");
+  for (size_t m = 0; m < n; ++m)
+    if (!fits[m]) {
+      const FootprintExtent e = footprint_extent(plan_points(*members[m]), 0, o.cell_mm);
+      throw Error(format("member '%s' (%.2f x %.2f mm seen from above) fits the platform at no rotation: the "
+                         "platform is %.2f x %.2f mm, %.2f x %.2f mm inside the spacing of %g mm from its edges",
+                         names[m].c_str(), e.size_x_mm, e.size_y_mm, platform.x1 - platform.x0,
+                         platform.y1 - platform.y0, grid.usable_w, grid.usable_h, o.spacing_mm));
+    }
+  return out;
+}
+
+// Largest footprint first: large members find room on an empty plate, small ones fill gaps.
+std::vector<size_t> largest_first(const std::vector<size_t>& cells) {
+  std::vector<size_t> order(cells.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return cells[a] > cells[b]; });
+  return order;
+}
+
+// How each rotation's footprint is made: a rotation a half or a quarter turn past one already
+// made turns that footprint's cells instead of rasterizing the mesh again; every member's
+// footprints are made in the same stages, each from the one before (stage 0: rasterized).
+struct TurnSource {
+  size_t from = SIZE_MAX;  // SIZE_MAX: rasterized
+  bool half = false;
+  size_t stage = 0;
+};
+
+struct TurnPlan {
+  std::vector<TurnSource> source;                // per rotation
+  std::vector<std::vector<size_t>> made_in_stage;  // rotations per stage
+};
+
+TurnPlan turn_plan(const std::vector<double>& thetas) {
+  TurnPlan plan{std::vector<TurnSource>(thetas.size()), std::vector<std::vector<size_t>>(1)};
+  std::vector<TurnSource>& source = plan.source;
+  for (size_t k = 0; k < thetas.size(); ++k) {
+    for (size_t r = 0; r < k && source[k].from == SIZE_MAX; ++r)
+      for (const bool half : {true, false})
+        if (source[k].from == SIZE_MAX && thetas[k] == thetas[r] + (half ? 180 : 90))
+          source[k] = {r, half, source[r].stage + 1};
+    if (source[k].stage == plan.made_in_stage.size()) plan.made_in_stage.emplace_back();
+    plan.made_in_stage[source[k].stage].push_back(k);
+  }
+  return plan;
+}
+
+// A member's poses at every rotation that fits an empty plate (the others are no candidates
+// anywhere), made stage by stage as the plan says.
+std::vector<Pose> member_poses(const Mesh& member, Footprint unturned, const std::vector<double>& thetas,
+                               const TurnPlan& plan, const GridFrame& grid, const ArrangeOptions& o,
+                               const Progress& progress) {
+  std::vector<Pose> poses(thetas.size());
+  auto pose = [&](size_t k) {
+    Pose& p = poses[k];
+    p.theta_deg = thetas[k];
+    const Footprint near = dilate_footprint(p.footprint, o.spacing_mm);
+    p.marked = runs_of(p.footprint);
+    p.near = runs_of(near);
+    p.margin = near.margin;
+    p.cells = p.footprint.marked();
+  };
+  const std::vector<double> points = plan_points(member);
+  const size_t stages = plan.made_in_stage.size();
+  for (size_t stage = 0; stage < stages; ++stage) {
+    const std::vector<size_t>& made = plan.made_in_stage[stage];
+    parallel_blocks(
+        made.size(),
+        [&](size_t i) {
+          const size_t k = made[i];
+          const TurnSource& from = plan.source[k];
+          poses[k].footprint = thetas[k] == 0         ? std::move(unturned)
+                               : from.from == SIZE_MAX ? mesh_footprint(member, points, thetas[k], o.cell_mm)
+                               : from.half             ? half_turn_footprint(poses[from.from].footprint)
+                                                       : quarter_turn_footprint(poses[from.from].footprint);
+          pose(k);
+        },
+        sub_progress(progress, double(stage) / double(stages), double(stage + 1) / double(stages)), "arranging");
+  }
+  auto too_large = [&](const Pose& p) { return p.footprint.width > grid.width || p.footprint.height > grid.height; };
+  poses.erase(std::remove_if(poses.begin(), poses.end(), too_large), poses.end());
+  return poses;
+}
+
+// Where a member goes: the first plate with room for one of its poses, else a new plate;
+// `plate` receives the plate's index, and the plate holds the member's cells.
+Spot place_member(std::vector<PlateGrid>& plates, const std::vector<Pose>& poses, const GridFrame& grid,
+                  const std::string& name, size_t& plate) {
+  Spot spot;
+  size_t k = 0;
+  for (; k < plates.size(); ++k)
+    if ((spot = best_spot(plates[k], poses)).found()) break;
+  if (!spot.found()) {
+    plates.emplace_back(grid.width, grid.height);
+    spot = best_spot(plates[k], poses);
+    if (!spot.found()) throw Error(format("member '%s' found no place on an empty plate", name.c_str()));
+  }
+  plates[k].hold(poses[spot.pose], spot.x, spot.y);
+  plate = k;
+  return spot;
+}
+
 }  // namespace
 
 Platform printer_platform(const PrinterProfile& p) {
@@ -140,138 +317,31 @@ Platform printer_platform(const PrinterProfile& p) {
 
 Arrangement arrange_plates(const std::vector<const Mesh*>& members, const std::vector<std::string>& names,
                            const Platform& platform, const ArrangeOptions& o, const Progress& progress) {
-  if (names.size() != members.size())
-    throw Error(format("arrangement: %zu names for %zu members", names.size(), members.size()));
-  if (!(o.spacing_mm >= 0) || !std::isfinite(o.spacing_mm))
-    throw Error(format("spacing %g mm is not a number >= 0", o.spacing_mm));
-  if (!(o.cell_mm > 0) || !std::isfinite(o.cell_mm) || o.cell_mm > 10)
-    throw Error(format("footprint cell size %g mm is not within (0, 10] mm", o.cell_mm));
-  if (!(o.rotation_step_deg > 0) || !(o.rotation_step_deg <= 360))
-    throw Error(format("rotation step %g degrees is not within (0, 360]", o.rotation_step_deg));
-  const double usable_w = platform.x1 - platform.x0 - 2 * o.spacing_mm;
-  const double usable_h = platform.y1 - platform.y0 - 2 * o.spacing_mm;
-  const int grid_w = int(std::floor(usable_w / o.cell_mm)), grid_h = int(std::floor(usable_h / o.cell_mm));
-  if (!(usable_w > 0) || !(usable_h > 0) || grid_w < 1 || grid_h < 1)
-    throw Error(format("the platform (%g x %g mm) leaves no room inside a spacing of %g mm from its edges",
-                       platform.x1 - platform.x0, platform.y1 - platform.y0, o.spacing_mm));
-  const double gx = platform.x0 + o.spacing_mm, gy = platform.y0 + o.spacing_mm;
-  std::vector<double> thetas;
-  for (int k = 0; k * o.rotation_step_deg < 360 - 1e-9; ++k) thetas.push_back(k * o.rotation_step_deg);
+  check_options(members, names, o);
+  const GridFrame grid = grid_frame(platform, o);
+  const std::vector<double> thetas = rotations(o.rotation_step_deg);
+  check_meshes(members, names);
+  Unturned unturned = unturned_footprints(members, names, thetas, platform, grid, o, sub_progress(progress, 0, 0.1));
+  const std::vector<size_t> order = largest_first(unturned.cells);
+  const TurnPlan plan = turn_plan(thetas);
 
-  // Every member must be a mesh and fit an empty plate at some rotation; refused before
-  // anything is placed. Members are looked at on all cores; the first refused, in their order,
-  // is named.
   const size_t n = members.size();
-  for (size_t m = 0; m < n; ++m) {
-    try {
-      validate_mesh(*members[m]);
-    } catch (const Error& e) {
-      throw Error("member '" + names[m] + "': " + e.what());
-    }
-  }
-  std::vector<uint8_t> fits(n, 0);
-  std::vector<Footprint> unturned(n);  // each member's footprint at 0 degrees, kept for its first pose
-  std::vector<size_t> area(n);         // its cells
-  const Progress checking = sub_progress(progress, 0, 0.1);
-  parallel_blocks(
-      n,
-      [&](size_t m) {
-        const std::vector<double> points = plan_points(*members[m]);
-        for (double theta : thetas) {
-          const FootprintExtent e = footprint_extent(points, theta, o.cell_mm);
-          fits[m] |= e.width <= grid_w && e.height <= grid_h;
-        }
-        if (!fits[m]) return;
-        unturned[m] = mesh_footprint(*members[m], points, 0, o.cell_mm);
-        area[m] = unturned[m].marked();
-      },
-      checking, "arranging");
-  for (size_t m = 0; m < n; ++m)
-    if (!fits[m]) {
-      const FootprintExtent e = footprint_extent(plan_points(*members[m]), 0, o.cell_mm);
-      throw Error(format("member '%s' (%.2f x %.2f mm seen from above) fits the platform at no rotation: the "
-                         "platform is %.2f x %.2f mm, %.2f x %.2f mm inside the spacing of %g mm from its edges",
-                         names[m].c_str(), e.size_x_mm, e.size_y_mm, platform.x1 - platform.x0,
-                         platform.y1 - platform.y0, usable_w, usable_h, o.spacing_mm));
-    }
-
-  // Largest footprint first: large members find room on an empty plate, small ones fill gaps.
-  std::vector<size_t> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return area[a] > area[b]; });
-
-  // A rotation a half or a quarter turn past one already made turns that footprint's cells
-  // instead of rasterizing the mesh again; every member's footprints are made in the same
-  // stages, each from the one before (stage 0: rasterized).
-  struct Source {
-    size_t from = SIZE_MAX;  // SIZE_MAX: rasterized
-    bool half = false;
-    size_t stage = 0;
-  };
-  std::vector<Source> source(thetas.size());
-  std::vector<std::vector<size_t>> made_in_stage(1);
-  for (size_t k = 0; k < thetas.size(); ++k) {
-    for (size_t r = 0; r < k && source[k].from == SIZE_MAX; ++r)
-      for (const bool half : {true, false})
-        if (source[k].from == SIZE_MAX && thetas[k] == thetas[r] + (half ? 180 : 90))
-          source[k] = {r, half, source[r].stage + 1};
-    if (source[k].stage == made_in_stage.size()) made_in_stage.emplace_back();
-    made_in_stage[source[k].stage].push_back(k);
-  }
-
   Arrangement out;
   out.placement.resize(n);
   out.plate.resize(n);
   std::vector<PlateGrid> plates;
   for (size_t done = 0; done < n; ++done) {
     const size_t m = order[done];
-    std::vector<Pose> poses(thetas.size());
-    auto pose = [&](size_t k) {
-      Pose& p = poses[k];
-      p.theta_deg = thetas[k];
-      const Footprint near = dilate_footprint(p.footprint, o.spacing_mm);
-      p.marked = runs_of(p.footprint);
-      p.near = runs_of(near);
-      p.margin = near.margin;
-      p.cells = p.footprint.marked();
-    };
     const Progress member_progress =
         sub_progress(progress, 0.1 + 0.9 * double(done) / double(n), 0.1 + 0.9 * double(done + 1) / double(n));
-    const std::vector<double> points = plan_points(*members[m]);
-    for (size_t stage = 0; stage < made_in_stage.size(); ++stage) {
-      const std::vector<size_t>& made = made_in_stage[stage];
-      parallel_blocks(
-          made.size(),
-          [&](size_t i) {
-            const size_t k = made[i];
-            const Source& from = source[k];
-            poses[k].footprint = thetas[k] == 0         ? std::move(unturned[m])
-                                 : from.from == SIZE_MAX ? mesh_footprint(*members[m], points, thetas[k], o.cell_mm)
-                                 : from.half             ? half_turn_footprint(poses[from.from].footprint)
-                                                         : quarter_turn_footprint(poses[from.from].footprint);
-            pose(k);
-          },
-          sub_progress(member_progress, double(stage) / double(made_in_stage.size()),
-                       double(stage + 1) / double(made_in_stage.size())),
-          "arranging");
-    }
-    // Poses that cannot fit an empty plate are no candidates anywhere.
-    poses.erase(std::remove_if(poses.begin(), poses.end(),
-                               [&](const Pose& p) { return p.footprint.width > grid_w || p.footprint.height > grid_h; }),
-                poses.end());
-    Spot spot;
+    const std::vector<Pose> poses =
+        member_poses(*members[m], std::move(unturned.footprint[m]), thetas, plan, grid, o, member_progress);
     size_t k = 0;
-    for (; k < plates.size(); ++k)
-      if ((spot = best_spot(plates[k], poses)).found()) break;
-    if (!spot.found()) {
-      plates.emplace_back(grid_w, grid_h);
-      out.members.emplace_back();
-      spot = best_spot(plates[k], poses);
-      if (!spot.found()) throw Error(format("member '%s' found no place on an empty plate", names[m].c_str()));
-    }
+    const Spot spot = place_member(plates, poses, grid, names[m], k);
+    if (k == out.members.size()) out.members.emplace_back();
     const Pose& p = poses[spot.pose];
-    plates[k].hold(p, spot.x, spot.y);
-    out.placement[m] = {p.theta_deg, gx + spot.x * o.cell_mm - p.footprint.x0, gy + spot.y * o.cell_mm - p.footprint.y0};
+    out.placement[m] = {p.theta_deg, grid.x0 + spot.x * o.cell_mm - p.footprint.x0,
+                        grid.y0 + spot.y * o.cell_mm - p.footprint.y0};
     out.plate[m] = k;
     out.members[k].push_back(m);
   }
