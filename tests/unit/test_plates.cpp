@@ -29,6 +29,7 @@
 #include "slicereuse/util/format.h"
 #include "slicereuse/slicing/slice_layers.h"
 #include "temp_folder.h"
+#include "test_files.h"
 #include "unsampled_edge.h"
 
 using namespace slicereuse;
@@ -553,6 +554,98 @@ TEST_F(PlateJobTest, CancellingAPlateLeavesNothing) {
 
 class PlateLayoutTest : public test::TempFolderTest {};
 
+namespace {
+
+constexpr uint8_t kBlack = 0, kLightGrey = 215, kWhite = 255;
+
+// Every pixel of a layout picture against the placed members' own projected triangles, as
+// plate_layout.h promises it: column c, row r (from the top) shows the platform at
+// (x0 + (c + 1/2) px, y0 + (height - r - 1/2) px), framed in black. The footprint is
+// conservative and placed to the nearest pixel, so a pixel is light grey only where its 5 x 5
+// neighbours' centres all lie on a member, and white only 4 pixels from every member; black
+// there is a name, in a box of the glyphs' size about the centre of its member's box, and
+// every member's name has some.
+void expect_layout_shows(const std::string& png_path, const std::vector<Mesh>& placed,
+                         const std::vector<std::string>& names, const Platform& platform, double px) {
+  const std::string bytes = test::slurp(png_path);
+  MaskImage img;
+  decode_mask_png(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size(), png_path, img);
+  ASSERT_EQ(img.width, int(std::ceil((platform.x1 - platform.x0) / px)));
+  ASSERT_EQ(img.height, int(std::ceil((platform.y1 - platform.y0) / px)));
+  const int w = img.width, h = img.height, scale = std::max(1, std::min(w, h) / 150);
+  constexpr double kFar = 4;
+  // Distance in pixels (up to kFar) from each pixel's centre to the members' projected triangles.
+  std::vector<double> distance(size_t(w) * h, kFar);
+  std::vector<int> nearest(size_t(w) * h, -1);
+  struct Box {
+    double c0, r0, c1, r1;
+  };
+  std::vector<Box> text;
+  for (size_t m = 0; m < placed.size(); ++m) {
+    const Projected p = project(placed[m]);
+    double bx0 = INFINITY, by0 = INFINITY, bx1 = -INFINITY, by1 = -INFINITY;
+    for (size_t t = 0; t < p.tri.size(); ++t) {
+      const auto& b = p.box[t];
+      bx0 = std::min(bx0, b[0]), by0 = std::min(by0, b[1]), bx1 = std::max(bx1, b[2]), by1 = std::max(by1, b[3]);
+      const int c0 = std::max(0, int(std::floor((b[0] - platform.x0) / px - kFar))),
+                c1 = std::min(w - 1, int(std::ceil((b[2] - platform.x0) / px + kFar))),
+                r0 = std::max(0, int(std::floor(h - (b[3] - platform.y0) / px - kFar))),
+                r1 = std::min(h - 1, int(std::ceil(h - (b[1] - platform.y0) / px + kFar)));
+      for (int r = r0; r <= r1; ++r)
+        for (int c = c0; c <= c1; ++c) {
+          const P2 q{platform.x0 + (c + 0.5) * px, platform.y0 + (h - r - 0.5) * px};
+          const auto& v = p.tri[t];
+          const double d = inside_triangle(q, v) ? 0
+                                                 : std::min({point_segment(q, v[0], v[1]), point_segment(q, v[1], v[2]),
+                                                             point_segment(q, v[2], v[0])}) / px;
+          const size_t i = size_t(r) * w + c;
+          if (d < distance[i]) distance[i] = d, nearest[i] = int(m);
+        }
+    }
+    // The name's box about the centre of the member's box, a footprint cell and a rounding wider.
+    const double cc = ((bx0 + bx1) / 2 - platform.x0) / px, cr = h - ((by0 + by1) / 2 - platform.y0) / px;
+    const double half_w = (int(names[m].size()) * 4 * scale - scale) / 2.0 + 3, half_h = 5 * scale / 2.0 + 3;
+    text.push_back({cc - half_w, cr - half_h, cc + half_w, cr + half_h});
+  }
+  std::vector<size_t> inside(placed.size()), name_ink(placed.size());
+  size_t wrong = 0;
+  std::string first;
+  auto expect = [&](bool ok, int c, int r, const char* what) {
+    if (ok) return;
+    if (!wrong++) first = format("pixel (%d, %d) is %d, not %s", c, r, img.pixels[size_t(r) * w + c], what);
+  };
+  for (int r = 0; r < h; ++r)
+    for (int c = 0; c < w; ++c) {
+      const size_t i = size_t(r) * w + c;
+      const uint8_t v = img.pixels[i];
+      if (r == 0 || c == 0 || r == h - 1 || c == w - 1) {
+        expect(v == kBlack, c, r, "the frame's black");
+        continue;
+      }
+      bool deep = r >= 2 && c >= 2 && r < h - 2 && c < w - 2;
+      for (int dr = -2; dr <= 2 && deep; ++dr)
+        for (int dc = -2; dc <= 2 && deep; ++dc) deep = distance[size_t(r + dr) * w + c + dc] == 0;
+      const bool far = distance[i] >= kFar;
+      int in_text = -1;
+      for (size_t m = 0; m < text.size(); ++m)
+        if (c >= text[m].c0 && c <= text[m].c1 && r >= text[m].r0 && r <= text[m].r1) in_text = int(m);
+      if (deep && v == kLightGrey) ++inside[size_t(nearest[i])];
+      const bool plain = deep ? v == kLightGrey : far ? v == kWhite : v == kBlack || v == kLightGrey || v == kWhite;
+      const char* what = deep ? "a member's light grey" : far ? "the paper's white" : "black, light grey or white";
+      // Within a name's box black may also be the name; on a member or on the paper, not an
+      // outline, it is the name.
+      if (in_text >= 0 && v == kBlack && (deep || far)) ++name_ink[size_t(in_text)];
+      expect(plain || (in_text >= 0 && v == kBlack), c, r, what);
+    }
+  EXPECT_EQ(wrong, 0u) << first;
+  for (size_t m = 0; m < placed.size(); ++m) {
+    EXPECT_GT(inside[m], 100u) << names[m] << " is not on the picture where it is placed";
+    EXPECT_GT(name_ink[m], 0u) << names[m] << "'s name is not drawn on it";
+  }
+}
+
+}  // namespace
+
 // The members' footprints are made on all cores; a member that has none (no faces) is refused in
 // words, as on one core, and no picture is written.
 TEST_F(PlateLayoutTest, DrawsEveryMemberAndRefusesOneWithoutFacesWritingNothing) {
@@ -566,10 +659,8 @@ TEST_F(PlateLayoutTest, DrawsEveryMemberAndRefusesOneWithoutFacesWritingNothing)
     names.push_back(s.names[m]);
   }
   write_plate_layout(path("plate_layout.png"), placed, names, platform);
-  std::ifstream png(path("plate_layout.png"), std::ios::binary);
-  char magic[8] = {};
-  png.read(magic, 8);
-  EXPECT_EQ(std::string(magic, 8), "\x89PNG\r\n\x1a\n");
+  ASSERT_GE(placed.size(), 3u);  // members side by side, each drawn where it is placed
+  expect_layout_shows(path("plate_layout.png"), placed, names, platform, 0.1);
   Mesh faceless = placed[0];
   faceless.F.clear();
   placed.push_back(faceless);
