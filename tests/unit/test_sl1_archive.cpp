@@ -7,6 +7,7 @@
 #include <png.h>
 #include <zip.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <random>
 #include <string>
@@ -17,6 +18,7 @@
 #include "slicereuse/masks/export_masks.h"
 #include "slicereuse/masks/mask_png.h"
 #include "slicereuse/masks/printer_presets.h"
+#include "slicereuse/util/format.h"
 #include "test_files.h"
 #include "thumbnail_png.h"
 #include "top_view.h"
@@ -86,6 +88,35 @@ Rgba decode_rgba(const std::string& png) {
 std::vector<uint8_t> pixel(const Rgba& image, int x, int y) {
   const uint8_t* p = image.at(x, y);
   return {p[0], p[1], p[2], p[3]};
+}
+
+// A thumbnail of l_stack() shows the L: the part fills 90 % of the picture's smaller side about
+// its centre, +x to the right and +y up. Pixels a pixel or more inside the L are opaque, those
+// a pixel or more outside it are clear (the edge pixels between are anti-aliased).
+void expect_shows_the_l(const Rgba& image) {
+  const double w = image.width, h = image.height, px_per_mm = 0.9 * std::min(w, h) / 12;
+  const double margin = 1 / px_per_mm;
+  auto in_l = [](double x, double y, double grow) {
+    const bool foot = x >= -6 - grow && x <= 6 + grow && y >= -6 - grow && y <= -2 + grow;
+    const bool arm = x >= -6 - grow && x <= -2 + grow && y >= -6 - grow && y <= 6 + grow;
+    return foot || arm;
+  };
+  size_t opaque = 0, clear = 0, wrong = 0;
+  std::string first;
+  for (int r = 0; r < image.height; ++r)
+    for (int c = 0; c < image.width; ++c) {
+      const double x = (c + 0.5 - w / 2) / px_per_mm, y = (h / 2 - r - 0.5) / px_per_mm;
+      const uint8_t* p = image.at(c, r);
+      const bool on = in_l(x, y, -margin), off = !in_l(x, y, margin);
+      const bool ok = on ? p[3] == 255 : off ? p[0] == 0 && p[1] == 0 && p[2] == 0 && p[3] == 0 : true;
+      opaque += on && ok;
+      clear += off && ok;
+      if (!ok && !wrong++) first = format("pixel (%d, %d) at (%g, %g) mm has alpha %d", c, r, x, y, p[3]);
+    }
+  EXPECT_EQ(wrong, 0u) << image.width << "x" << image.height << ": " << first;
+  // The L's 80 mm2 against the rest of the picture, less its edge pixels.
+  EXPECT_GT(opaque, size_t(0.95 * 80 * px_per_mm * px_per_mm)) << image.width << "x" << image.height;
+  EXPECT_GT(clear, size_t(0.95 * (w * h - 80 * px_per_mm * px_per_mm))) << image.width << "x" << image.height;
 }
 
 }  // namespace
@@ -240,8 +271,11 @@ TEST_F(Sl1Archive, ThumbnailsShowThePartNotThePrintersMirroredImage) {
   turned.antialiasing = true;
   export_masks(l_stack(), small_display(), path("plain.sl1"));
   export_masks(l_stack(), turned, path("turned.sl1"));
-  for (const char* entry : {"thumbnail/thumbnail400x400.png", "thumbnail/thumbnail800x480.png"})
-    EXPECT_EQ(test::zip_entry(path("plain.sl1"), entry), test::zip_entry(path("turned.sl1"), entry)) << entry;
+  for (const char* entry : {"thumbnail/thumbnail400x400.png", "thumbnail/thumbnail800x480.png"}) {
+    const std::string turned_png = test::zip_entry(path("turned.sl1"), entry);
+    EXPECT_EQ(test::zip_entry(path("plain.sl1"), entry), turned_png) << entry;
+    expect_shows_the_l(decode_rgba(turned_png));
+  }
 }
 
 TEST_F(Sl1Archive, AStackWithNothingOnTheDisplayHasTransparentThumbnails) {
