@@ -4,6 +4,8 @@ member), binary and anti-aliased; reuse equals direct slicing per plate; the pla
 written is read back (the same plates from it); family.py --plates. pymeshlab (2025, double)
 and meshlabserver (2020, float)."""
 import json
+import math
+import re
 import struct
 import subprocess
 import zlib
@@ -36,6 +38,64 @@ def png_pixels(data):
     if bits == 8:
         return rows[:, 1:]
     return np.unpackbits(rows[:, 1:], axis=1)[:, :width] * np.uint8(255)
+
+
+def ply_vertices(path):
+    """The vertices of a gen_family member (tests/support/ply.cpp: little-endian doubles right
+    after the header) as an n x 3 array."""
+    data = path.read_bytes()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    count = int(re.search(rb"element vertex (\d+)", data[:end]).group(1))
+    return np.frombuffer(data, "<f8", 3 * count, end).reshape(count, 3)
+
+
+def region(mask, seeds):
+    """The pixels of `mask` (False on the image's border) 8-connected to the seeds in it."""
+    inside = np.zeros_like(mask)
+    todo = [s for s in seeds if mask[s]]
+    if todo:
+        inside[tuple(np.array(todo).T)] = True
+    while todo:
+        r, c = todo.pop()
+        for n in ((r + dr, c + dc) for dr in (-1, 0, 1) for dc in (-1, 0, 1)):
+            if mask[n] and not inside[n]:
+                inside[n] = True
+                todo.append(n)
+    return inside
+
+
+def assert_layout_shows(png, placements, plate, members):
+    """A plate's layout picture (plate_layout.h) shows the platform at 0.1 mm a pixel in a black
+    frame, and each member of the plate (placements: the placements file; members: paths by name)
+    drawn on every pixel one of its placed vertices falls in (or the next: the footprint lies on
+    the pixels by rounding), its light grey one region of its own, outlined in black (names are
+    black too: a name over another member does not join the two); no light grey elsewhere."""
+    image = png_pixels(png)
+    box = placements["platform_mm"]
+    height, width = image.shape
+    assert (width, height) == (math.ceil((box["x1"] - box["x0"]) / 0.1), math.ceil((box["y1"] - box["y0"]) / 0.1))
+    frame = np.ones_like(image, bool)
+    frame[1:-1, 1:-1] = False
+    assert not image[frame].any(), "the frame is black"
+    assert set(np.unique(image)) <= {0, 215, 255}
+    fill, paper = image == 215, image == 255
+    assert not (fill[1:] & paper[:-1]).any() and not (fill[:-1] & paper[1:]).any() and \
+        not (fill[:, 1:] & paper[:, :-1]).any() and not (fill[:, :-1] & paper[:, 1:]).any(), "light grey meets white"
+    regions = []
+    for m in plate["members"]:
+        v = ply_vertices(members[m["name"]])
+        t = math.radians(m["theta_deg"])
+        x = math.cos(t) * v[:, 0] - math.sin(t) * v[:, 1] + m["tx_mm"]
+        y = math.sin(t) * v[:, 0] + math.cos(t) * v[:, 1] + m["ty_mm"]
+        cols = np.floor((x - box["x0"]) / 0.1).astype(int)
+        rows = np.floor(height - (y - box["y0"]) / 0.1).astype(int)
+        assert all(not paper[r - 1:r + 2, c - 1:c + 2].all() for r, c in zip(rows, cols)), \
+            f"{m['name']}: a placed vertex has nothing drawn around its pixel"
+        seeds = [(r + dr, c + dc) for r, c in zip(rows, cols) for dr in (-2, 0, 2) for dc in (-2, 0, 2)]
+        regions.append(region(fill, seeds))
+        assert regions[-1].sum() > 100, f"{m['name']} is not filled light grey"
+    assert (np.sum(regions, axis=0) <= 1).all(), "two members are one region"
+    assert not fill[~np.any(regions, axis=0)].any(), "light grey off the members"
 
 
 def stack(path):
@@ -84,6 +144,9 @@ def test_plate_is_the_union_of_its_members_placed_alone(pymeshlab, make_family, 
         assert plate["output"] == str(tmp_path / f"reuse_{k}")
         reuse, direct = stack(tmp_path / f"reuse_{k}"), stack(tmp_path / f"direct_{k}")
         assert np.array_equal(reuse, direct)
+        layout = (tmp_path / f"reuse_{k}_layout.png").read_bytes()
+        assert_layout_shows(layout, written, plate, {m.name: m for m in members})
+        assert (tmp_path / f"direct_{k}_layout.png").read_bytes() == layout
         # Each member alone on its placement, in a set of its own.
         alone = []
         for i, m in enumerate(plate["members"]):
@@ -116,7 +179,11 @@ def test_meshlabserver_plate_by_reuse_equals_direct_and_reads_its_placements(mes
                                  "report_file": ""}) for k in range(1, r["plates"] + 1)]
     for _, c in _run(meshlabserver, tmp_path, [members[1]], compares):
         assert c["min_similarity"] == 1.0 and c["max_grey_difference"] == 0, c
-    assert (tmp_path / "reuse_1_layout.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    written = json.loads((tmp_path / "plates.json").read_text())
+    for k, p in enumerate(written["plates"], 1):
+        layout = (tmp_path / f"reuse_{k}_layout.png").read_bytes()
+        assert_layout_shows(layout, written, p, {m.name: m for m in members})
+        assert (tmp_path / f"direct_{k}_layout.png").read_bytes() == layout
 
 
 def test_family_py_plates_verifies_every_plate(make_family, tmp_path):
@@ -128,11 +195,12 @@ def test_family_py_plates_verifies_every_plate(make_family, tmp_path):
     result = json.loads(run.stdout)
     assert result["members"] == 7
     assert sum(len(p["members"]) for p in result["plates"]) == 7
-    for p in result["plates"]:
-        assert p["min_similarity"] == 1.0 and p["max_grey_difference"] == 0, p
-        assert p["output"].endswith(".sl1") and (tmp_path / p["layout"]).is_file()
     written = json.loads((tmp_path / "plates.json").read_text())
     assert [[m["name"] for m in p["members"]] for p in written["plates"]] == [p["members"] for p in result["plates"]]
+    for p, plate in zip(result["plates"], written["plates"]):
+        assert p["min_similarity"] == 1.0 and p["max_grey_difference"] == 0, p
+        assert p["output"].endswith(".sl1")
+        assert_layout_shows((tmp_path / p["layout"]).read_bytes(), written, plate, {m.name: m for m in members})
 
 
 def test_plates_use_the_members_the_arrangement_loaded(pymeshlab, make_family, tmp_path, monkeypatch):
@@ -215,3 +283,4 @@ def test_meshlabserver_arranges_then_makes_each_plate_alone(meshlabserver, make_
         assert c["min_similarity"] == 1.0 and c["max_grey_difference"] == 0, c
         layout = (tmp_path / f"plate_{k}_layout.png").read_bytes()
         assert layout == (tmp_path / f"one_{k}_layout.png").read_bytes() == (tmp_path / f"all_{k}_layout.png").read_bytes()
+        assert_layout_shows(layout, written, plate, by_name)
