@@ -6,6 +6,7 @@ import zipfile
 import pytest
 
 from conftest import THICKNESS, raises_filter_error as _raises, read_text_contours
+from test_plates import png_pixels
 
 
 @pytest.fixture
@@ -135,9 +136,11 @@ def test_a_printer_preset_by_name_makes_its_print_file(sliced, pymeshlab):
     with zipfile.ZipFile(tmp / "p.sl1s") as z:
         assert "printerModel = SL1S\n" in z.read("config.ini").decode()
         png = z.read("p00000.png")
-    assert png[:8] == b"\x89PNG\r\n\x1a\n"
     width, height = struct.unpack(">II", png[16:24])
     assert (width, height, png[24], png[25]) == (1620, 2560, 8, 0)  # 8-bit grey
+    first = png_pixels(png)
+    assert first.shape == (2560, 1620) and (first == 255).sum() > 1000, "the part's first layer is lit"
+    assert ((first > 0) & (first < 255)).sum() > 100, "anti-aliased edges"
     _raises(pymeshlab, ms, "export_mask_images",
             "printer prusa_sl1s_speed sets the display and exposure, but width_px were given too",
             contour_file=str(tmp / "s.ctr"), output_path=str(tmp / "q.sl1s"), printer="prusa_sl1s_speed",
@@ -239,9 +242,13 @@ def test_display_size_limit_is_the_core_one(pymeshlab, sliced):
 
 
 def test_encoding_of_another_mesh_is_refused(pymeshlab, sliced, make_family):
-    ms, _, _, _, tmp, _ = sliced
+    ms, source, _, _, tmp, _ = sliced
     ms.load_new_mesh(str(make_family("torus", 2)[1]))
-    _raises(pymeshlab, ms, "transfer_slicing_to_mesh", "faces differ",
+    _raises(pymeshlab, ms, "transfer_slicing_to_mesh",
+            ("Transfer Slicing to Mesh: the target mesh's faces differ from those of the mesh the encoding was made "
+             f"from (encoding: {ms.mesh(source).face_number()} faces, hash ",
+             f"; target: {ms.current_mesh().face_number()} faces, hash ", "); a target with other connectivity needs a "
+             "cross-parameterization map (map file from Cross-Parameterize Meshes)"),
             encoding_file=str(tmp / "s.enc"), target_mesh=ms.current_mesh_id(),
             contour_file=str(tmp / "x.ctr"))
     assert not (tmp / "x.ctr").exists()
@@ -249,21 +256,29 @@ def test_encoding_of_another_mesh_is_refused(pymeshlab, sliced, make_family):
 
 def test_missing_files_are_named(pymeshlab, sliced):
     ms, _, target, _, tmp, _ = sliced
-    _raises(pymeshlab, ms, "transfer_slicing_to_mesh", str(tmp / "missing.enc"),
+    _raises(pymeshlab, ms, "transfer_slicing_to_mesh",
+            f"Transfer Slicing to Mesh: cannot open '{tmp / 'missing.enc'}': No such file or directory",
             encoding_file=str(tmp / "missing.enc"), target_mesh=target)
-    _raises(pymeshlab, ms, "export_mask_images", str(tmp / "missing.ctr"),
+    _raises(pymeshlab, ms, "export_mask_images",
+            f"Export Mask Images: cannot open '{tmp / 'missing.ctr'}': No such file or directory",
             contour_file=str(tmp / "missing.ctr"), output_path=str(tmp / "m"))
-    _raises(pymeshlab, ms, "compare_mask_stacks", str(tmp / "nothing"),
+    _raises(pymeshlab, ms, "compare_mask_stacks",
+            f"Compare Mask Stacks: mask stack '{tmp / 'nothing'}' does not exist",
             stack_a=str(tmp / "nothing"), stack_b=str(tmp / "nothing"))
-    _raises(pymeshlab, ms, "slice_mesh_with_encoding", "contour_file",
-            layer_thickness=THICKNESS, contour_file=str(tmp / "no" / "such" / "dir" / "x.ctr"))
+    folder = tmp / "no" / "such" / "dir"
+    _raises(pymeshlab, ms, "slice_mesh_with_encoding",
+            f"Slice Mesh with Encoding: contour_file: cannot write '{folder / 'x.ctr'}': folder '{folder}': "
+            "No such file or directory",
+            layer_thickness=THICKNESS, contour_file=str(folder / "x.ctr"))
 
 
 def test_bad_mesh_id_and_contour_file_as_encoding(pymeshlab, sliced):
     ms, _, target, _, tmp, _ = sliced
-    _raises(pymeshlab, ms, "transfer_slicing_to_mesh", "no mesh with id 99",
+    _raises(pymeshlab, ms, "transfer_slicing_to_mesh",
+            "Transfer Slicing to Mesh: there is no mesh with id 99 (2 meshes are loaded)",
             encoding_file=str(tmp / "s.enc"), target_mesh=99)
-    _raises(pymeshlab, ms, "transfer_slicing_to_mesh", str(tmp / "s.ctr"),
+    _raises(pymeshlab, ms, "transfer_slicing_to_mesh",
+            f"Transfer Slicing to Mesh: '{tmp / 's.ctr'}', line 1: this is a contour file, expected an encoding file",
             encoding_file=str(tmp / "s.ctr"), target_mesh=target)
 
 
@@ -284,7 +299,7 @@ def test_no_current_mesh(pymeshlab):
 
 
 def test_truncated_or_corrupted_encoding_is_refused(pymeshlab, sliced):
-    ms, source, target, _, tmp, _ = sliced
+    ms, source, target, r, tmp, _ = sliced
     ms.set_current_mesh(source)
     ms.apply_filter("slice_mesh_with_encoding", layer_thickness=THICKNESS, file_format=1,
                     contour_file="", encoding_file=str(tmp / "s.srb"))
@@ -295,15 +310,23 @@ def test_truncated_or_corrupted_encoding_is_refused(pymeshlab, sliced):
     (tmp / "flip.srb").write_bytes(bytes(flipped))
     text = (tmp / "s.enc").read_text().splitlines(keepends=True)
     (tmp / "cut.enc").write_text("".join(text[: len(text) // 2]))
-    for bad, message in (("cut.srb", "cut.srb"), ("flip.srb", "checksum"), ("cut.enc", "cut.enc")):
-        _raises(pymeshlab, ms, "transfer_slicing_to_mesh", message, encoding_file=str(tmp / bad),
-                target_mesh=target, contour_file=str(tmp / "x.ctr"))
+    said = {"cut.srb": (f"section 6 (t) ends at byte {len(data)}, beyond the end of the file ({len(data) // 2} "
+                        "bytes): truncated file",),
+            "flip.srb": ("section t: checksum mismatch, the file is corrupted",),
+            "cut.enc": (f"the header announces {r['layers']} layers and {r['contours']} contours, the file has ",
+                        "(truncated file?)")}
+    for bad, (head, *rest) in said.items():
+        _raises(pymeshlab, ms, "transfer_slicing_to_mesh", (f"Transfer Slicing to Mesh: '{tmp / bad}': {head}", *rest),
+                encoding_file=str(tmp / bad), target_mesh=target, contour_file=str(tmp / "x.ctr"))
     assert not (tmp / "x.ctr").exists()
 
 
 def test_unwritable_transfer_output_leaves_nothing(pymeshlab, sliced):
     ms, _, target, _, tmp, _ = sliced
-    _raises(pymeshlab, ms, "transfer_slicing_to_mesh", "target_encoding_file",
+    folder = tmp / "no" / "dir"
+    _raises(pymeshlab, ms, "transfer_slicing_to_mesh",
+            f"Transfer Slicing to Mesh: target_encoding_file: cannot write '{folder / 't.enc'}': folder '{folder}': "
+            "No such file or directory",
             encoding_file=str(tmp / "s.enc"), target_mesh=target, contour_file=str(tmp / "t.ctr"),
-            target_encoding_file=str(tmp / "no" / "dir" / "t.enc"))
+            target_encoding_file=str(folder / "t.enc"))
     assert not (tmp / "t.ctr").exists()
