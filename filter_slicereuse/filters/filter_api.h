@@ -122,6 +122,9 @@ struct FilterSpec {
   // Runs the filter: reads and checks the values (filter_params.h), does the work through the
   // host, returns the figures. Throws Error with a message that names the problem.
   std::function<Result(const ParamValues&, Host&)> run{};
+  // The keys of its Result, declared once (docs/formats.md, "Filter result line", lists them);
+  // a key ending in "_*" stands for one key per plate or member ("area_used_*").
+  std::vector<std::string> results{};
 };
 
 const std::vector<FilterSpec>& filter_specs();

@@ -95,10 +95,18 @@ class ParamList {
                   const char* file_filter, const char* when_empty, const char* tooltip) {
     ParamSpec s = spec(name, type, label, tooltip, 0);
     s.file_filter = file_filter;
+    if (type == ParamType::FileSave) outputs_.push_back({name, [field](const P& p) { return p.*field; }});
     return add(s, [field, name, when_empty](P& p, const ParamValues& v) {
       p.*field = v.text(name);
       if (when_empty && (p.*field).empty()) throw Error(std::string(name) + " is empty: " + when_empty);
     });
+  }
+
+  // For the FileSave parameter added last: the first file the filter writes from it, when that is
+  // not the value itself (plate.sl1 gives plate_1.sl1), for outputs().
+  ParamList& first_file(std::function<std::string(const P&)> of) {
+    outputs_.back().second = std::move(of);
+    return *this;
   }
 
   // A loaded mesh, as the host's reference (Host::mesh_at).
@@ -115,10 +123,19 @@ class ParamList {
       specs_.push_back(list.specs_[i]);
       readers_.push_back([field, read = list.readers_[i]](P& p, const ParamValues& v) { read(p.*field, v); });
     }
+    for (const auto& [name, of] : list.outputs_)
+      outputs_.push_back({name, [field, of = of](const P& p) { return of(p.*field); }});
     return *this;
   }
 
   const std::vector<ParamSpec>& specs() const { return specs_; }
+
+  // The files p's FileSave parameters will write (first_file), each named by its parameter.
+  std::vector<std::pair<std::string, std::string>> outputs(const P& p) const {
+    std::vector<std::pair<std::string, std::string>> out;
+    for (const auto& [name, of] : outputs_) out.emplace_back(name, of(p));
+    return out;
+  }
 
   // The values as a P. Throws Error naming the parameter: one the values lack, one they have
   // that the list does not declare, or a value outside what it accepts.
@@ -174,15 +191,7 @@ class ParamList {
 
   std::vector<ParamSpec> specs_;
   std::vector<Reader> readers_;
+  std::vector<std::pair<std::string, std::function<std::string(const P&)>>> outputs_;
 };
-
-// The FilterSpec of a filter whose parameters are `params`: its ParamSpecs, and a run that
-// reads the values into a P and calls run_typed with it.
-template <class P>
-FilterSpec typed_filter(FilterSpec spec, const ParamList<P>& params, Result (*run_typed)(const P&, Host&)) {
-  spec.params = params.specs();
-  spec.run = [params, run_typed](const ParamValues& values, Host& host) { return run_typed(params.read(values), host); };
-  return spec;
-}
 
 }  // namespace slicereuse::plugin

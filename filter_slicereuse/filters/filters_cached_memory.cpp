@@ -48,7 +48,7 @@ FilterSpec free_cached_memory_filter() {
       "memory frees them on its own. The next print job reads the encoding again.</p>";
   return typed_filter({FilterId::FreeCachedMemory, "Free Cached Memory", "free_cached_memory", description,
                        Arity::None, kLayerClass, false},
-                      ParamList<NoParams>(), run_free_cached_memory);
+                      ParamList<NoParams>(), run_free_cached_memory, {"freed_bytes", "encoding_bytes"});
 }
 
 }  // namespace slicereuse::plugin

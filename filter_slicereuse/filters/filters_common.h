@@ -12,6 +12,7 @@
 #include "slicereuse/formats/slice_files.h"
 #include "slicereuse/masks/export_masks.h"
 #include "slicereuse/masks/printer_profile.h"
+#include "slicereuse/plates/plate_job.h"
 #include "slicereuse/slicing/slice_layers.h"
 #include "slicereuse/transfer/encoding_cache.h"
 #include "slicereuse/util/format.h"
@@ -52,8 +53,25 @@ void log_printer(Host& host, const char* filter, const PrinterSettings& settings
 void log_display_warning(Host& host, const char* filter, const MaskExportStats& stats,
                          const PrinterProfile& profile);
 void add_display_figures(const MaskExportStats& stats, Result& result);
+// keys and the keys add_display_figures adds, for a spec's results.
+std::vector<std::string> with_display_keys(std::vector<std::string> keys);
 // What an empty output_path of the mask filters is told.
 inline const char* const kMaskOutputWhenEmpty = "choose a folder, or a .sl1, .sl1s or .goo file";
+
+// How a print or plate job makes its members' layers (filters_job_layers.cpp): transferred
+// from a source's encoding, or sliced directly at a layer thickness from z_start; a member of
+// another family is sliced directly unless strict. The same parameters, names and tooltips in
+// both filters; encoding_tooltip says what the encoding is transferred to.
+struct JobLayers {
+  std::string encoding_file;
+  double layer_thickness;
+  double z_start;
+  bool strict;
+};
+ParamList<JobLayers> job_layer_params(const char* encoding_tooltip);
+// The plate job's options for p (no members' names, budget or encoding yet): slicing options,
+// strict, and a quarter of the available memory per range of layers.
+PlateJobOptions plate_job_options(const JobLayers& p);
 
 // The slicing options of the layer_thickness and z_start parameters (z_start_option: at or
 // below kLowestVertexZStartAtOrBelow, the mesh's lowest vertex).
@@ -72,6 +90,29 @@ FileFormat format_for_name(const std::string& path);
 
 // Checks that every non-empty output path can be written and that no two are the same file,
 // naming the parameter in the error; called before any work is done.
-void check_outputs(const std::vector<std::pair<const char*, std::string>>& named_paths);
+void check_outputs(const std::vector<std::pair<std::string, std::string>>& named_paths);
+
+// Checks that a filter's result has exactly the keys its spec declares (a declared key ending in
+// "_*" stands for any number of keys with that prefix, one per plate or member); Error if not.
+void check_result_keys(const FilterSpec& spec, const Result& result);
+
+// The FilterSpec of a filter whose parameters are `params` and whose result has the keys
+// `results`: its ParamSpecs, and a run that reads the values into a P, checks every file its
+// FileSave parameters will write (check_outputs) before any work, calls run_typed, and checks
+// the result's keys against the spec.
+template <class P>
+FilterSpec typed_filter(FilterSpec spec, const ParamList<P>& params, Result (*run_typed)(const P&, Host&),
+                        std::vector<std::string> results) {
+  spec.params = params.specs();
+  spec.results = std::move(results);
+  spec.run = [params, run_typed, spec](const ParamValues& values, Host& host) {
+    const P p = params.read(values);
+    check_outputs(params.outputs(p));
+    Result result = run_typed(p, host);
+    check_result_keys(spec, result);
+    return result;
+  };
+  return spec;
+}
 
 }  // namespace slicereuse::plugin

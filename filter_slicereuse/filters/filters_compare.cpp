@@ -29,7 +29,6 @@ ParamList<CompareParams> compare_params() {
 
 Result run_compare_masks(const CompareParams& p, Host& host) {
   const auto start = std::chrono::steady_clock::now();
-  check_outputs({{"report_file", p.report_file}});
 
   const StackComparison c = compare_mask_stacks(p.stack_a, p.stack_b, p.report_file, host.progress());
 
@@ -75,7 +74,10 @@ FilterSpec compare_masks_filter() {
       kReference;
   return typed_filter({FilterId::CompareMasks, "Compare Mask Stacks", "compare_mask_stacks", description,
                        Arity::None, kLayerClass | kMeasureClass, false},
-                      compare_params(), run_compare_masks);
+                      compare_params(), run_compare_masks,
+                      {"layers", "min_similarity", "worst_layer", "differing_pixels", "max_grey_difference",
+                       "max_grey_difference_layer", "over_one_level_pixels", "over_one_level_share",
+                       "over_one_level_layer", "seconds"});
 }
 
 }  // namespace slicereuse::plugin

@@ -88,7 +88,6 @@ Result run_cross_parameterize(const CrossParamParams& p, Host& host) {
     throw Error(std::string(p.source_landmarks.empty() ? "source_landmarks" : "target_landmarks") +
                 " is empty but the other landmark file is given: give both (.pp files from MeshLab's "
                 "PickPoints, matched by name) or neither (automatic correspondence)");
-  check_outputs({{"map_file", p.map_file}});
 
   CrossParamOptions options;
   options.in_plane = p.in_plane;
@@ -148,7 +147,9 @@ FilterSpec cross_parameterize_filter() {
       kReference;
   return typed_filter({FilterId::CrossParameterize, "Cross-Parameterize Meshes", "cross_parameterize_meshes",
                        description, Arity::MeshParameters, kRemeshingClass, true, {}, true},
-                      crossparam_params(), run_cross_parameterize);
+                      crossparam_params(), run_cross_parameterize,
+                      {"patches", "genus", "flipped_triangles", "max_height_error", "rms_height_error",
+                       "area_distortion", "angle_distortion", "map_seconds", "seconds"});
 }
 
 }  // namespace slicereuse::plugin

@@ -132,6 +132,7 @@ void log_display_warning(Host& host, const char* filter, const MaskExportStats& 
                     1e-3 * profile.height_px * profile.pixel_size_y_um));
 }
 
+
 void add_display_figures(const MaskExportStats& stats, Result& result) {
   result["ignored_open_contours"] = int64_t(stats.ignored_open_contours);
   result["outside_display"] = int64_t(stats.outside_display);
@@ -139,6 +140,13 @@ void add_display_figures(const MaskExportStats& stats, Result& result) {
   result["part_max_x_mm"] = stats.max_x;
   result["part_min_y_mm"] = stats.min_y;
   result["part_max_y_mm"] = stats.max_y;
+}
+
+std::vector<std::string> with_display_keys(std::vector<std::string> keys) {
+  Result figures;
+  add_display_figures(MaskExportStats{}, figures);
+  for (const auto& entry : figures) keys.push_back(entry.first);
+  return keys;
 }
 
 }  // namespace slicereuse::plugin

@@ -33,7 +33,6 @@ Result run_export_masks(const ExportParams& p, Host& host) {
   const auto start = std::chrono::steady_clock::now();
   const PrinterProfile profile = p.printer.profile();
   log_printer(host, "Export Mask Images", p.printer);
-  check_outputs({{"output_path", p.output_path}});
 
   const Progress progress = host.progress();
   // No file: the current layer, opened from a contour file through io_encoding.
@@ -77,7 +76,7 @@ FilterSpec export_masks_filter() {
       kReference;
   return typed_filter({FilterId::ExportMasks, "Export Mask Images", "export_mask_images", description,
                        Arity::None, kLayerClass, false},
-                      export_params(), run_export_masks);
+                      export_params(), run_export_masks, with_display_keys({"layers", "seconds"}));
 }
 
 }  // namespace slicereuse::plugin

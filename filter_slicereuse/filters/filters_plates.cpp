@@ -13,16 +13,13 @@
 #include "slicereuse/plates/plate_job.h"
 #include "slicereuse/plates/plate_layout.h"
 #include "slicereuse/util/error.h"
-#include "slicereuse/util/memory_budget.h"
 
 namespace slicereuse::plugin {
 namespace {
 
 struct PlateJobParams {
   bool visible_only;
-  std::string encoding_file;
-  double layer_thickness;
-  double z_start;
+  JobLayers layers;
   double spacing_mm;
   double rotation_step_deg;
   std::string placements_file;
@@ -60,31 +57,29 @@ void add_placements_output(ParamList<P>& l, const char* when_empty, const char* 
 }
 
 template <class P>
-void add_output_path(ParamList<P>& l, const char* tooltip) {
-  l.file(&P::output_path, ParamType::FileSave, "output_path", "Output .sl1, .sl1s, .goo or folder",
+ParamList<P>& add_output_path(ParamList<P>& l, const char* tooltip) {
+  return l.file(&P::output_path, ParamType::FileSave, "output_path", "Output .sl1, .sl1s, .goo or folder",
          "*.sl1 *.sl1s *.goo", kMaskOutputWhenEmpty, tooltip);
 }
+
+// The number of the first plate a plate job makes: plate k alone, or 1.
+size_t first_plate(const PlateJobParams& p) { return p.plate > 0 ? size_t(p.plate) : 1; }
 
 ParamList<PlateJobParams> plate_job_params() {
   ParamList<PlateJobParams> l;
   add_visible_only(l);
-  l.file(&PlateJobParams::encoding_file, ParamType::FileOpen, "encoding_file", "Source encoding file", "*.enc *.srb",
-         nullptr,
-         "Encoding file written by Slice Mesh with Encoding for a member of the family: every member's layers are "
-         "transferred from it (exact). Empty: every member is sliced directly.")
-      .number(&PlateJobParams::layer_thickness, "layer_thickness", "Layer thickness (mm)", 0.1, Range::above(0, "mm"),
-              "Used when slicing directly (no encoding file): distance between slicing planes, in mm. With an "
-              "encoding file, the encoding's layers are used.")
-      .number(&PlateJobParams::z_start, "z_start", "Start height (mm)", kLowestVertexZStart, Range::any(),
-              "Used when slicing directly: bottom of the first layer, in mm; at or below -1e29 (the default): the "
-              "lowest vertex of all members.");
+  l.include(&PlateJobParams::layers,
+            job_layer_params("Encoding file written by Slice Mesh with Encoding for a member of the family: every "
+                             "member's layers are transferred from it (exact). Empty: every member is sliced "
+                             "directly."));
   add_arrangement(l);
   add_placements_output(l, nullptr,
                         "Also write the plates' placements, members and area used here (JSON). Empty (the default): "
                         "not written.");
   add_output_path(l, "One print file per plate, numbered: plate.sl1 gives plate_1.sl1, plate_2.sl1, ... (.sl1 or "
                      ".sl1s: Prusa archives, .goo: Elegoo print files); a folder name gives folders name_1, name_2, "
-                     "... of PNG images. Each plate's layout picture is written beside it (plate_1_layout.png).");
+                     "... of PNG images. Each plate's layout picture is written beside it (plate_1_layout.png).")
+      .first_file([](const PlateJobParams& p) { return plate_file_name(p.output_path, first_plate(p)); });
   l.whole(&PlateJobParams::plate, "plate", "Only plate", 0, Range::at_least(0, ""),
           "0 (the default): every plate. 1, 2, ...: only that plate of the placements file, whose members are the "
           "loaded meshes, into its numbered print file (plate_2.sl1 for 2), as a job split over many machines "
@@ -159,8 +154,7 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
     throw Error(format("plate is %d: the placements are the placements file's already; leave placements_output "
                        "empty",
                        p.plate));
-  const size_t first = p.plate > 0 ? size_t(p.plate) : 1;  // the number of the first plate made
-  check_outputs({{"placements_output", p.placements_output}, {"output_path", plate_file_name(p.output_path, first)}});
+  const size_t first = first_plate(p);
   keep_buffers_for_the_next_job();
   const Progress progress = host.progress();
   const PlatePlan plan = plan_plates(p, size_t(p.plate), profile, host, sub_progress(progress, 0, 0.1));
@@ -169,23 +163,19 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
   const std::vector<const Mesh*>& members = plan.members;
   const double arrange_seconds = plan.arrange_seconds;
 
-  PlateJobOptions jo;
-  jo.slicing = slice_options(p.layer_thickness, p.z_start);
-  jo.slicing.encoding = false;
-  jo.range_budget_bytes = available_memory() / 4;
+  PlateJobOptions jo = plate_job_options(p.layers);
   bool cached = false;
   std::shared_ptr<const CachedEncoding> entry;
   const size_t plates = arrangement.members.size();
   VertexOrder order;
-  if (!p.encoding_file.empty()) {
-    entry = encoding_cache().get(p.encoding_file, *members[0], &cached, sub_progress(progress, 0.1, 0.15));
+  if (!p.layers.encoding_file.empty()) {
+    entry = encoding_cache().get(p.layers.encoding_file, members, &cached, sub_progress(progress, 0.1, 0.15));
     jo.encoding = &entry->encoding;
     jo.edge_ends = &entry->edge_ends;
     // Each member's transfer reads its vertices in this order, made once for all the plates: it
-    // pays for itself over several (a plate of 3 at 0.05 mm gains about what the order costs,
-    // 4 ms; at 1 um it is 73 M points, 0.6 GB), so a call that makes one plate (family.py's
-    // tasks) goes without it.
-    if (plates > 1) {
+    // pays for itself over several plates, and costs about what it gains on one, so a call that
+    // makes one plate (family.py's tasks) goes without it.
+    if (plates > 1 && !entry->edge_ends.empty()) {
       order = vertex_order(entry->edge_ends);
       jo.vertex_order = &order;
     }
@@ -194,14 +184,28 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
   std::vector<std::string> outputs;
   PlateJobStats total;
   size_t layers = 0;
+  Result result;
+  size_t direct_members = 0;
   for (size_t k = 0; k < plates; ++k) {
     const auto plate_start = std::chrono::steady_clock::now();
     std::vector<std::string> plate_names;
     const std::vector<Mesh> placed = placed_members(plan, k, &plate_names);
     outputs.push_back(plate_file_name(p.output_path, first + k));
+    const std::string layout = plate_layout_file_name(outputs.back());
     const double from = 0.15 + 0.85 * double(k) / double(plates), to = 0.15 + 0.85 * double(k + 1) / double(plates);
+    jo.names = plate_names;
     const PlateJobStats st = export_plate(placed, jo, profile, outputs.back(), sub_progress(progress, from, to));
-    write_plate_layout(plate_layout_file_name(outputs.back()), placed, plate_names, plan.platform);
+    write_plate_layout(layout, placed, plate_names, plan.platform);
+    result[format("output_%zu", first + k)] = outputs.back();
+    result[format("layout_%zu", first + k)] = layout;
+    for (size_t m = 0; m < placed.size(); ++m) {
+      if (st.direct_reasons[m].empty()) continue;
+      ++direct_members;
+      result["direct_reason_" + plate_names[m]] = st.direct_reasons[m];
+      result["sliced_directly_" + plate_names[m]] = int64_t(1);
+      host.log(format("Make Plate Job: plate %zu: %s sliced directly, not by reuse: %s", first + k,
+                      plate_names[m].c_str(), st.direct_reasons[m].c_str()));
+    }
     layers = std::max(layers, st.layers);
     total.points += st.points;
     total.transferred_layers += st.transferred_layers;
@@ -218,19 +222,21 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
 
   const double seconds = seconds_since(start);
   host.log(format("Make Plate Job: %zu members on %zu plates (%s %.3f s), %zu points, %zu member layers transferred, "
-                  "%zu sliced, %.3f s",
+                  "%zu sliced, %zu members sliced directly for want of reuse, %.3f s",
                   members.size(), plates, p.placements_file.empty() ? "arranged in" : "placed by the file in",
-                  arrange_seconds, total.points, total.transferred_layers, total.resliced_layers, seconds));
-  Result result = {{"plates", int64_t(plates)},
-                   {"members", int64_t(members.size())},
-                   {"layers", int64_t(layers)},
-                   {"points", int64_t(total.points)},
-                   {"transferred_layers", int64_t(total.transferred_layers)},
-                   {"resliced_layers", int64_t(total.resliced_layers)},
-                   {"encoding_cached", int64_t(cached)},
-                   {"arrange_seconds", arrange_seconds},
-                   {"slicing_seconds", total.slicing_seconds},
-                   {"seconds", seconds}};
+                  arrange_seconds, total.points, total.transferred_layers, total.resliced_layers, direct_members,
+                  seconds));
+  result.insert({{"plates", int64_t(plates)},
+                 {"members", int64_t(members.size())},
+                 {"layers", int64_t(layers)},
+                 {"points", int64_t(total.points)},
+                 {"transferred_layers", int64_t(total.transferred_layers)},
+                 {"resliced_layers", int64_t(total.resliced_layers)},
+                 {"direct_members", int64_t(direct_members)},
+                 {"encoding_cached", int64_t(cached)},
+                 {"arrange_seconds", arrange_seconds},
+                 {"slicing_seconds", total.slicing_seconds},
+                 {"seconds", seconds}});
   for (size_t k = 0; k < plates; ++k) result[format("area_used_%zu", first + k)] = arrangement.area_used[k];
   return result;
 }
@@ -253,7 +259,8 @@ ParamList<ArrangeParams> arrange_params() {
                         "The plates' placements, members and area used (JSON), for Make Plate Job's placements_file.");
   add_output_path(l, "The print files the placements name, one per plate (plate.sl1 gives plate_1.sl1, "
                      "plate_2.sl1, ...; a folder name gives name_1, name_2, ...); nothing is written there but "
-                     "each plate's layout picture beside it (plate_1_layout.png).");
+                     "each plate's layout picture beside it (plate_1_layout.png).")
+      .first_file([](const ArrangeParams& p) { return plate_layout_file_name(plate_file_name(p.output_path, 1)); });
   l.include(&ArrangeParams::printer, printer_params());
   return l;
 }
@@ -262,8 +269,6 @@ Result run_arrange(const ArrangeParams& p, Host& host) {
   const auto start = std::chrono::steady_clock::now();
   const PrinterProfile profile = p.printer.profile();
   log_printer(host, "Arrange on Plates", p.printer);
-  check_outputs({{"placements_output", p.placements_output},
-                 {"output_path", plate_layout_file_name(plate_file_name(p.output_path, 1))}});
   const PlatePlan plan = plan_plates(p, 0, profile, host, host.progress());
   const size_t plates = plan.arrangement.members.size();
   std::vector<std::string> outputs;
@@ -303,7 +308,7 @@ FilterSpec arrange_plates_filter() {
       kReference;
   return typed_filter({FilterId::ArrangePlates, "Arrange on Plates", "arrange_on_plates", description, Arity::None,
                        kLayerClass, false},
-                      arrange_params(), run_arrange);
+                      arrange_params(), run_arrange, {"plates", "members", "arrange_seconds", "seconds", "area_used_*"});
 }
 
 FilterSpec plate_job_filter() {
@@ -321,7 +326,10 @@ FilterSpec plate_job_filter() {
       kReference;
   return typed_filter({FilterId::MakePlateJob, "Make Plate Job", "make_plate_job", description, Arity::None,
                        kLayerClass, false},
-                      plate_job_params(), run_plate_job);
+                      plate_job_params(), run_plate_job,
+                      {"plates", "members", "layers", "points", "transferred_layers", "resliced_layers",
+                       "direct_members", "encoding_cached", "arrange_seconds", "slicing_seconds", "seconds",
+                       "area_used_*", "output_*", "layout_*", "direct_reason_*", "sliced_directly_*"});
 }
 
 }  // namespace slicereuse::plugin

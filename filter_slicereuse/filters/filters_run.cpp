@@ -34,22 +34,48 @@ SliceOptions slice_options(double layer_thickness, double z_start) {
   return options;
 }
 
-void check_outputs(const std::vector<std::pair<const char*, std::string>>& named_paths) {
+void check_outputs(const std::vector<std::pair<std::string, std::string>>& named_paths) {
   namespace fs = std::filesystem;
-  std::vector<std::pair<const char*, fs::path>> seen;
+  std::vector<std::pair<std::string, fs::path>> seen;
   for (const auto& [name, path] : named_paths) {
     if (path.empty()) continue;
     try {
       check_writable(path);
     } catch (const Error& e) {
-      throw Error(std::string(name) + ": " + e.what());
+      throw Error(name + ": " + e.what());
     }
     const fs::path normal = fs::absolute(path).lexically_normal();
     for (const auto& [other_name, other] : seen)
       if (other == normal)
-        throw Error(std::string(name) + " and " + other_name + " are the same file: " + path);
+        throw Error(name + " and " + other_name + " are the same file: " + path);
     seen.emplace_back(name, normal);
   }
+}
+
+namespace {
+
+// A declared result key "prefix_*" stands for any key "prefix_<something>".
+bool is_pattern(const std::string& declared) {
+  return declared.size() > 2 && declared.compare(declared.size() - 2, 2, "_*") == 0;
+}
+
+bool declares(const FilterSpec& spec, const std::string& key) {
+  for (const std::string& d : spec.results) {
+    const size_t prefix = d.size() - 1;  // of a pattern: up to the "_"
+    if (is_pattern(d) ? key.size() > prefix && key.compare(0, prefix, d, 0, prefix) == 0 : key == d) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+void check_result_keys(const FilterSpec& spec, const Result& result) {
+  for (const auto& entry : result)
+    if (!declares(spec, entry.first))
+      throw Error("internal error: " + spec.name + " returned '" + entry.first + "', which its spec does not declare");
+  for (const std::string& d : spec.results)
+    if (!is_pattern(d) && !result.count(d))
+      throw Error("internal error: " + spec.name + " did not return '" + d + "', which its spec declares");
 }
 
 }  // namespace slicereuse::plugin

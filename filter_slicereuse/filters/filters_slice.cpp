@@ -69,7 +69,6 @@ void preview_polylines(const Slices& s, size_t n, std::vector<double>& xyz,
 Result run_slice(const SliceParams& p, Host& host) {
   const auto start = std::chrono::steady_clock::now();
   const SliceOptions options = slice_options(p.layer_thickness, p.z_start);
-  check_outputs({{"contour_file", p.contour_file}, {"encoding_file", p.encoding_file}});
 
   const Mesh mesh = host.current_mesh();
   if (mesh.faces() == 0) throw Error("the current mesh has no faces; there is nothing to slice");
@@ -147,7 +146,10 @@ FilterSpec slice_filter() {
       kReference;
   return typed_filter({FilterId::SliceWithEncoding, "Slice Mesh with Encoding", "slice_mesh_with_encoding",
                        description, Arity::CurrentMesh, kLayerClass, true},
-                      slice_params(), run_slice);
+                      slice_params(), run_slice,
+                      {"layers", "contours", "points", "open_contours", "duplicate_faces", "zero_area_faces",
+                       "repeated_vertex_faces", "boundary_edges", "non_manifold_edges", "z_start", "mesh_z_min",
+                       "mesh_z_max", "slicing_seconds", "seconds"});
 }
 
 }  // namespace slicereuse::plugin

@@ -57,7 +57,6 @@ ParamList<TransferParams> transfer_params() {
 
 Result run_transfer(const TransferParams& p, Host& host) {
   const auto start = std::chrono::steady_clock::now();
-  check_outputs({{"contour_file", p.contour_file}, {"target_encoding_file", p.target_encoding_file}});
 
   const Progress progress = host.progress();
   const Slices encoding = read_encoding_file(p.encoding_file, sub_progress(progress, 0, 0.1));
@@ -130,7 +129,9 @@ FilterSpec transfer_filter() {
       kReference;
   return typed_filter({FilterId::TransferSlicing, "Transfer Slicing to Mesh", "transfer_slicing_to_mesh",
                        description, Arity::MeshParameters, kLayerClass, true},
-                      transfer_params(), run_transfer);
+                      transfer_params(), run_transfer,
+                      {"points", "layers", "transferred_layers", "resliced_layers", "through_map",
+                       "max_plane_deviation", "dropped_contours", "unplaced_points", "transfer_seconds", "seconds"});
 }
 
 }  // namespace slicereuse::plugin

@@ -166,12 +166,19 @@ print_job)
   ok log_free.txt -i "$m1" -s job_free.mlx
   above "$(result log_free.txt encoding_bytes)" 0 || fail "no cached encoding freed: $(grep slicereuse-result log_free.txt)"
   above "$(result log_free.txt freed_bytes)" 0 || fail "no memory freed: $(grep slicereuse-result log_free.txt)"
-  # A member with other faces is refused, and nothing is written.
+  # A member with other faces is sliced directly, the result saying why; strict, it is refused
+  # and nothing is written.
   "$GEN_FAMILY" --shape torus --faces 1000 --members 1 --height 6 --seed 1 --out other >/dev/null
   edit print_job.mlx other.mlx 's#out/print_job\.sl1#out/other.sl1#'
-  must_fail log_other.txt "Make Print Job: the target mesh's faces differ from those of the mesh the encoding was made from" \
-    -i other/member_000.ply -s other.mlx
-  [ ! -e out/other.sl1 ] || fail "a refused print job left out/other.sl1"
+  ok log_other.txt -i other/member_000.ply -s other.mlx
+  [ "$(result log_other.txt reused)" = 0 ] || fail "other faces: $(grep slicereuse-result log_other.txt)"
+  grep -qF "Make Print Job: sliced directly, not by reuse: its faces differ from those of the mesh the encoding was made from" \
+    log_other.txt || fail "the log does not say why the member was sliced directly"
+  [ -f out/other.sl1 ] || fail "no out/other.sl1"
+  edit print_job.mlx strict.mlx 's#out/print_job\.sl1#out/strict.sl1#' 's#name="strict" value="false"#name="strict" value="true"#'
+  must_fail log_strict.txt "Make Print Job: the current mesh cannot be made by reuse: its faces differ" \
+    -i other/member_000.ply -s strict.mlx
+  [ ! -e out/strict.sl1 ] || fail "a refused print job left out/strict.sl1"
   ;;
 errors)
   edit slice.mlx zero.mlx 's/name="layer_thickness" value="0.1"/name="layer_thickness" value="0"/'

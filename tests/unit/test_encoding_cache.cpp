@@ -53,33 +53,33 @@ TEST_F(Cache, ReadsEachFileContentOnce) {
     write_encoding_file(path, source, format);
     EncodingCache cache;
     bool hit = true;
-    const auto first = cache.get(path, member, &hit);
+    const auto first = cache.get(path, {&member}, &hit);
     EXPECT_FALSE(hit);
     EXPECT_EQ(first->encoding.points(), source.points());
     EXPECT_TRUE(first->encoding.face == source.face && first->encoding.t == source.t);
     EXPECT_TRUE(first->edge_ends == encoded_edge_ends(source, member));
-    const auto second = cache.get(path, member, &hit);
+    const auto second = cache.get(path, {&member}, &hit);
     EXPECT_TRUE(hit);
     EXPECT_EQ(first.get(), second.get());
     // The same bytes rewritten: the same content, not read again.
     write_encoding_file(path, source, format);
-    EXPECT_EQ(cache.get(path, member, &hit).get(), first.get());
+    EXPECT_EQ(cache.get(path, {&member}, &hit).get(), first.get());
     EXPECT_TRUE(hit);
     // Other content under the same name, at once (a coarse clock may give it the same
     // modification time; a binary file has the same size): read again.
     const auto size = fs::file_size(path);
     write_encoding_file(path, other, format);
     if (format == FileFormat::Binary) ASSERT_EQ(fs::file_size(path), size);
-    const auto third = cache.get(path, member, &hit);
+    const auto third = cache.get(path, {&member}, &hit);
     EXPECT_FALSE(hit);
     EXPECT_TRUE(third->encoding.t == other.t);
     EXPECT_FALSE(third->encoding.t == source.t);
     // Another name for the same content: read again (the key includes the path).
     fs::copy_file(path, path + ".copy");
-    cache.get(path + ".copy", member, &hit);
+    cache.get(path + ".copy", {&member}, &hit);
     EXPECT_FALSE(hit);
     cache.clear();
-    cache.get(path + ".copy", member, &hit);
+    cache.get(path + ".copy", {&member}, &hit);
     EXPECT_FALSE(hit);
   }
 }
@@ -91,7 +91,7 @@ TEST_F(Cache, ReportsAndFreesItsMemory) {
   write_encoding_file(path, source, FileFormat::Binary);
   EncodingCache cache;
   EXPECT_EQ(cache.bytes(), 0u);
-  cache.get(path, member);
+  cache.get(path, {&member});
   const size_t L = source.layers(), C = source.contours(), P = source.points();
   ASSERT_GT(P, 0u);
   // layer_z, layer_begin, contour_begin (doubles, uint64), contour_open (uint8); face (uint32),
@@ -110,11 +110,11 @@ TEST_F(Cache, TryClearDoesNotWaitForAReadInProgress) {
   const std::string path = dir + "/enc.srb";
   write_encoding_file(path, source, FileFormat::Binary);
   EncodingCache cache;
-  cache.get(path, member);
+  cache.get(path, {&member});
   write_encoding_file(path, source, FileFormat::Text);  // another content: get() reads it again
   int calls = 0;
   size_t during = SIZE_MAX;
-  cache.get(path, member, nullptr, [&](double, const char*) {
+  cache.get(path, {&member}, nullptr, [&](double, const char*) {
     if (calls++ == 0) std::thread([&] { during = cache.try_clear(); }).join();
     return true;
   });
@@ -147,15 +147,26 @@ TEST_F(Cache, IdentityFollowsTheContent) {
   EXPECT_THROW(slice_file_identity(dir), Error);
 }
 
-TEST_F(Cache, RefusesAMemberWithOtherFacesAndKeepsNothing) {
+// A member of another family gets the encoding without edge ends (it is sliced directly); the
+// first call that brings a member of the family reads it again, with them.
+TEST_F(Cache, KeepsTheEncodingWithoutEdgeEndsForMembersOfAnotherFamily) {
   const std::string path = dir + "/enc.srb";
   write_encoding_file(path, source, FileFormat::Binary);
-  test::FamilyOptions other = o;
-  other.shape = "torus";
+  test::FamilyOptions other_options = o;
+  other_options.shape = "torus";
+  const Mesh other = test::make_family_base(other_options);
   EncodingCache cache;
-  EXPECT_THROW(cache.get(path, test::make_family_base(other)), Error);
   bool hit = true;
-  cache.get(path, member, &hit);
+  const auto alone = cache.get(path, {&other}, &hit);
   EXPECT_FALSE(hit);
-  EXPECT_THROW(cache.get(dir + "/missing.srb", member), Error);
+  EXPECT_TRUE(alone->edge_ends.empty());
+  EXPECT_EQ(alone->encoding.points(), source.points());
+  EXPECT_EQ(cache.get(path, {&other}, &hit).get(), alone.get());
+  EXPECT_TRUE(hit);
+  const auto with_family = cache.get(path, {&other, &member}, &hit);
+  EXPECT_FALSE(hit);
+  EXPECT_TRUE(with_family->edge_ends == encoded_edge_ends(source, member));
+  EXPECT_EQ(cache.get(path, {&other}, &hit).get(), with_family.get());
+  EXPECT_TRUE(hit);
+  EXPECT_THROW(cache.get(dir + "/missing.srb", {&member}), Error);
 }

@@ -268,9 +268,12 @@ TEST_F(FiltersThroughAFakeHost, EveryFilterRunsAndReturnsEveryFigureItLogs) {
   const Result job = job_spec.run(job_values, host);
   std::set<std::string> job_keys = display;
   job_keys.insert({"layers", "points", "transferred_layers", "resliced_layers", "encoding_cached", "layer_ranges",
-                   "slicing_seconds", "masks_seconds", "seconds"});
+                   "reused", "direct_reason", "output_path", "slicing_seconds", "masks_seconds", "seconds"});
   EXPECT_EQ(keys_of(job), job_keys);
   EXPECT_EQ(count(job, "transferred_layers"), int64_t(direct.layers()));
+  EXPECT_EQ(count(job, "reused"), 1);
+  EXPECT_EQ(std::get<std::string>(job.at("direct_reason")), "");
+  EXPECT_EQ(std::get<std::string>(job.at("output_path")), path("job.sl1"));
   EXPECT_EQ(count(job_spec.run(job_values, host), "encoding_cached"), 1);
 
   const FilterSpec& compare_spec = spec_named("compare_mask_stacks");
@@ -332,8 +335,12 @@ TEST_F(FiltersThroughAFakeHost, MakePlateJobPutsTheShownMeshesOnPlatesAndReadsIt
                             {"placements_output", path("plates.json")}}),
       host);
   EXPECT_EQ(keys_of(plate), (std::set<std::string>{"plates", "members", "layers", "points", "transferred_layers",
-                                                   "resliced_layers", "encoding_cached", "arrange_seconds",
-                                                   "slicing_seconds", "seconds", "area_used_1"}));
+                                                   "resliced_layers", "direct_members", "encoding_cached",
+                                                   "arrange_seconds", "slicing_seconds", "seconds", "area_used_1",
+                                                   "output_1", "layout_1"}));
+  EXPECT_EQ(std::get<std::string>(plate.at("output_1")), path("plate_1.sl1"));
+  EXPECT_EQ(std::get<std::string>(plate.at("layout_1")), path("plate_1_layout.png"));
+  EXPECT_EQ(count(plate, "direct_members"), 0);
   EXPECT_EQ(count(plate, "plates"), 1);
   EXPECT_EQ(count(plate, "members"), 2);
   SliceOptions options;
@@ -393,17 +400,52 @@ TEST_F(FiltersThroughAFakeHost, MakePlateJobPutsTheShownMeshesOnPlatesAndReadsIt
             }).find("give placements_file"),
             std::string::npos);
 
-  // Every mesh, the renumbered copy included: it is no member of the encoding's family.
-  EXPECT_NE(test::error_of([&] {
-              plate_spec.run(defaults(plate_spec, {{"encoding_file", path("s.srb")}, {"output_path", path("all.sl1")}},
-                                      {{"visible_only", 0}}),
+  // Every mesh, the renumbered copy included: it is no member of the encoding's family, so it is
+  // sliced directly and the result says why; strict, the plate is refused naming it.
+  const Result all = plate_spec.run(
+      defaults(plate_spec, {{"encoding_file", path("s.srb")}, {"output_path", path("all.sl1")}}, {{"visible_only", 0}}),
+      host);
+  EXPECT_EQ(count(all, "members"), 3);
+  EXPECT_EQ(count(all, "direct_members"), 1);
+  const std::string name = "mesh2";  // FakeHost's name of mesh 2
+  ASSERT_TRUE(all.count("direct_reason_" + name)) << name;
+  EXPECT_EQ(count(all, "sliced_directly_" + name), 1);
+  EXPECT_EQ(std::get<std::string>(all.at("direct_reason_" + name))
+                .rfind("its faces differ from those of the mesh the encoding was made from", 0),
+            0u);
+  EXPECT_EQ(count(all, "transferred_layers"), int64_t(2 * layers));
+  EXPECT_EQ(count(all, "resliced_layers"), int64_t(layers));
+  EXPECT_EQ(test::error_of([&] {
+              plate_spec.run(defaults(plate_spec, {{"encoding_file", path("s.srb")}, {"output_path", path("strict.sl1")}},
+                                      {{"visible_only", 0}, {"strict", 1}}),
                              host);
-            }).find("faces differ"),
-            std::string::npos);
+            }).rfind(name + " cannot be made by reuse: its faces differ", 0),
+            0u);
+  EXPECT_FALSE(std::filesystem::exists(path("strict_1.sl1")));
   host.hidden = {0, 1, 2};
   EXPECT_NE(test::error_of([&] { plate_spec.run(defaults(plate_spec, {{"output_path", path("none.sl1")}}), host); })
                 .find("no shown mesh with faces"),
             std::string::npos);
+}
+
+// docs/formats.md's "Filter result line" table names every key each filter's spec declares (a
+// per-plate or per-member key by its prefix, e.g. `area_used_1` for "area_used_*").
+TEST(Filters, TheFormatsDocumentNamesEveryResultKey) {
+  std::ifstream in(std::string(SLICEREUSE_EXAMPLES_DIR) + "/../docs/formats.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string doc = text.str();
+  for (const FilterSpec& f : filter_specs()) {
+    const size_t row = doc.find("| `" + f.python_name + "` |");
+    ASSERT_NE(row, std::string::npos) << f.python_name << " has no row";
+    const std::string line = doc.substr(row, doc.find('\n', row) - row);
+    ASSERT_FALSE(f.results.empty()) << f.python_name;
+    for (const std::string& key : f.results) {
+      const bool pattern = key.size() > 2 && key.compare(key.size() - 2, 2, "_*") == 0;
+      const std::string named = "`" + (pattern ? key.substr(0, key.size() - 1) : key + "`");
+      EXPECT_NE(line.find(named), std::string::npos) << f.python_name << " result " << key;
+    }
+  }
 }
 
 // examples/*.mlx: every filter is in one, and wherever a script names a filter it lists every

@@ -28,6 +28,7 @@
 #include "slicereuse/transfer/transfer_contours.h"
 #include "slicereuse/util/format.h"
 #include "slicereuse/slicing/slice_layers.h"
+#include "shuffle_mesh.h"
 #include "temp_folder.h"
 #include "test_files.h"
 #include "unsampled_edge.h"
@@ -513,6 +514,75 @@ TEST_F(PlateJobTest, PlateMasksEqualTheUnionOfTheMembersOwnMasksByReuseAndDirect
     EXPECT_EQ(rr.transferred_layers + rr.resliced_layers, member_layers);
     expect_union(path(tag + "_ranges"), own);
   }
+}
+
+// A plate of members of two connectivities, by reuse: the member whose faces are not the
+// encoding's mesh's (the same surface, renumbered) is sliced directly on the encoding's planes,
+// made where drawn and in ranges alike; the plate's masks are the union of every member's own,
+// and the stats say which member was sliced directly and why. Strict, the plate is refused,
+// naming the member, and nothing is written.
+TEST_F(PlateJobTest, AMemberOfAnotherConnectivityIsSlicedDirectlyOnAReusedPlate) {
+  const test::FamilyOptions o = small_arch();
+  const Mesh base = test::make_family_base(o);
+  std::vector<Mesh> members = {test::make_family_member(base, o, 1), test::make_family_member(base, o, 2),
+                               test::shuffle_mesh(test::make_family_member(base, o, 3), 11).mesh};
+  const std::vector<std::string> names = {"m1", "m2", "renumbered"};
+  SliceOptions so;
+  so.thickness = 0.1;
+  const Slices encoding = slice_layers(base, so);
+  std::vector<const Mesh*> ptrs;
+  for (const Mesh& m : members) ptrs.push_back(&m);
+  PrinterProfile profile = display(500, 400);
+  profile.antialiasing = true;
+  const Arrangement a = arrange_plates(ptrs, names, printer_platform(profile), {});
+  ASSERT_EQ(a.members.size(), 1u) << "the test wants one plate";
+  std::vector<Mesh> placed;
+  std::vector<std::string> own;
+  size_t renumbered_layers = 0;
+  for (size_t m = 0; m < members.size(); ++m) {
+    placed.push_back(place_mesh(members[m], a.placement[m]));
+    SliceOptions mo = so;
+    mo.z_start = encoding.z_start;
+    mo.encoding = false;
+    const Slices direct = slice_layers(placed.back(), mo);
+    if (m == 2) renumbered_layers = direct.layers();
+    own.push_back(path("own_" + names[m]));
+    export_masks(direct, profile, own.back());
+  }
+  ASSERT_GT(renumbered_layers, 0u);
+  const Buffer<uint32_t> ends = encoded_edge_ends(encoding, base);
+  const VertexOrder order = vertex_order(ends);
+  PlateJobOptions reuse;
+  reuse.encoding = &encoding;
+  reuse.edge_ends = &ends;
+  reuse.vertex_order = &order;
+  reuse.names = names;
+  for (uint64_t budget : {uint64_t(0), uint64_t(200000)}) {
+    reuse.range_budget_bytes = budget;
+    const std::string out = path(budget ? "ranges.sl1" : "where_drawn.sl1");
+    const PlateJobStats st = export_plate(placed, reuse, profile, out);
+    EXPECT_EQ(st.ranges == 0, budget == 0);
+    ASSERT_EQ(st.direct_reasons.size(), 3u);
+    EXPECT_EQ(st.direct_reasons[0], "");
+    EXPECT_EQ(st.direct_reasons[1], "");
+    EXPECT_EQ(st.direct_reasons[2].rfind("its faces differ from those of the mesh the encoding was made from", 0), 0u)
+        << st.direct_reasons[2];
+    // The family's members are transferred but for the layers failing their certificate; every
+    // layer of the other is sliced.
+    size_t failing = 0;
+    for (size_t m = 0; m < 2; ++m) {
+      const ExactTransfer t(encoding, placed[m]);
+      for (size_t k = 0; k < t.layers(); ++k) failing += !t.transferable(k) || !t.certified(k);
+    }
+    EXPECT_EQ(st.resliced_layers, renumbered_layers + failing);
+    EXPECT_GT(st.transferred_layers, 0u);
+    expect_union(out, own);
+  }
+  reuse.strict = true;
+  const std::string e = test::error_of([&] { export_plate(placed, reuse, profile, path("strict.sl1")); });
+  EXPECT_EQ(e.rfind("renumbered cannot be made by reuse: its faces differ", 0), 0u) << e;
+  EXPECT_NE(e.find("strict is on"), std::string::npos) << e;
+  EXPECT_FALSE(std::filesystem::exists(path("strict.sl1")));
 }
 
 // Cancelled half-way through its masks, a plate leaves nothing: made where drawn (reusing),

@@ -4,11 +4,26 @@
 
 namespace slicereuse {
 
-std::shared_ptr<const CachedEncoding> EncodingCache::get(const std::string& path, const Mesh& member, bool* hit,
+namespace {
+
+// The first of members whose faces are the encoding's mesh's, or null.
+const Mesh* first_of_family(const Slices& encoding, const std::vector<const Mesh*>& members) {
+  for (const Mesh* m : members) {
+    validate_mesh(*m);
+    if (family_difference(encoding, *m).empty()) return m;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+std::shared_ptr<const CachedEncoding> EncodingCache::get(const std::string& path,
+                                                         const std::vector<const Mesh*>& members, bool* hit,
                                                          const Progress& progress) {
   std::lock_guard<std::mutex> lock(mutex_);
   const FileIdentity identity = slice_file_identity(path);
-  if (entry_ && entry_->path == path && entry_->identity == identity) {
+  if (entry_ && entry_->path == path && entry_->identity == identity &&
+      (!entry_->edge_ends.empty() || !first_of_family(entry_->encoding, members))) {
     if (hit) *hit = true;
     return entry_;
   }
@@ -18,7 +33,8 @@ std::shared_ptr<const CachedEncoding> EncodingCache::get(const std::string& path
   fresh->path = path;
   fresh->identity = identity;
   fresh->encoding = read_encoding_file(path, progress);
-  fresh->edge_ends = encoded_edge_ends(fresh->encoding, member);
+  if (const Mesh* member = first_of_family(fresh->encoding, members))
+    fresh->edge_ends = encoded_edge_ends(fresh->encoding, *member);
   entry_ = std::move(fresh);
   return entry_;
 }

@@ -179,11 +179,10 @@ Slices transfer_barycentric(const Slices& enc, const Ends& ends, const Mesh& tar
 void check_family(const Slices& encoding, const Mesh& mesh) {
   validate_mesh(mesh);
   if (!encoding.has_encoding()) throw Error("transfer needs an encoding (face and area coordinates per point)");
-  const Fingerprint fp = mesh_fingerprint(mesh);
-  if (fp != encoding.fingerprint)
-    throw Error("the target mesh's faces differ from those of the mesh the encoding was made from (encoding: " +
-                describe_fingerprint(encoding.fingerprint) + "; target: " + describe_fingerprint(fp) +
-                "); a target with other connectivity needs a cross-parameterization map (map file from Cross-Parameterize "
+  const std::string difference = family_difference(encoding, mesh);
+  if (!difference.empty())
+    throw Error("the target mesh's " + difference +
+                "; a target with other connectivity needs a cross-parameterization map (map file from Cross-Parameterize "
                 "Meshes)");
 }
 
@@ -204,6 +203,13 @@ Slices transfer(const Slices& encoding, const Ends& ends, const Mesh& target, co
 }
 
 }  // namespace
+
+std::string family_difference(const Slices& encoding, const Mesh& mesh) {
+  const Fingerprint fp = mesh_fingerprint(mesh);
+  if (fp == encoding.fingerprint) return "";
+  return "faces differ from those of the mesh the encoding was made from (encoding: " +
+         describe_fingerprint(encoding.fingerprint) + "; target: " + describe_fingerprint(fp) + ")";
+}
 
 Slices transfer_contours(const Slices& encoding, const Mesh& target, const TransferOptions& options,
                          TransferStats* stats, const Progress& progress) {

@@ -1,13 +1,16 @@
 #pragma once
-// plate_job: one build plate's print file. Every layer's mask is the union of the placed
-// members' layers at that height.
+// plate_job: one build plate's print file, the one pipeline every print job runs through (Make
+// Print Job is a plate of one member). Every layer's mask is the union of the members' layers at
+// that height.
 //
 // Input: the members already placed (place_mesh, placement.h: turned and moved in x-y, z
 // untouched), and how their contours are made:
 //   reuse (options.encoding set): the source's encoding transferred onto each member's placed
 //     vertices in exact mode (transfer_contours.h), so each member's layers equal direct slicing
 //     of the placed member; the plate's planes are the encoding's (z_start, thickness): every
-//     member sits on the source's build plate, as Make Print Job transfers it;
+//     member sits on the source's build plate. A member whose faces are not the encoding's mesh's
+//     (another connectivity) is sliced directly on those planes, and stats.direct_reasons says
+//     why; with options.strict it fails the job instead;
 //   direct (options.encoding null): each placed member sliced directly on the plate's planes,
 //     options.slicing's thickness from its z_start (NaN: the lowest vertex of all members).
 // The plate has the planes z_start + (k + 1/2) h up to its tallest member's top; each member's
@@ -15,20 +18,21 @@
 // simply ends). Layer k's contours are the members' layer k contours one after another: their
 // footprints lie apart (arrange_plates.h), so the nonzero rule fills exactly the union of
 // their own masks, and no anti-aliased pixel is shared when they are more than a pixel apart.
-// Memory: reusing, each member's transfer is prepared once for the plate (ExactTransfer,
-// transfer_contours.h), and each member's layer k is transferred where layer k's mask is drawn,
-// on that thread (LayerMaker, export_masks.h): the plate holds a few layers of points, and those
-// of the layers its members cannot transfer, which are sliced directly beforehand (the layers
-// the certificate refuses; a member changed in z fails it on some). When those would hold more
-// than the budget below, or slicing directly, the layers are made and exported a range at a time
-// (SliceChunks, export_masks.h), a range holding at most options.range_budget_bytes of contour
-// points of all members (0: the whole plate at once; reusing, at most 256 MB, so that a plate
-// fills at most that much fresh memory), each member's as it was made (the masks draw them where
-// they are, with no merged copy). Every way gives the same masks as the plate made whole.
+// Memory: reusing, each member's transfer is prepared once (ExactTransfer) and its layer k is
+// transferred where layer k's mask is drawn, on that thread (LayerMaker, export_masks.h), so the
+// plate holds a few layers of points plus those of the layers made directly beforehand (the
+// layers the certificate refuses, and every layer of a member sliced directly). When those would
+// hold more than the range budget, when slicing directly, or when the whole stack is asked for,
+// the layers are made and exported a range at a time (SliceChunks, export_masks.h), each member's
+// as it was made (no merged copy). A range holds at most the budget of points of all members:
+// range_budget_bytes, or memory_share of the memory still available (memory_budget.h; slicing
+// directly, memory kept for reuse is reclaimed before settling for ranges); reusing, at most
+// 256 MB, so that a plate fills little fresh memory. Every way gives the same masks.
 // Output: the print file of the profile (export_masks: PNG folder, .sl1, .sl1s, .goo), atomic, and
-// the figures. Throws Error for no members, an encoding without a layer thickness, or whatever
-// transfer, slicing or export refuse.
+// the figures. Throws Error for no members, an encoding without a layer thickness, a member of
+// another family with strict, or whatever transfer, slicing or export refuse.
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -43,13 +47,23 @@ namespace slicereuse {
 
 struct PlateJobOptions {
   const Slices* encoding = nullptr;  // the source's encoding (reuse), or null (direct slicing)
-  // Its encoded_edge_ends (transfer_contours.h), or null: then looked up in each member's faces.
+  // Its encoded_edge_ends (transfer_contours.h), or null or empty: then looked up in each
+  // member's faces.
   const Buffer<uint32_t>* edge_ends = nullptr;
   // With edge_ends, their vertex_order (transfer_contours.h), or null: then each member's layers
   // are transferred from its own vertex array, in its own order.
   const VertexOrder* vertex_order = nullptr;
-  SliceOptions slicing;              // direct slicing's thickness and z_start
+  SliceOptions slicing;  // direct slicing's thickness and z_start
+  // A range's budget in bytes of points (0: none), or, when memory_share > 0, that share of
+  // available_memory() (memory_budget.h).
   uint64_t range_budget_bytes = 0;
+  double memory_share = 0;
+  bool strict = false;  // reusing: a member of another family fails the job
+  // The members' names for messages (a strict refusal); empty: "member 1", "member 2", ...
+  std::vector<std::string> names;
+  // When set, the plate is made in one range and this sees its parts (one per member with
+  // layers) before their masks are drawn: a print job's contour file.
+  std::function<void(const std::vector<SlicePart>& parts)> whole_stack;
 };
 
 struct PlateJobStats {
@@ -57,17 +71,16 @@ struct PlateJobStats {
   size_t points = 0;              // all members' contour points
   size_t transferred_layers = 0;  // member layers, summed over members
   size_t resliced_layers = 0;     // member layers sliced directly (all of them without an encoding)
-  size_t ranges = 1;               // of layers made before their masks; 0: made where drawn
+  size_t ranges = 1;              // of layers made before their masks; 0: made where drawn
   double z_start = 0, thickness = 0;
   // Transfer or slicing, in all ranges; made where drawn, summed over the threads that made the
   // layers (it overlaps the masks then), plus the slicing beforehand.
   double slicing_seconds = 0;
+  // Per member: why it was sliced directly although an encoding was given ("" when reused, and
+  // for every member of a plate sliced directly by choice).
+  std::vector<std::string> direct_reasons;
   MaskExportStats masks;
 };
-
-// The plate's planes for options (see above), and its z_start and thickness.
-std::vector<double> plate_planes(const std::vector<Mesh>& placed, const PlateJobOptions& options, double* z_start,
-                                 double* thickness);
 
 PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOptions& options,
                            const PrinterProfile& profile, const std::string& output_path,

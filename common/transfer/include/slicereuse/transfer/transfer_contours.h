@@ -20,6 +20,7 @@
 // memory-bound, so that is what it costs.
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "slicereuse/mesh/mesh.h"
@@ -48,6 +49,11 @@ struct TransferStats {
   size_t unplaced_points = 0;
   size_t dropped_contours = 0;
 };
+
+// family_difference: "" when mesh has the faces of the mesh the encoding was made from (the same
+// fingerprint), else how they differ, in words ("faces differ from those of ..."), for a job that
+// slices such a member directly instead. mesh must be valid (validate_mesh).
+std::string family_difference(const Slices& encoding, const Mesh& mesh);
 
 // Throws Error when target's fingerprint differs from encoding.fingerprint.
 Slices transfer_contours(const Slices& encoding, const Mesh& target, const TransferOptions& options,
