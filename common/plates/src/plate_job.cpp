@@ -61,19 +61,21 @@ struct PlateMember {
 // sample), and, when there are any (the member changed in z, and then some layers that pass the
 // sample fail the whole certificate), those the whole certificate refuses too, found now, so that
 // all are sliced in one pass (slicing one plane costs about as much as slicing them all: the
-// faces are sorted first).
+// faces are sorted first). When that is more than half of them, every layer is sliced, as
+// transfer_contours does (transfer_layers.h): transferring the rest would cost more.
 DirectLayers layers_to_slice(const PlateMember& p) {
   DirectLayers d;
   d.at.assign(p.layers(), kNotDirect);
-  if (!p.transfer) {
-    for (size_t k = 0; k < p.planes.size(); ++k) d.add(k, p.planes[k]);
-    return d;
+  if (p.transfer) {
+    const ExactTransfer& t = *p.transfer;
+    bool changed = false;
+    for (size_t k = 0; k < t.layers(); ++k) changed |= !t.transferable(k);
+    for (size_t k = 0; k < t.layers(); ++k)
+      if (!t.transferable(k) || (changed && !t.certified(k))) d.add(k, t.plane(k));
+    if (2 * d.planes.size() <= t.layers()) return d;
+    d.planes.clear();
   }
-  const ExactTransfer& t = *p.transfer;
-  bool changed = false;
-  for (size_t k = 0; k < t.layers(); ++k) changed |= !t.transferable(k);
-  for (size_t k = 0; k < t.layers(); ++k)
-    if (!t.transferable(k) || (changed && !t.certified(k))) d.add(k, t.plane(k));
+  for (size_t k = 0; k < p.layers(); ++k) d.add(k, p.transfer ? p.transfer->plane(k) : p.planes[k]);
   return d;
 }
 
