@@ -19,12 +19,11 @@ ParamList<ExportParams> export_params() {
   ParamList<ExportParams> l;
   l.file(&ExportParams::contour_file, ParamType::FileOpen, "contour_file", "Contour file", "*.ctr *.srb", nullptr,
          "Contour file written by Slice Mesh with Encoding or Transfer Slicing to Mesh. Empty: the current layer, a "
-         "contour file opened with File > Import Mesh (.ctr, .srb, .cli).")
-      .file(&ExportParams::output_path, ParamType::FileSave, "output_path", "Output folder, .sl1, .sl1s or .goo",
-            "*.sl1 *.sl1s *.goo",
-            kMaskOutputWhenEmpty,
-            "A folder for PNG images (created if missing; its parent must exist), or a file name ending in .sl1 or "
-            ".sl1s for a Prusa SL1/SL1S archive, or in .goo for an Elegoo print file (landscape displays).")
+         "contour file opened with File > Import Mesh (.ctr, .srb, .cli).");
+  add_print_file_output(l, &ExportParams::output_path,
+                        "A folder for PNG images (created if missing; its parent must exist), or a file name ending "
+                        "in .sl1 or .sl1s for a Prusa SL1/SL1S archive, or in .goo for an Elegoo print file "
+                        "(landscape displays).")
       .include(&ExportParams::printer, printer_params());
   return l;
 }

@@ -56,12 +56,6 @@ void add_placements_output(ParamList<P>& l, const char* when_empty, const char* 
          tooltip);
 }
 
-template <class P>
-ParamList<P>& add_output_path(ParamList<P>& l, const char* tooltip) {
-  return l.file(&P::output_path, ParamType::FileSave, "output_path", "Output .sl1, .sl1s, .goo or folder",
-         "*.sl1 *.sl1s *.goo", kMaskOutputWhenEmpty, tooltip);
-}
-
 // The number of the first plate a plate job makes: plate k alone, or 1.
 size_t first_plate(const PlateJobParams& p) { return p.plate > 0 ? size_t(p.plate) : 1; }
 
@@ -76,9 +70,11 @@ ParamList<PlateJobParams> plate_job_params() {
   add_placements_output(l, nullptr,
                         "Also write the plates' placements, members and area used here (JSON). Empty (the default): "
                         "not written.");
-  add_output_path(l, "One print file per plate, numbered: plate.sl1 gives plate_1.sl1, plate_2.sl1, ... (.sl1 or "
-                     ".sl1s: Prusa archives, .goo: Elegoo print files); a folder name gives folders name_1, name_2, "
-                     "... of PNG images. Each plate's layout picture is written beside it (plate_1_layout.png).")
+  add_print_file_output(l, &PlateJobParams::output_path,
+                        "One print file per plate, numbered: plate.sl1 gives plate_1.sl1, plate_2.sl1, ... (.sl1 or "
+                        ".sl1s: Prusa archives, .goo: Elegoo print files); a folder name gives folders name_1, "
+                        "name_2, ... of PNG images. Each plate's layout picture is written beside it "
+                        "(plate_1_layout.png).")
       .first_file([](const PlateJobParams& p) { return plate_file_name(p.output_path, first_plate(p)); });
   l.whole(&PlateJobParams::plate, "plate", "Only plate", 0, Range::at_least(0, ""),
           "0 (the default): every plate. 1, 2, ...: only that plate of the placements file, whose members are the "
@@ -257,9 +253,10 @@ ParamList<ArrangeParams> arrange_params() {
   add_arrangement(l);
   add_placements_output(l, "choose the placements file to write (.json)",
                         "The plates' placements, members and area used (JSON), for Make Plate Job's placements_file.");
-  add_output_path(l, "The print files the placements name, one per plate (plate.sl1 gives plate_1.sl1, "
-                     "plate_2.sl1, ...; a folder name gives name_1, name_2, ...); nothing is written there but "
-                     "each plate's layout picture beside it (plate_1_layout.png).")
+  add_print_file_output(l, &ArrangeParams::output_path,
+                        "The print files the placements name, one per plate (plate.sl1 gives plate_1.sl1, "
+                        "plate_2.sl1, ...; a folder name gives name_1, name_2, ...); nothing is written there but "
+                        "each plate's layout picture beside it (plate_1_layout.png).")
       .first_file([](const ArrangeParams& p) { return plate_layout_file_name(plate_file_name(p.output_path, 1)); });
   l.include(&ArrangeParams::printer, printer_params());
   return l;
