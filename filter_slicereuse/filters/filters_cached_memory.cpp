@@ -18,8 +18,8 @@ EncodingCache& encoding_cache() {
 }
 
 // Kept from the first job on (at most a quarter of the machine's memory, ReuseBuffers): the
-// kernel would zero gigabytes of fresh pages for every member or plate, and bench_member_loop
-// measured 2x the CPU time for transfer and 1.2-2.6x for direct slicing without this.
+// kernel would zero gigabytes of fresh pages for every member or plate (bench_member_loop shows
+// what that costs).
 void keep_buffers_for_the_next_job() {
   static ReuseBuffers keep;
 }

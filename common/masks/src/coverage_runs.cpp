@@ -68,10 +68,10 @@ struct PixelSums {
 // are not zero, one bit each, so that a row's sweep visits only those. The summary is kept on
 // displays whose rows have more than kScannedWords words of bits (most of a wide display's
 // words are zero); a narrower row's sweep reads its every word, which costs less than keeping
-// the summary (4 % of a 2560-pixel SL1S layer, where keeping it on an 11520-pixel Saturn saves
-// 6 %). Pixel (r, c) is number (r - r0) * stride + c + 1 in all; stride, a multiple of 64, is
-// at least W + 1, so each row's bits are whole words. A strip is small enough to stay in cache:
-// the pieces are added straight into it, in any order (the sums are of integers).
+// the summary (bench/RESULTS.md). Pixel (r, c) is number (r - r0) * stride + c + 1 in all;
+// stride, a multiple of 64, is at least W + 1, so each row's bits are whole words. A strip is
+// small enough to stay in cache: the pieces are added straight into it, in any order (the sums
+// are of integers).
 template <bool kSummary>
 struct Strip {
   static constexpr bool summary = kSummary;
@@ -437,7 +437,7 @@ void sweep_row(const Strip& st, int32_t r, const CoverageLevels& levels, Emit&& 
   st.touched[w0] &= ~uint64_t(1);
   int at = 0;  // columns before it are emitted
   // The touched pixels of word `word` of the row, bits, left to right. (Inlined by force: called
-  // from two loops, GCC 12 otherwise keeps carry and at in memory, 3 % of an SL1S layer.)
+  // from two loops, GCC 12 otherwise keeps carry and at in memory.)
   auto visit = [&](size_t word, uint64_t bits) __attribute__((always_inline)) {
     while (bits) {
       const int64_t j = int64_t(word - w0) * 64 + __builtin_ctzll(bits);

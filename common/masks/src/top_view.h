@@ -13,13 +13,11 @@
 // covered when its centre is inside), in the same visit to its points as its image, so the
 // picture costs no pass of its own over the contours. The view is made of at most
 // kTopViewLayers layers: the stack cut into that many bands of equal height, the top layer of
-// each (every layer of a stack of up to kTopViewLayers layers). Why: drawing all 14,484 layers of
-// the benchmark's arch doubled the CPU time of its binary .sl1 (1.9 -> 4.0 s), and drawing 290
-// layers of a plate of 3 arches (0.05 mm) was 6 % of its CPU time; a feature thinner than a
-// band (1/128 of the part's height) may be missing from the picture, whose shading by height
-// has 128 steps then. The map is in model
-// axes, whatever the display's orientation and mirrors: the picture shows the part, not the
-// printer's image of it.
+// each (every layer of a stack of up to kTopViewLayers layers). Why: drawing every layer of a
+// thin-layer stack would cost about as much CPU time as its masks (bench/RESULTS.md); a feature
+// thinner than a band (1/128 of the part's height) may be missing from the picture, whose
+// shading by height has 128 steps then. The map is in model axes, whatever the display's
+// orientation and mirrors: the picture shows the part, not the printer's image of it.
 #include <cstddef>
 #include <cstdint>
 #include <memory>

@@ -5,10 +5,9 @@
 //
 // Why not zip_open(path): libzip then writes into a temporary file of its own, which zip_close
 // renames onto path, and the fsync that commits the output waits for the whole archive to reach
-// the disk after its last entry (a plate of 3 SL1S members: 15 MB, 8 ms, and 2 ms in the
-// rename). Here the archive's writeback starts as it is written, every kWritebackBytes
-// (sync_file_range, which only starts it), while the later layers are still being drawn, so the
-// commit waits for the last few MB.
+// the disk after its last entry, then for the rename. Here the archive's writeback starts as it
+// is written, every kWritebackBytes (sync_file_range, which only starts it), while the later
+// layers are still being drawn, so the commit waits for the last few MB.
 //
 // Writes are gathered in a buffer of at least kWritebackBytes and written with pwrite; libzip's
 // rewrite of each entry's header after its data lands in the buffer while it is there. A failed

@@ -134,9 +134,8 @@ std::string StagedOutputs::folder(const std::string& path) {
 void StagedOutputs::commit() {
   // On the disk before renamed: a final name never refers to data that a power loss can take.
   // A folder (thousands of mask images) by one syncfs of its file system: an fsync per image
-  // waits for a journal commit and a disk cache flush each (3,621 images: 4-14 s on the
-  // development machine, syncfs 0.1 s). syncfs also writes what other programs left in that
-  // file system's cache, and reports a write error of theirs as well.
+  // would wait for a journal commit and a disk cache flush each. syncfs also writes what other
+  // programs left in that file system's cache, and reports a write error of theirs as well.
   for (const Output& o : outputs_) sync_to_disk(o.staged, o.is_folder ? ::syncfs : ::fsync);
   std::vector<std::string> changed;  // folders whose entries the renames changed
   for (Output& o : outputs_) {

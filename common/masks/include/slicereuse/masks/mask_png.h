@@ -8,16 +8,12 @@
 // along the edges, are runs of their own).
 // No row filter; the image data is deflated by RunDeflater (deflate_runs.h), which does what
 // zlib's run-length strategy does on masks in a fraction of the time: the 8-bit PNGs that
-// .sl1 archives need made zlib the bottleneck of mask export. libdeflate was measured against
-// it on the arch's masks (bench_masks --steps deflate): 20x slower at level 1 and 44 % larger,
-// 22x slower at level 6 for 6 % smaller streams; on anti-aliased masks 15x slower and 21 %
-// larger at level 1, 16x slower and 8 % larger at level 6.
+// .sl1 archives need made zlib the bottleneck of mask export; libdeflate, too, is far slower on
+// masks (bench_masks --steps deflate compares them; bench/RESULTS.md).
 // encode_rgba_png: width x height RGBA pixels (4 bytes each, row-major) -> an 8-bit RGBA PNG in
 // out (replaced), for the pictures of a print file (thumbnail_png.h): rows filtered with Sub
 // (each byte less the same channel's of the pixel before), so that a picture's runs of equal
-// pixels become runs of zeros for the same deflater. The two thumbnails of a plate of 3 arches
-// (400x400 and 800x480) took 8.4 ms with libpng (zlib level 3, no filter), 4 % of the plate's
-// time, and take 2.5-6.5 ms so, in PNGs a fifth larger (54 and 153 KB against 42 and 129 KB).
+// pixels become runs of zeros for the same deflater: faster than libpng, for somewhat larger PNGs.
 // decode_mask_png: a PNG file's bytes -> 8-bit grey pixels (other depths and colour types are
 // converted by libpng's simplified reader); name (a path or archive:entry) only appears in
 // error messages.

@@ -22,7 +22,7 @@
 //
 // Input: the mesh's flat arrays V (3 doubles per vertex) and F (3 corners per face), a face, an
 // edge, zk. Output: edges as local edge numbers, points as EdgePoint. Inline: these run in the
-// slicer's innermost loop, and in this form they compile to its former instructions.
+// slicer's innermost loop, and in this form they compile as tightly as code written in place.
 #include <cstddef>
 #include <cstdint>
 
