@@ -5,8 +5,9 @@
 # they are placed: --dont-arrange) into an .sl1 for the same display and layer height, one run
 # per plate: each plate's ratio, and all of them together (the lab's job, plate after plate).
 # Ours is timed three times, before, between and after PrusaSlicer's runs (a minute or more of
-# them), and each plate's ratio takes the median of the three: this virtual machine's speed
-# drifts by 20 % within minutes, and one pass before all of PrusaSlicer's runs measured the drift.
+# them), and each plate's ratio takes the median of the three: a shared machine's speed drifts
+# within minutes, and one pass before all of PrusaSlicer's runs would measure the drift too
+# (bench/RESULTS.md, "Method").
 #   bench/bench_plates.sh [--printer ID] [--faces N] [--thickness MM] [--members M] [--format EXT]
 #                         [--prusa-plates P]
 # (--format: our print file's extension, bench_plates' option; PrusaSlicer writes an .sl1.
