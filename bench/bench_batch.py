@@ -44,7 +44,8 @@ def main():
     meshes = sorted((a.out / "family").glob("member_*.ply"))
     rows = []
     for workers in range(0, a.max_workers + 1):
-        r = sr.family(meshes[0], meshes[1:], a.thickness, a.out / f"workers_{workers}", workers=workers)
+        r = sr.family(meshes[0], meshes[1:], a.thickness, a.out / f"workers_{workers}", extension=".sl1",
+                      workers=workers)
         assert r["failed"] == 0, r
         n = len(r["targets"])
         wall = r["seconds"] - r["source_seconds"]

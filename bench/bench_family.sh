@@ -56,7 +56,7 @@ import json, sys
 import slicereuse_pymeshlab as sr
 thickness, out, mode, *meshes = sys.argv[1:]
 print(json.dumps(sr.family(meshes[0], meshes[1:], float(thickness), out, direct=mode == "direct",
-                           details=True)))
+                           details=True, extension=".sl1")))
 PY
 }
 meshes=("$out"/family/member_*.ply)

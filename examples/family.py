@@ -8,15 +8,19 @@
                                       MESH0 MESH1 ...
 
 Default: slices MESH0 once with encoding, then for each member MESH1 ...: loads it, transfers
-the slicing (exact: the result equals slicing it) and writes DIR/<member file stem>.sl1 (or the
---format given), all in memory, with no contour file unless --keep-contours. --direct: the same
-outputs by slicing every member directly (the baseline). --verify: also slices each member
-directly and compares the masks (min_similarity 1 and max_grey_difference 0 mean identical).
+the slicing (exact: the result equals slicing it) and writes DIR/<member file stem> with the
+printer's own print file (its preset's extension in common/printer/presets.json: .sl1, .sl1s,
+.goo, or a folder of PNG images for the method's display, custom printers and the Photon Mono X;
+--format chooses another), all in memory, with no contour file unless --keep-contours.
+--direct: the same outputs by slicing every member directly (the baseline). --verify: also
+slices each member directly and compares the masks (min_similarity 1 and max_grey_difference 0
+mean identical).
 Prints one JSON object: {"source": MESH0, "seconds": total, "source_seconds", "engine",
 "failed", "targets": [{"mesh", "layers", "points", "resliced_layers", "seconds", "output",
 "worker"[, "min_similarity", "max_grey_difference"][, "resumed"]} or {"mesh", "worker",
 "error"}, ...]}; a member's seconds cover loading it, transferring or slicing it and writing its
-.sl1, "worker" says which worker process made it. A progress bar goes to a terminal's stderr.
+print file, "worker" says which worker process made it. A progress bar goes to a terminal's
+stderr.
 
 Members are tasks of a Dask cluster (python/slicereuse_batch.py): by default an embedded
 LocalCluster of --workers worker processes on this machine (default: one per two cores, each
@@ -29,12 +33,12 @@ status is 1.
 
 --plates: the lab's job instead, many members per print: MESH1 ... are arranged on build plates
 of the printer (footprints --spacing mm apart, 2 by default, and from the display's edges,
-turned about z where that packs more), one print file per plate DIR/plate_<k>.sl1 with its top
-view DIR/plate_<k>_layout.png, and DIR/plates.json, the placements (docs/formats.md);
---placements FILE places them as that file says instead. By reuse of MESH0's slicing, or
---direct; --verify compares each plate with direct slicing. Prints {"source", "members",
-"seconds", "arrange_seconds", "plates": [{"output", "layout", "members", "area_used"[,
-"min_similarity", "max_grey_difference"]}, ...]}.
+turned about z where that packs more), one print file per plate DIR/plate_<k> (with the
+printer's extension, as above) with its top view DIR/plate_<k>_layout.png, and DIR/plates.json,
+the placements (docs/formats.md); --placements FILE places them as that file says instead. By
+reuse of MESH0's slicing, or --direct; --verify compares each plate with direct slicing
+(DIR/direct/plate_<k>). Prints {"source", "members", "seconds", "arrange_seconds", "plates":
+[{"output", "layout", "members", "area_used"[, "min_similarity", "max_grey_difference"]}, ...]}.
 """
 import argparse
 import json
@@ -68,8 +72,9 @@ def main():
     ap.add_argument("--pixel-um", type=float, help="custom printer: pixel size in micrometres")
     ap.add_argument("--antialiasing", action="store_true", help="grey edge pixels from exact coverage")
     ap.add_argument("--gamma", type=float, help="anti-aliasing gamma (PrusaSlicer's gamma_correction; default 1)")
-    ap.add_argument("--format", default="sl1", choices=["sl1", "sl1s", "goo", "png"],
-                    help="print file: sl1 (the default), sl1s, goo, or png (a folder of PNG images)")
+    ap.add_argument("--format", choices=["sl1", "sl1s", "goo", "png"],
+                    help="print file: sl1, sl1s, goo, or png (a folder of PNG images); default: the printer's own "
+                         "(common/printer/presets.json)")
     ap.add_argument("--text", action="store_true",
                     help="write text .enc/.ctr instead of binary .srb (encoding, kept contours)")
     ap.add_argument("--plates", action="store_true",
@@ -115,7 +120,7 @@ def main():
     try:
         sr.load()
         bar = progress_bar if sys.stderr.isatty() else None
-        extension = "" if args.format == "png" else "." + args.format
+        extension = None if args.format is None else "" if args.format == "png" else "." + args.format
         if args.plates:
             result = sr.plates(args.meshes[0], args.meshes[1:], args.layer_thickness, args.out, profile=profile,
                                progress=bar, direct=args.direct, verify=args.verify, spacing_mm=args.spacing,

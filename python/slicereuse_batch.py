@@ -8,11 +8,12 @@ lost and nothing made twice (issue #18).
         ...
     entries = batch.run(engine, make, jobs, shared, progress)   # {job name: entry}
 
-A job is a plain dict: "name" (unique in its folder), "out" (the output folder), "outputs" (the
-paths it makes, under out), "key" (a digest of everything its outputs depend on: inputs'
-identities, parameters), "epoch" (the batch's creation time), "base" (what its entry says of it
-also when it fails, e.g. {"mesh": path}), and whatever make(job, shared_path) needs; make returns
-its entry, a JSON-able dict, or raises with a message. What makes each output durable and
+A job is a Job (a dataclass, pickled to the workers): its name (unique in its folder), out (the
+output folder), outputs (the paths it makes, under out), key (a digest of everything its outputs
+depend on: inputs' identities, parameters), epoch (the batch's creation time) and base (what its
+entry says of it also when it fails, e.g. {"mesh": path}); a pipeline's jobs are subclasses with
+the fields make(job, shared_path) needs. make returns the job's entry, a JSON-able dict, or raises
+with a message. What makes each output durable and
 checkable:
 - The C++ writers stage every output next to its final path (PATH.tmp-XXXXXX) and rename it
   there when complete; a task first removes what a killed earlier attempt may have staged, and
@@ -22,7 +23,7 @@ checkable:
   the resume check: the record is there, its key is the job's, and every output is there with
   that size and content (checked, not just present).
 - Print files record $SOURCE_DATE_EPOCH as their creation time; every task of a batch runs with
-  the batch's (job["epoch"]), so a task run again elsewhere makes the same bytes.
+  the batch's (job.epoch), so a task run again elsewhere makes the same bytes.
 
 On Dask every worker process runs setup() once when it starts (loading pymeshlab and the plugins:
 engine(..., setup=sr.load)), and gets
@@ -51,6 +52,17 @@ from distributed import WorkerPlugin
 RECORDS = ".slicereuse-batch"
 _RECORD_VERSION = 1
 IN_PROCESS = "in-process"
+
+
+@dataclass
+class Job:
+    """One task of a batch: what every job has (the module's docstring says what each field is)."""
+    name: str
+    out: str
+    outputs: list[str]
+    key: str
+    epoch: int
+    base: dict
 
 
 # ---- Records: what makes an output complete and valid ----
@@ -87,7 +99,7 @@ def _size(path):
 
 
 def record_path(job):
-    return Path(job["out"]) / RECORDS / (job["name"] + ".json")
+    return Path(job.out) / RECORDS / (job.name + ".json")
 
 
 def _write_atomically(path, text):
@@ -101,8 +113,8 @@ def _write_atomically(path, text):
 
 def write_record(job, entry):
     """Records job's outputs as complete (after they are), with its result entry."""
-    files = {str(o): {"size": _size(o), "sha256": _digest(o)} for o in job["outputs"]}
-    record = {"version": _RECORD_VERSION, "key": job["key"], "files": files, "entry": entry}
+    files = {str(o): {"size": _size(o), "sha256": _digest(o)} for o in job.outputs}
+    record = {"version": _RECORD_VERSION, "key": job.key, "files": files, "entry": entry}
     _write_atomically(record_path(job), json.dumps(record, indent=1))
 
 
@@ -111,10 +123,10 @@ def valid_record(job):
     (same key, every output there with the recorded size and content), else None."""
     try:
         record = json.loads(record_path(job).read_text())
-        if record.get("version") != _RECORD_VERSION or record.get("key") != job["key"]:
+        if record.get("version") != _RECORD_VERSION or record.get("key") != job.key:
             return None
         files = record["files"]
-        if sorted(files) != sorted(str(o) for o in job["outputs"]):
+        if sorted(files) != sorted(str(o) for o in job.outputs):
             return None
         for o, f in files.items():
             if not Path(o).exists() or _size(o) != f["size"] or _digest(o) != f["sha256"]:
@@ -134,7 +146,7 @@ def _remove(path):
 
 def remove_partial(job):
     """Removes what an attempt at job may have staged and not committed (PATH.tmp-*)."""
-    for o in job["outputs"]:
+    for o in job.outputs:
         o = Path(o)
         for staged in o.parent.glob(o.name + ".tmp-*"):
             _remove(staged)
@@ -143,13 +155,13 @@ def remove_partial(job):
 def prepare(job):
     """Before making job: its outputs folder must be reachable (a worker elsewhere must share the
     disk), an old record goes, and so does whatever an earlier attempt left."""
-    records = Path(job["out"]) / RECORDS
+    records = Path(job.out) / RECORDS
     if not records.is_dir():
-        raise RuntimeError(f"the output folder {job['out']} is not on this machine's disk ({socket.gethostname()}): "
+        raise RuntimeError(f"the output folder {job.out} is not on this machine's disk ({socket.gethostname()}): "
                            "every worker must write to the output folder at the same path (a shared file system)")
     record_path(job).unlink(missing_ok=True)
     remove_partial(job)
-    for o in job["outputs"]:
+    for o in job.outputs:
         if Path(o).is_dir():  # a PNG folder made again replaces the whole folder in one rename
             _remove(o)
 
@@ -230,9 +242,9 @@ def attempt(make, job, shared, worker):
     start = time.perf_counter()
     try:
         prepare(job)
-        with creation_time(job["epoch"]):
+        with creation_time(job.epoch):
             entry = make(job, local_path(shared))
-        entry = dict(job["base"], **entry, worker=worker)
+        entry = dict(job.base, **entry, worker=worker)
         entry.setdefault("seconds", time.perf_counter() - start)
         write_record(job, entry)
         return entry
@@ -288,7 +300,7 @@ class OnDask:
         from distributed import as_completed
         futures = {}
         for job in jobs:
-            f = self.client.submit(_on_worker, make, job, shared, key=f"{job['name']}-{job['key'][:16]}", pure=False)
+            f = self.client.submit(_on_worker, make, job, shared, key=f"{job.name}-{job.key[:16]}", pure=False)
             futures[f] = job
         for f in as_completed(futures):
             job = futures[f]
@@ -316,7 +328,7 @@ def _task_error(e):
 
 
 def failed_entry(job, message):
-    return dict(job["base"], error=message)
+    return dict(job.base, error=message)
 
 
 @contextlib.contextmanager
@@ -372,11 +384,11 @@ def run(engine_, make, jobs, shared, progress=None, done=0, steps=None):
     entries = {}
     try:
         for job, entry in engine_.submit_all(make, jobs, shared):
-            entries[job["name"]] = entry
+            entries[job.name] = entry
             done += 1
             if progress:
                 state = f"failed: {entry['error']}" if "error" in entry else f"done on {entry['worker']}"
-                progress(done, steps, f"{job['name']} {state}")
+                progress(done, steps, f"{job.name} {state}")
     finally:
         for job in jobs:
             remove_partial(job)

@@ -18,6 +18,7 @@ import contextlib
 import json
 import os
 import time
+from dataclasses import dataclass
 from pathlib import Path
 
 import slicereuse_batch as batch
@@ -25,6 +26,7 @@ import slicereuse_batch as batch
 ROOT = Path(__file__).resolve().parent.parent
 PLUGIN = Path(os.environ.get("SLICEREUSE_PLUGIN",
                              ROOT / "build" / "2025" / "plugins" / "libfilter_slicereuse.so"))
+PRESETS = ROOT / "common" / "printer" / "presets.json"
 
 _pymeshlab = None
 
@@ -49,6 +51,17 @@ def load(plugin=None):
     return pymeshlab
 
 
+def printer_extension(printer=None):
+    """The print file a printer's jobs are made into unless told otherwise: its preset's
+    "extension" in common/printer/presets.json (".sl1", ".sl1s", ".goo", or "" for a folder of PNG
+    images). printer: a preset id; None and "custom" (a display of one's own) take the method's."""
+    presets = {p["id"]: p for p in json.loads(PRESETS.read_text())["presets"]}
+    preset = "method" if printer in (None, "custom") else printer
+    if preset not in presets:
+        raise ValueError(f"unknown printer '{printer}': one of {', '.join(presets)}, or custom")
+    return presets[preset]["extension"]
+
+
 def _load_mesh(ms, path):
     ms.load_new_mesh(str(path))
     return ms.current_mesh_id()
@@ -60,15 +73,64 @@ def _check_files(paths):
             raise FileNotFoundError(f"mesh file not found: {path}")
 
 
+@dataclass
+class EncodingJob(batch.Job):
+    """The source sliced once with encoding, into outputs[0]."""
+    mesh: str
+    layer_thickness: float
+    binary: bool
+
+
+@dataclass
+class MemberJob(batch.Job):
+    """One member's print job (family()): target made into output by make_print_job; contours
+    and check ("" none) its contour file and its direct slicing, compared."""
+    target: str
+    output: str
+    contours: str
+    check: str
+    layer_thickness: float
+    profile: dict
+    details: bool
+
+
+@dataclass
+class ArrangeJob(batch.Job):
+    """The plates' arrangement (plates()): targets arranged by arrange_on_plates, or placed as
+    placements ("" none) says, for print files named after output, into outputs[0]."""
+    targets: list[str]
+    placements: str
+    spacing_mm: float
+    profile: dict
+    output: str
+
+
+@dataclass
+class PlateJob(batch.Job):
+    """One plate's print file (plates()): plate k of the placements file summary, its members at
+    paths, made after plate_output, the plates' pattern; check_output ("" none) the pattern of
+    its direct slicing, compared."""
+    plate: int
+    summary: str
+    paths: list[str]
+    layer_thickness: float
+    z_start: float
+    profile: dict
+    plate_output: str
+    check_output: str
+
+
 def _encode_source(source, out, layer_thickness, epoch, resume, binary=True):
     """Slices source once with encoding, as a batch job (complete or absent, recorded); with
     resume, an encoding an earlier run made from the same source and thickness is kept. Returns
     the encoding's path, named as the encoding beside the source's contour file <stem>.srb /
     .ctr would be (docs/formats.md, "File names")."""
     encoding = Path(out) / (Path(source).stem + ("_enc.srb" if binary else ".enc"))
-    job = {"name": encoding.name, "out": str(out), "outputs": [str(encoding)], "epoch": epoch,
-           "base": {"mesh": str(source)}, "binary": binary, "layer_thickness": layer_thickness,
-           "key": batch.key_of(source=batch.file_identity(source), layer_thickness=layer_thickness, binary=binary)}
+    job = EncodingJob(name=encoding.name, out=str(out), outputs=[str(encoding)], epoch=epoch,
+                      base={"mesh": str(source)}, mesh=str(source), binary=binary,
+                      layer_thickness=layer_thickness,
+                      key=batch.key_of(source=batch.file_identity(source), layer_thickness=layer_thickness,
+                                       binary=binary))
     if not (resume and batch.valid_record(job)):
         made = batch.attempt(_make_encoding, job, "", batch.IN_PROCESS)
         if "error" in made:
@@ -77,10 +139,11 @@ def _encode_source(source, out, layer_thickness, epoch, resume, binary=True):
 
 
 def family(source, targets, layer_thickness, out, profile=None, binary=True, progress=None,
-           direct=False, verify=False, keep_contours=False, details=False, extension=".sl1",
+           direct=False, verify=False, keep_contours=False, details=False, extension=None,
            workers=0, scheduler=None, resume=False, send_encoding=False):
     """The production pipeline: one print job per family member, out/<member stem><extension>
-    (".sl1", ".sl1s", ".goo", or "" for a folder of PNG images).
+    (".sl1", ".sl1s", ".goo", or "" for a folder of PNG images; None: the printer's own,
+    printer_extension(profile's printer)).
 
     Default: slices source once with encoding (out/<source stem>_enc.srb), then for each
     target loads it and runs make_print_job, which transfers the encoding (kept in memory by
@@ -123,6 +186,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     # make_print_job's printer parameters (printer by id, or custom values; antialiasing, gamma,
     # offsets); the filter's defaults for the others.
     profile = profile or {}
+    extension = printer_extension(profile.get("printer")) if extension is None else extension
     out = Path(out).resolve()
     (out / batch.RECORDS).mkdir(parents=True, exist_ok=True)
     epoch = batch.batch_epoch()
@@ -144,12 +208,13 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
         output = out / f"{stem}{extension}"
         contours = out / (stem + (".srb" if binary else ".ctr")) if keep_contours else None
         check = out / f"{stem}.direct{extension}" if verify else None
-        jobs.append({"name": output.name, "out": str(out), "epoch": epoch, "base": {"mesh": str(target)},
-                     "outputs": [str(p) for p in (output, contours, check) if p],
-                     "key": batch.key_of(target=batch.file_identity(target), **parameters),
-                     "target": str(target), "output": str(output), "contours": str(contours or ""),
-                     "check": str(check or ""), "layer_thickness": layer_thickness, "profile": profile,
-                     "details": details})
+        # Workers elsewhere, started in other folders, open the member by its absolute path.
+        jobs.append(MemberJob(name=output.name, out=str(out), epoch=epoch, base={"mesh": str(target)},
+                              outputs=[str(p) for p in (output, contours, check) if p],
+                              key=batch.key_of(target=batch.file_identity(target), **parameters),
+                              target=str(Path(target).resolve()), output=str(output), contours=str(contours or ""),
+                              check=str(check or ""), layer_thickness=layer_thickness, profile=profile,
+                              details=details))
     with batch.engine(workers, scheduler, setup=load) as engine:
         targets_out = _run_jobs(engine, jobs, _make_member, encoding, send_encoding, resume, progress, step, steps)
         engine.finish(_free_cached_memory)
@@ -167,14 +232,14 @@ def _run_jobs(engine, jobs, make, encoding, send_encoding, resume, progress, don
         for job in jobs:
             kept = batch.valid_record(job)
             if kept:
-                entries[job["name"]] = dict(kept, resumed=True)
-    todo = [job for job in jobs if job["name"] not in entries]
+                entries[job.name] = dict(kept, resumed=True)
+    todo = [job for job in jobs if job.name not in entries]
     if todo:
         shared = engine.share(encoding, send_encoding) if encoding else ""
         entries.update(batch.run(engine, make, todo, shared, progress, done=done + len(entries), steps=steps))
     if progress:
         progress(steps, steps, "done")
-    return [entries[job["name"]] for job in jobs]
+    return [entries[job.name] for job in jobs]
 
 
 _failed_meshsets = []
@@ -232,31 +297,31 @@ def _forget_arranged(paths):
 
 def _make_encoding(job, _shared):
     with _meshset() as ms:
-        _load_mesh(ms, job["base"]["mesh"])
-        ms.apply_filter("slice_mesh_with_encoding", layer_thickness=job["layer_thickness"], contour_file="",
-                        encoding_file=job["outputs"][0], file_format=int(job["binary"]))
+        _load_mesh(ms, job.mesh)
+        ms.apply_filter("slice_mesh_with_encoding", layer_thickness=job.layer_thickness, contour_file="",
+                        encoding_file=job.outputs[0], file_format=int(job.binary))
     return {}
 
 
 def _make_member(job, encoding):
     """One member's print job (a family() task): loads it and runs make_print_job by transfer of
-    encoding (a path; "" slices it directly); with job["check"], also slices it directly into that
+    encoding (a path; "" slices it directly); with job.check, also slices it directly into that
     file and compares."""
     with _meshset() as ms:
         t0, c0 = time.perf_counter(), time.process_time()
-        _load_mesh(ms, job["target"])
+        _load_mesh(ms, job.target)
         # z_start is left at the filter's default: the mesh's lowest vertex.
-        r = ms.apply_filter("make_print_job", encoding_file=encoding, layer_thickness=job["layer_thickness"],
-                            contour_file=job["contours"], output_path=job["output"], **job["profile"])
+        r = ms.apply_filter("make_print_job", encoding_file=encoding, layer_thickness=job.layer_thickness,
+                            contour_file=job.contours, output_path=job.output, **job.profile)
         entry = {"layers": r["layers"], "points": r["points"], "resliced_layers": r["resliced_layers"],
-                 "seconds": time.perf_counter() - t0, "output": job["output"]}
-        if job["details"]:
+                 "seconds": time.perf_counter() - t0, "output": job.output}
+        if job.details:
             entry.update(slicing_seconds=r["slicing_seconds"], masks_seconds=r["masks_seconds"],
                          cpu_seconds=time.process_time() - c0)
-        if job["check"]:
-            ms.apply_filter("make_print_job", encoding_file="", layer_thickness=job["layer_thickness"],
-                            contour_file="", output_path=job["check"], **job["profile"])
-            c = ms.apply_filter("compare_mask_stacks", stack_a=job["output"], stack_b=job["check"], report_file="")
+        if job.check:
+            ms.apply_filter("make_print_job", encoding_file="", layer_thickness=job.layer_thickness,
+                            contour_file="", output_path=job.check, **job.profile)
+            c = ms.apply_filter("compare_mask_stacks", stack_a=job.output, stack_b=job.check, report_file="")
             entry.update(min_similarity=c["min_similarity"], max_grey_difference=c["max_grey_difference"])
     return entry
 
@@ -270,11 +335,12 @@ def _free_cached_memory():
 
 
 def plates(source, targets, layer_thickness, out, profile=None, progress=None, direct=False, verify=False,
-           spacing_mm=2.0, placements=None, extension=".sl1", workers=0, scheduler=None, resume=False):
+           spacing_mm=2.0, placements=None, extension=None, workers=0, scheduler=None, resume=False):
     """The lab's job: the targets arranged on build plates of the printer, one print file per
-    plate, out/plate_<k><extension> (".sl1", ".sl1s", ".goo", or "" for folders of PNG images),
-    its top view out/plate_<k>_layout.png, and out/plates.json, the placements (docs/formats.md,
-    "Placements file").
+    plate, out/plate_<k><extension> (".sl1", ".sl1s", ".goo", or "" for folders of PNG images;
+    None: the printer's own, printer_extension(profile's printer)), its top view
+    out/plate_<k>_layout.png, and out/plates.json, the placements (docs/formats.md, "Placements
+    file").
 
     Default: slices source once with encoding (out/<source stem>_enc.srb) and transfers it onto
     every placed target (exact); direct=True slices every target directly instead, from the
@@ -284,35 +350,38 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
     a task (make_plate_job with that plate only): in the process that arranged, it uses the
     members loaded there (each member is loaded once), elsewhere it loads its own. Workers,
     scheduler and resume as for family(). verify=True: also makes each plate by direct slicing into
-    out/plate.direct_<k><extension> and compares (min_similarity 1 and max_grey_difference 0 mean
-    identical); not counted in a plate's seconds.
+    out/direct/, under the plate's file name, and compares (min_similarity 1 and
+    max_grey_difference 0 mean identical); not counted in a plate's seconds.
     Returns {"source", "members", "seconds", "arrange_seconds", "engine", "failed", "plates":
     [{"output", "layout", "members", "area_used", "layers", "points", "seconds", "worker"[,
     "min_similarity", "max_grey_difference"][, "resumed"]} or {"output", "layout", "members",
     "area_used", "worker", "error"}, ...]}; "seconds" covers arranging and making every plate (not
     slicing the source)."""
     _check_files([source, *targets])
-    by_name = {Path(t).name: str(t) for t in targets}
+    by_name = {Path(t).name: str(Path(t).resolve()) for t in targets}
     if len(by_name) != len(targets):
         names = [Path(t).name for t in targets]
         raise ValueError("members with the same file name would have the same name on a plate: "
                          f"{sorted({n for n in names if names.count(n) > 1})}")
     load()
     profile = profile or {}
+    extension = printer_extension(profile.get("printer")) if extension is None else extension
     out = Path(out).resolve()
     (out / batch.RECORDS).mkdir(parents=True, exist_ok=True)
+    if verify:
+        (out / "direct").mkdir(exist_ok=True)
     epoch = batch.batch_epoch()
     encoding = "" if direct else _encode_source(source, out, layer_thickness, epoch, resume)
     start = time.perf_counter()
 
     summary = out / "plates.json"
-    arrange = {"name": summary.name, "out": str(out), "outputs": [str(summary)], "epoch": epoch,
-               "base": {"members": len(targets)}, "targets": [str(t) for t in targets],
-               "placements": str(placements or ""), "spacing_mm": spacing_mm, "profile": profile,
-               "output": str(out / f"plate{extension}"),
-               "key": batch.key_of(targets=[batch.file_identity(t) for t in targets], spacing_mm=spacing_mm,
-                                   placements=batch.file_identity(placements) if placements else None,
-                                   profile=profile, extension=extension)}
+    placements = str(Path(placements).resolve()) if placements else ""
+    arrange = ArrangeJob(name=summary.name, out=str(out), outputs=[str(summary)], epoch=epoch,
+                         base={"members": len(targets)}, targets=list(by_name.values()), placements=placements,
+                         spacing_mm=spacing_mm, profile=profile, output=str(out / f"plate{extension}"),
+                         key=batch.key_of(targets=[batch.file_identity(t) for t in targets], spacing_mm=spacing_mm,
+                                          placements=batch.file_identity(placements) if placements else None,
+                                          profile=profile, extension=extension))
     with batch.engine(workers, scheduler, setup=load) as engine:
         # Arranged on the engine, where the plates are made: the process that arranges keeps the
         # members it loaded, and its plates' tasks use them instead of loading them again.
@@ -332,17 +401,18 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
         jobs = []
         for k, plate in enumerate(layout["plates"], 1):
             output = plate["output"]
-            check = out / f"plate.direct_{k}{extension}" if verify else None
+            # The direct slicing's pattern has the plates' name in its own folder, so its plate k
+            # has plate k's file name.
+            check = out / "direct" / Path(output).name if verify else None
             members = [m["name"] for m in plate["members"]]
-            jobs.append({"name": Path(output).name, "out": str(out), "epoch": epoch,
-                         "base": {"output": output, "layout": str(Path(output).with_suffix("")) + "_layout.png",
-                                  "members": members, "area_used": plate["area_used"]},
-                         "outputs": [str(p) for p in (output, check) if p],
-                         "key": batch.key_of(plate=k, **parameters), "plate": k, "summary": str(summary),
-                         "paths": [by_name[m] for m in members], "layer_thickness": layer_thickness,
-                         "z_start": arranged["z_start"], "profile": profile, "check": str(check or ""),
-                         "plate_output": str(out / f"plate{extension}"),
-                         "check_output": str(out / f"plate.direct{extension}")})
+            jobs.append(PlateJob(name=Path(output).name, out=str(out), epoch=epoch,
+                                 base={"output": output, "layout": str(Path(output).with_suffix("")) + "_layout.png",
+                                       "members": members, "area_used": plate["area_used"]},
+                                 outputs=[str(p) for p in (output, check) if p],
+                                 key=batch.key_of(plate=k, **parameters), plate=k, summary=str(summary),
+                                 paths=[by_name[m] for m in members], layer_thickness=layer_thickness,
+                                 z_start=arranged["z_start"], profile=profile, plate_output=arrange.output,
+                                 check_output=str(out / "direct" / f"plate{extension}") if verify else ""))
         plates_out = _run_jobs(engine, jobs, _make_plate, encoding, False, resume, progress, 1, steps)
         engine.finish(_free_cached_memory)
     return {"source": str(source), "members": arranged["members"], "seconds": time.perf_counter() - start,
@@ -352,7 +422,7 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
 
 def _arrange(job, _shared):
     """The plates' placements (a plates() task, on the engine): every target loaded, arranged by
-    arrange_on_plates or placed as job["placements"] says, into job["outputs"][0] with the layout
+    arrange_on_plates or placed as job.placements says, into job.outputs[0] with the layout
     pictures; also the lowest vertex of all targets, where direct slicing of every plate starts.
     The loaded targets are kept in this process for its plates' tasks (_arranged)."""
     global _arranged
@@ -360,11 +430,11 @@ def _arrange(job, _shared):
     ids = {}
     with _meshset() as ms:
         lowest = float("inf")
-        for t in job["targets"]:
+        for t in job.targets:
             ids[t] = _load_mesh(ms, t)
             lowest = min(lowest, ms.current_mesh().bounding_box().min()[2])
-        r = ms.apply_filter("arrange_on_plates", spacing_mm=job["spacing_mm"], placements_file=job["placements"],
-                            placements_output=job["outputs"][0], output_path=job["output"], **job["profile"])
+        r = ms.apply_filter("arrange_on_plates", spacing_mm=job.spacing_mm, placements_file=job.placements,
+                            placements_output=job.outputs[0], output_path=job.output, **job.profile)
     _arranged = {"ms": ms, "ids": ids, "identity": {t: batch.file_identity(t) for t in ids}}
     return {"members": r["members"], "arrange_seconds": r["arrange_seconds"], "z_start": lowest}
 
@@ -372,25 +442,25 @@ def _arrange(job, _shared):
 def _make_plate(job, encoding):
     """One plate's print file (a plates() task): its members (kept from the arrangement when it
     ran in this process, else loaded) made into that plate by transfer of encoding (a path; ""
-    slices directly from job["z_start"]); with job["check"], also by direct slicing into that
-    file, compared."""
+    slices directly from job.z_start); with job.check_output, also by direct slicing into that
+    pattern's plate, compared."""
     t0 = time.perf_counter()
-    kept = _arranged_members(job["paths"])
+    kept = _arranged_members(job.paths)
     with _meshset(kept) as ms:
         if kept is None:
-            for path in job["paths"]:
+            for path in job.paths:
                 _load_mesh(ms, path)
-        common = dict(layer_thickness=job["layer_thickness"], z_start=job["z_start"], placements_file=job["summary"],
-                      plate=job["plate"], placements_output="", visible_only=True, **job["profile"])
-        r = ms.apply_filter("make_plate_job", encoding_file=encoding, output_path=job["plate_output"], **common)
+        common = dict(layer_thickness=job.layer_thickness, z_start=job.z_start, placements_file=job.summary,
+                      plate=job.plate, placements_output="", visible_only=True, **job.profile)
+        r = ms.apply_filter("make_plate_job", encoding_file=encoding, output_path=job.plate_output, **common)
         entry = {"layers": r["layers"], "points": r["points"], "seconds": time.perf_counter() - t0}
-        if job["check"]:
-            ms.apply_filter("make_plate_job", encoding_file="", output_path=job["check_output"], **common)
-            c = ms.apply_filter("compare_mask_stacks", stack_a=job["base"]["output"], stack_b=job["check"],
+        if job.check_output:
+            ms.apply_filter("make_plate_job", encoding_file="", output_path=job.check_output, **common)
+            c = ms.apply_filter("compare_mask_stacks", stack_a=job.outputs[0], stack_b=job.outputs[1],
                                 report_file="")
             entry.update(min_similarity=c["min_similarity"], max_grey_difference=c["max_grey_difference"])
     if kept is not None:
-        _forget_arranged(job["paths"])
+        _forget_arranged(job.paths)
     return entry
 
 

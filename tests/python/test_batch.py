@@ -3,6 +3,7 @@ Dask cluster (a `dask scheduler` and two `dask worker` processes on localhost) a
 LocalCluster makes the same bytes as the in-process pipeline; a worker killed while it holds a
 task loses nothing and leaves no partial file; --resume after an interrupted run makes only what
 is missing or no longer valid; a failing member is reported while the others are made."""
+import dataclasses
 import json
 import os
 import signal
@@ -21,7 +22,7 @@ FAMILY = [str(ROOT / "scripts" / "python"), str(ROOT / "examples" / "family.py")
 EPOCH = "1764000000"  # every run here records this creation time, so whole files compare equal
 # Members that take about half a second each (anti-aliased 3840x2400 masks, 2000 layers), so a
 # worker can be caught holding one.
-SLOW = ["--layer-thickness", "0.004", "--printer", "anycubic_photon_mono_x", "--antialiasing"]
+SLOW = ["--layer-thickness", "0.004", "--printer", "anycubic_photon_mono_x", "--format", "sl1", "--antialiasing"]
 
 
 def family_py(*args, out, env=None, check=True):
@@ -33,8 +34,11 @@ def family_py(*args, out, env=None, check=True):
 
 
 def files(folder):
-    """The outputs of a folder, by name, with their bytes (the batch records aside)."""
-    return {p.name: p.read_bytes() for p in Path(folder).iterdir() if p.is_file()}
+    """The outputs of a folder and its subfolders (PNG folders, plates' direct/), by path in it, with
+    their bytes (the batch records aside)."""
+    folder = Path(folder)
+    return {str(p.relative_to(folder)): p.read_bytes() for p in folder.rglob("*")
+            if p.is_file() and batch.RECORDS not in p.relative_to(folder).parts}
 
 
 def partial_files(folder):
@@ -96,7 +100,7 @@ def test_a_dask_cluster_makes_the_same_bytes_as_this_process(make_family, tmp_pa
     to each worker) and on the embedded LocalCluster (the default) writes the in-process run's
     files byte for byte; each member says which worker made it."""
     members = make_family("arch", 6)
-    args = ["--layer-thickness", "0.1", "--verify", *members]
+    args = ["--layer-thickness", "0.1", "--format", "sl1", "--verify", *members]
     family_py("--workers", "0", *args, out=tmp_path / "here")
     reference = files(tmp_path / "here")
     assert sorted(reference) == sorted(["member_000_enc.srb"] + [f"member_00{k}{s}.sl1" for k in range(1, 6)
@@ -123,7 +127,7 @@ def test_plates_on_a_dask_cluster_are_the_same_bytes_and_resume(make_family, tmp
     cluster the plates' print files, layouts and placements are the in-process run's, byte for
     byte, and each equals direct slicing; --resume keeps every plate of a complete run."""
     members = make_family("arch", 8)
-    args = ["--plates", "--verify", "--layer-thickness", "0.1", "--printer", "method", *members]
+    args = ["--plates", "--verify", "--layer-thickness", "0.1", "--printer", "method", "--format", "sl1", *members]
     here = json.loads(family_py("--workers", "0", *args, out=tmp_path / "here").stdout)
     assert len(here["plates"]) >= 2 and here["members"] == 7  # the method's small display
     there = json.loads(family_py("--scheduler", cluster.address, *args, out=tmp_path / "cluster").stdout)
@@ -205,8 +209,8 @@ def test_a_failing_member_is_reported_and_the_others_are_made(make_family, tmp_p
     members = make_family("arch", 4)
     other = tmp_path / "ear.ply"  # not of the arch's family
     other.write_bytes(make_family("ear", 2)[1].read_bytes())
-    run = family_py("--layer-thickness", "0.1", members[0], members[1], other, members[2], out=tmp_path / "out",
-                    check=False)
+    run = family_py("--layer-thickness", "0.1", "--format", "sl1", members[0], members[1], other, members[2],
+                    out=tmp_path / "out", check=False)
     assert run.returncode == 1
     assert run.stderr.strip().endswith("family: 1 of 3 failed; their entries say why")
     result = json.loads(run.stdout)
@@ -236,15 +240,15 @@ def test_a_record_proves_its_outputs_by_content(tmp_path):
     the output folder says so."""
     (tmp_path / batch.RECORDS).mkdir()
     out = tmp_path / "a.sl1"
-    job = {"name": "a.sl1", "out": str(tmp_path), "outputs": [str(out)], "epoch": 0, "base": {"mesh": "a.ply"},
-           "key": batch.key_of(x=1)}
+    job = batch.Job(name="a.sl1", out=str(tmp_path), outputs=[str(out)], epoch=0, base={"mesh": "a.ply"},
+                    key=batch.key_of(x=1))
     entry = batch.attempt(lambda j, _: out.write_bytes(b"made") and {}, job, "", "here")
     assert entry["worker"] == "here" and batch.valid_record(job) == entry
-    assert batch.valid_record(dict(job, key=batch.key_of(x=2))) is None
+    assert batch.valid_record(dataclasses.replace(job, key=batch.key_of(x=2))) is None
     out.write_bytes(b"mad!")
     assert batch.valid_record(job) is None
     out.unlink()
     assert batch.valid_record(job) is None
-    elsewhere = dict(job, out=str(tmp_path / "not_here"))
+    elsewhere = dataclasses.replace(job, out=str(tmp_path / "not_here"))
     assert batch.attempt(lambda j, _: {}, elsewhere, "", "w9")["error"].startswith(
         f"the output folder {tmp_path / 'not_here'} is not on this machine's disk")

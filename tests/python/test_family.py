@@ -9,6 +9,7 @@ import pytest
 
 import slicereuse_pymeshlab as sr
 from conftest import ROOT, THICKNESS, raises_filter_error
+from test_batch import family_py
 
 SHAPES = ["arch", "ear", "handle", "box", "sphere", "torus"]
 TARGET_KEYS = {"mesh", "layers", "points", "resliced_layers", "seconds", "output", "worker"}
@@ -29,8 +30,8 @@ def test_reuse_and_direct_write_identical_print_jobs(make_family, tmp_path, shap
     every layer; a z change within one band re-slices that band and transfers most; a z change
     everywhere fails most certificates, so the member is sliced directly."""
     members = make_family(shape, 3, z_change=z_change)
-    reused = sr.family(members[0], members[1:], THICKNESS, tmp_path / "reuse", verify=True)
-    direct = sr.family(members[0], members[1:], THICKNESS, tmp_path / "direct", direct=True)
+    reused = sr.family(members[0], members[1:], THICKNESS, tmp_path / "reuse", verify=True, extension=".sl1")
+    direct = sr.family(members[0], members[1:], THICKNESS, tmp_path / "direct", direct=True, extension=".sl1")
     assert reused["source"] == direct["source"] == str(members[0])
     for r, d, member in zip(reused["targets"], direct["targets"], members[1:]):
         assert r["mesh"] == d["mesh"] == str(member)
@@ -89,7 +90,7 @@ def test_anti_aliased_print_jobs_of_a_printer_by_reuse_equal_direct_slicing(make
 
 def test_keep_contours_writes_each_members_contour_file(pymeshlab, make_family, tmp_path):
     members = make_family("arch", 3)
-    result = sr.family(members[0], members[1:], THICKNESS, tmp_path, keep_contours=True)
+    result = sr.family(members[0], members[1:], THICKNESS, tmp_path, keep_contours=True, extension=".sl1")
     for t, member in zip(result["targets"], members[1:]):
         ms = pymeshlab.MeshSet()
         ms.load_new_mesh(str(member))
@@ -124,8 +125,40 @@ def test_cli_prints_one_json_object(make_family, tmp_path):
     assert out.stderr == ""  # no progress bar when stderr is not a terminal
 
 
+PRESETS = json.loads(sr.PRESETS.read_text())["presets"]
+# Each preset by id, a custom printer (the method's display given by its values) and none.
+PRINTERS = [(p["id"], ["--printer", p["id"]], p["extension"], p["job"]["model"]) for p in PRESETS] + [
+    ("custom", ["--printer", "custom", "--width", "1024", "--height", "768", "--pixel-um", "75"], "", ""),
+    ("none", [], "", "")]
+
+
+@pytest.mark.parametrize("args, extension, model", [p[1:] for p in PRINTERS], ids=[p[0] for p in PRINTERS])
+def test_family_py_makes_the_printers_own_print_file(make_family, tmp_path, args, extension, model):
+    """Without --format, family.py makes the print file the printer's preset lists in
+    common/printer/presets.json (a folder of PNG images for custom printers and none): an .sl1s
+    for the SL1S that says it is for one, which its firmware lists."""
+    members = make_family("arch", 2)
+    run = family_py("--workers", "0", "--layer-thickness", "0.5", *args, *members, out=tmp_path)
+    result = json.loads(run.stdout)
+    (member,) = result["targets"]
+    output = tmp_path / f"{members[1].stem}{extension}"
+    assert member["output"] == str(output) and member["layers"] == 16, member
+    if extension in (".sl1", ".sl1s"):
+        with zipfile.ZipFile(output) as z:
+            assert f"printerModel = {model}\n" in z.read("config.ini").decode()
+        assert len(layer_pngs(output)) == 16
+        assert (model == "SL1S") == (extension == ".sl1s")
+    elif extension == ".goo":
+        assert output.read_bytes()[:4] == b"V3.0"
+    else:
+        assert sorted(p.name for p in output.iterdir()) == [f"layer{k:05d}.png" for k in range(16)]
+
+
 @pytest.mark.parametrize("args, message", [
     (["--layer-thickness", "0"], "--layer-thickness must be greater than 0"),
+    (["--layer-thickness", "0.1", "--printer", "nonesuch"],
+     "family: error: unknown printer 'nonesuch': one of method, prusa_sl1, prusa_sl1s_speed, "
+     "anycubic_photon_mono_x, elegoo_saturn_3_ultra, or custom"),
     (["--layer-thickness", "0.1", "MISSING"], "mesh file not found: "),
 ])
 def test_cli_errors_are_one_line(make_family, tmp_path, args, message):

@@ -199,7 +199,7 @@ def test_family_py_plates_verifies_every_plate(make_family, tmp_path):
     assert [[m["name"] for m in p["members"]] for p in written["plates"]] == [p["members"] for p in result["plates"]]
     for p, plate in zip(result["plates"], written["plates"]):
         assert p["min_similarity"] == 1.0 and p["max_grey_difference"] == 0, p
-        assert p["output"].endswith(".sl1")
+        assert p["output"].endswith(".sl1s")
         assert_layout_shows((tmp_path / p["layout"]).read_bytes(), written, plate, {m.name: m for m in members})
 
 
@@ -212,7 +212,8 @@ def test_plates_use_the_members_the_arrangement_loaded(pymeshlab, make_family, t
     loads = []
     load_mesh = sr._load_mesh
     monkeypatch.setattr(sr, "_load_mesh", lambda ms, path: loads.append(path) or load_mesh(ms, path))
-    args = dict(layer_thickness=THICKNESS, profile={"printer": "method", "antialiasing": True}, workers=0)
+    args = dict(layer_thickness=THICKNESS, profile={"printer": "method", "antialiasing": True}, extension=".sl1",
+                workers=0)
     kept = sr.plates(members[0], members[1:], out=tmp_path / "kept", **args)
     assert kept["failed"] == 0 and len(kept["plates"]) >= 2
     assert sorted(map(str, loads)) == sorted(map(str, members)), "the source once (its encoding), every member once (arranged)"
