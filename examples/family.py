@@ -4,7 +4,7 @@
                                       [--format EXT] [--direct] [--verify] [--keep-contours]
                                       [--plates [--spacing MM] [--placements FILE]]
                                       [--workers N | --scheduler tcp://HOST:PORT [--send-encoding]]
-                                      [--resume]
+                                      [--resume] [--strict]
                                       MESH0 MESH1 ...
 
 Default: slices MESH0 once with encoding, then for each member MESH1 ...: loads it, transfers
@@ -15,11 +15,14 @@ printer's own print file (its preset's extension in common/printer/presets.json:
 --direct: the same outputs by slicing every member directly (the baseline). --verify: also
 slices each member directly and compares the masks (min_similarity 1 and max_grey_difference 0
 mean identical).
+A member whose slicing cannot be reused (another connectivity, no map) is sliced directly, its
+entry's "method" "direct"; --strict fails it instead, with the reason.
 Prints one JSON object: {"source": MESH0, "seconds": total, "source_seconds", "engine",
 "failed", "targets": [{"mesh", "layers", "points", "resliced_layers", "seconds", "output",
-"worker"[, "min_similarity", "max_grey_difference"][, "resumed"]} or {"mesh", "worker",
-"error"}, ...]}; a member's seconds cover loading it, transferring or slicing it and writing its
-print file, "worker" says which worker process made it. A progress bar goes to a terminal's
+"method", "worker"[, "min_similarity", "max_grey_difference"][, "resumed"]}
+or {"mesh", "worker", "error"}, ...]}; a member's seconds cover loading it, transferring or
+slicing it and writing its print file, "method" is "reuse" or "direct", "worker" says which
+worker process made it. A progress bar goes to a terminal's
 stderr.
 
 Members are tasks of a Dask cluster (python/slicereuse_batch.py): by default an embedded
@@ -38,7 +41,8 @@ printer's extension, as above) with its top view DIR/plate_<k>_layout.png, and D
 the placements (docs/formats.md); --placements FILE places them as that file says instead. By
 reuse of MESH0's slicing, or --direct; --verify compares each plate with direct slicing
 (DIR/direct/plate_<k>). Prints {"source", "members", "seconds", "arrange_seconds", "plates":
-[{"output", "layout", "members", "area_used"[, "min_similarity", "max_grey_difference"]}, ...]}.
+[{"output", "layout", "members": [{"name", "method"}, ...], "area_used"[,
+"min_similarity", "max_grey_difference"]}, ...]}.
 """
 import argparse
 import json
@@ -87,6 +91,8 @@ def main():
     ap.add_argument("--send-encoding", action="store_true",
                     help="send the source's encoding to each worker once, instead of workers reading it from --out "
                          "(for workers elsewhere, when the shared folder is slow)")
+    ap.add_argument("--strict", action="store_true",
+                    help="fail a member whose slicing cannot be reused instead of slicing it directly")
     ap.add_argument("--resume", action="store_true",
                     help="skip members whose outputs an earlier run made complete and valid")
     ap.add_argument("meshes", nargs="+", metavar="MESH", help="the sliced mesh, then its family members")
@@ -114,6 +120,8 @@ def main():
         ap.error("--workers is for the embedded cluster; a --scheduler's cluster has its own workers")
     if args.send_encoding and (args.plates or args.direct):
         ap.error("--send-encoding is for members made by reuse, one print file each")
+    if args.strict and args.direct:
+        ap.error("--strict is for members made by reuse, not --direct")
     engine = {"workers": args.workers, "scheduler": args.scheduler, "resume": args.resume}
     if args.send_encoding:
         engine["send_encoding"] = True
@@ -124,12 +132,12 @@ def main():
         if args.plates:
             result = sr.plates(args.meshes[0], args.meshes[1:], args.layer_thickness, args.out, profile=profile,
                                progress=bar, direct=args.direct, verify=args.verify, spacing_mm=args.spacing,
-                               placements=args.placements, extension=extension, **engine)
+                               placements=args.placements, extension=extension, strict=args.strict, **engine)
         else:
             result = sr.family(args.meshes[0], args.meshes[1:], args.layer_thickness, args.out,
                                profile=profile, binary=not args.text, extension=extension, progress=bar,
                                direct=args.direct, verify=args.verify, keep_contours=args.keep_contours,
-                               **engine)
+                               strict=args.strict, **engine)
     except Exception as e:  # pymeshlab.PyMeshLabException, OSError, RuntimeError, ValueError
         if sys.stderr.isatty():
             sys.stderr.write("\n")

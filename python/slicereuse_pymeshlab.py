@@ -92,6 +92,7 @@ class MemberJob(batch.Job):
     layer_thickness: float
     profile: dict
     details: bool
+    strict: bool
 
 
 @dataclass
@@ -116,6 +117,7 @@ class PlateJob(batch.Job):
     layer_thickness: float
     z_start: float
     profile: dict
+    strict: bool
     plate_output: str
     check_output: str
 
@@ -140,7 +142,7 @@ def _encode_source(source, out, layer_thickness, epoch, resume, binary=True):
 
 def family(source, targets, layer_thickness, out, profile=None, binary=True, progress=None,
            direct=False, verify=False, keep_contours=False, details=False, extension=None,
-           workers=0, scheduler=None, resume=False, send_encoding=False):
+           workers=0, scheduler=None, resume=False, send_encoding=False, strict=False):
     """The production pipeline: one print job per family member, out/<member stem><extension>
     (".sl1", ".sl1s", ".goo", or "" for a folder of PNG images; None: the printer's own,
     printer_extension(profile's printer)).
@@ -156,6 +158,9 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     difference of a pixel's grey levels: 1 and 0 for identical masks); not counted in the
     target's seconds.
     keep_contours=True: also writes out/<stem>.srb (.ctr when binary is False).
+    A member whose slicing cannot be reused (another connectivity, no map) is sliced directly,
+    its entry's "method" "direct" (the filter's log says why); strict=True fails it instead, with
+    the reason.
 
     Where the members are made (slicereuse_batch.py): workers=0 (the default) in this process;
     workers=N an embedded Dask LocalCluster of N worker processes (None: one per two cores, slicereuse_batch.default_workers);
@@ -168,8 +173,9 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     that fails is reported with its message, and the others are made.
 
     Returns {"source", "seconds", "source_seconds", "engine", "failed", "targets": [{"mesh", "layers", "points",
-    "resliced_layers", "seconds", "output", "worker"[, "min_similarity", "max_grey_difference"]
-    [, "resumed"]} or {"mesh", "worker", "error"}, ...]} in the order of targets; a target's
+    "resliced_layers", "seconds", "output", "method", "worker"[, "min_similarity",
+    "max_grey_difference"][, "resumed"]} or {"mesh", "worker", "error"}, ...]} in the order of targets;
+    "method" "reuse" or "direct" (the filter's "reused"); a target's
     seconds cover loading it, transferring or slicing it and writing its print file; "worker"
     made it ("in-process", or the Dask worker's name); "resumed": made by an earlier run;
     "source_seconds": of "seconds", slicing the source (0 when kept or direct).
@@ -202,7 +208,8 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     source_seconds = time.perf_counter() - start
 
     parameters = dict(encoding=batch.file_identity(encoding) if encoding else None,
-                      layer_thickness=layer_thickness, profile=profile, verify=verify, details=details)
+                      layer_thickness=layer_thickness, profile=profile, verify=verify, details=details,
+                      strict=strict)
     jobs = []
     for target, stem in zip(targets, stems):
         output = out / f"{stem}{extension}"
@@ -214,7 +221,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
                               key=batch.key_of(target=batch.file_identity(target), **parameters),
                               target=str(Path(target).resolve()), output=str(output), contours=str(contours or ""),
                               check=str(check or ""), layer_thickness=layer_thickness, profile=profile,
-                              details=details))
+                              details=details, strict=strict))
     with batch.engine(workers, scheduler, setup=load) as engine:
         targets_out = _run_jobs(engine, jobs, _make_member, encoding, send_encoding, resume, progress, step, steps)
         engine.finish(_free_cached_memory)
@@ -312,9 +319,10 @@ def _make_member(job, encoding):
         _load_mesh(ms, job.target)
         # z_start is left at the filter's default: the mesh's lowest vertex.
         r = ms.apply_filter("make_print_job", encoding_file=encoding, layer_thickness=job.layer_thickness,
-                            contour_file=job.contours, output_path=job.output, **job.profile)
+                            contour_file=job.contours, output_path=job.output, strict=job.strict, **job.profile)
         entry = {"layers": r["layers"], "points": r["points"], "resliced_layers": r["resliced_layers"],
-                 "seconds": time.perf_counter() - t0, "output": job.output}
+                 "seconds": time.perf_counter() - t0, "output": job.output,
+                 "method": "reuse" if r["reused"] else "direct"}
         if job.details:
             entry.update(slicing_seconds=r["slicing_seconds"], masks_seconds=r["masks_seconds"],
                          cpu_seconds=time.process_time() - c0)
@@ -335,7 +343,8 @@ def _free_cached_memory():
 
 
 def plates(source, targets, layer_thickness, out, profile=None, progress=None, direct=False, verify=False,
-           spacing_mm=2.0, placements=None, extension=None, workers=0, scheduler=None, resume=False):
+           spacing_mm=2.0, placements=None, extension=None, workers=0, scheduler=None, resume=False,
+           strict=False):
     """The lab's job: the targets arranged on build plates of the printer, one print file per
     plate, out/plate_<k><extension> (".sl1", ".sl1s", ".goo", or "" for folders of PNG images;
     None: the printer's own, printer_extension(profile's printer)), its top view
@@ -349,14 +358,15 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
     members named by file name), placed as it says, as a task on the engine; then every plate is
     a task (make_plate_job with that plate only): in the process that arranged, it uses the
     members loaded there (each member is loaded once), elsewhere it loads its own. Workers,
-    scheduler and resume as for family(). verify=True: also makes each plate by direct slicing into
-    out/direct/, under the plate's file name, and compares (min_similarity 1 and
+    scheduler, resume and strict as for family(). verify=True: also makes each plate by direct
+    slicing into out/direct/, under the plate's file name, and compares (min_similarity 1 and
     max_grey_difference 0 mean identical); not counted in a plate's seconds.
     Returns {"source", "members", "seconds", "arrange_seconds", "engine", "failed", "plates":
     [{"output", "layout", "members", "area_used", "layers", "points", "seconds", "worker"[,
     "min_similarity", "max_grey_difference"][, "resumed"]} or {"output", "layout", "members",
-    "area_used", "worker", "error"}, ...]}; "seconds" covers arranging and making every plate (not
-    slicing the source)."""
+    "area_used", "worker", "error"}, ...]}; "members" [{"name", "method"}, ...] ({"name"} on a plate
+    that failed), "method" "reuse" or "direct" (the filter's "sliced_directly_<name>"); "seconds"
+    covers arranging and making every plate (not slicing the source)."""
     _check_files([source, *targets])
     by_name = {Path(t).name: str(Path(t).resolve()) for t in targets}
     if len(by_name) != len(targets):
@@ -397,7 +407,8 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
             progress(1, steps, f"{len(targets)} members on {len(layout['plates'])} plates")
 
         parameters = dict(placements=batch.file_identity(summary), encoding=batch.file_identity(encoding)
-                          if encoding else None, layer_thickness=layer_thickness, profile=profile, verify=verify)
+                          if encoding else None, layer_thickness=layer_thickness, profile=profile, verify=verify,
+                          strict=strict)
         jobs = []
         for k, plate in enumerate(layout["plates"], 1):
             output = plate["output"]
@@ -407,11 +418,12 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
             members = [m["name"] for m in plate["members"]]
             jobs.append(PlateJob(name=Path(output).name, out=str(out), epoch=epoch,
                                  base={"output": output, "layout": str(Path(output).with_suffix("")) + "_layout.png",
-                                       "members": members, "area_used": plate["area_used"]},
+                                       "members": [{"name": m} for m in members], "area_used": plate["area_used"]},
                                  outputs=[str(p) for p in (output, check) if p],
                                  key=batch.key_of(plate=k, **parameters), plate=k, summary=str(summary),
                                  paths=[by_name[m] for m in members], layer_thickness=layer_thickness,
-                                 z_start=arranged["z_start"], profile=profile, plate_output=arrange.output,
+                                 z_start=arranged["z_start"], profile=profile, strict=strict,
+                                 plate_output=arrange.output,
                                  check_output=str(out / "direct" / f"plate{extension}") if verify else ""))
         plates_out = _run_jobs(engine, jobs, _make_plate, encoding, False, resume, progress, 1, steps)
         engine.finish(_free_cached_memory)
@@ -443,7 +455,8 @@ def _make_plate(job, encoding):
     """One plate's print file (a plates() task): its members (kept from the arrangement when it
     ran in this process, else loaded) made into that plate by transfer of encoding (a path; ""
     slices directly from job.z_start); with job.check_output, also by direct slicing into that
-    pattern's plate, compared."""
+    pattern's plate, compared. Each member says how it was made: "direct" when there is no
+    encoding or the filter could not reuse it."""
     t0 = time.perf_counter()
     kept = _arranged_members(job.paths)
     with _meshset(kept) as ms:
@@ -451,9 +464,12 @@ def _make_plate(job, encoding):
             for path in job.paths:
                 _load_mesh(ms, path)
         common = dict(layer_thickness=job.layer_thickness, z_start=job.z_start, placements_file=job.summary,
-                      plate=job.plate, placements_output="", visible_only=True, **job.profile)
+                      plate=job.plate, placements_output="", visible_only=True, strict=job.strict, **job.profile)
         r = ms.apply_filter("make_plate_job", encoding_file=encoding, output_path=job.plate_output, **common)
-        entry = {"layers": r["layers"], "points": r["points"], "seconds": time.perf_counter() - t0}
+        members = [dict(m, method="direct" if not encoding or r.get(f"sliced_directly_{m['name']}") else "reuse")
+                   for m in job.base["members"]]
+        entry = {"members": members, "layers": r["layers"], "points": r["points"],
+                 "seconds": time.perf_counter() - t0}
         if job.check_output:
             ms.apply_filter("make_plate_job", encoding_file="", output_path=job.check_output, **common)
             c = ms.apply_filter("compare_mask_stacks", stack_a=job.outputs[0], stack_b=job.outputs[1],

@@ -204,13 +204,14 @@ def test_resume_after_an_interrupted_run_makes_only_what_is_missing(make_family,
 
 
 def test_a_failing_member_is_reported_and_the_others_are_made(make_family, tmp_path):
-    """A member that cannot be made (another mesh's connectivity, no map) fails with the filter's
-    message in its entry; the others are made; the exit status says that some failed."""
+    """With --strict, a member that cannot be reused (another mesh's connectivity, no map) fails
+    with the filter's message in its entry; the others are made; the exit status says that some
+    failed."""
     members = make_family("arch", 4)
     other = tmp_path / "ear.ply"  # not of the arch's family
     other.write_bytes(make_family("ear", 2)[1].read_bytes())
-    run = family_py("--layer-thickness", "0.1", "--format", "sl1", members[0], members[1], other, members[2],
-                    out=tmp_path / "out", check=False)
+    run = family_py("--strict", "--layer-thickness", "0.1", "--format", "sl1", members[0], members[1], other,
+                    members[2], out=tmp_path / "out", check=False)
     assert run.returncode == 1
     assert run.stderr.strip().endswith("family: 1 of 3 failed; their entries say why")
     result = json.loads(run.stdout)

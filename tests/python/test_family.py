@@ -2,6 +2,7 @@
 examples/family.py): one .sl1 per member, by transfer (default) or direct slicing (--direct),
 with identical outputs; --verify compares against direct slicing (S = 1)."""
 import json
+import re
 import subprocess
 import zipfile
 
@@ -12,7 +13,7 @@ from conftest import ROOT, THICKNESS, raises_filter_error
 from test_batch import family_py
 
 SHAPES = ["arch", "ear", "handle", "box", "sphere", "torus"]
-TARGET_KEYS = {"mesh", "layers", "points", "resliced_layers", "seconds", "output", "worker"}
+TARGET_KEYS = {"mesh", "layers", "points", "resliced_layers", "seconds", "output", "method", "worker"}
 CASES = [(shape, z) for z in (None, "band") for shape in SHAPES] + [("arch", "everywhere")]
 
 
@@ -38,6 +39,7 @@ def test_reuse_and_direct_write_identical_print_jobs(make_family, tmp_path, shap
         assert r["worker"] == d["worker"] == "in-process"
         assert set(r) == TARGET_KEYS | {"min_similarity", "max_grey_difference"} and set(d) == TARGET_KEYS
         assert r["output"] == str(tmp_path / "reuse" / f"{member.stem}.sl1")
+        assert r["method"] == "reuse" and d["method"] == "direct"
         assert r["points"] == d["points"] > 0, (r, d)
         assert r["layers"] == d["layers"], (r, d)
         # x-y and band members keep the base's height: 8 mm at 0.1 mm.
@@ -175,6 +177,28 @@ def test_cli_errors_are_one_line(make_family, tmp_path, args, message):
     assert message in out.stderr
     assert "Traceback" not in out.stderr
     assert out.stdout == ""
+
+
+def test_a_member_that_cannot_be_reused_is_sliced_directly_unless_strict(make_family, tmp_path):
+    """A member of other connectivity (the same surface, its vertices and faces renumbered: no
+    map from the source) is sliced directly, its entry saying so, equal to direct slicing, while
+    the others are reused; on a plate, that member says so; with strict, it fails saying why."""
+    members = make_family("arch", 3)
+    renumbered = tmp_path / "renumbered.ply"
+    renumbered.write_bytes(make_family("arch", 3, shuffle=True)[2].read_bytes())
+    r = sr.family(members[0], [members[1], renumbered], THICKNESS, tmp_path / "family", verify=True)
+    reused, direct = r["targets"]
+    assert r["failed"] == 0 and reused["method"] == "reuse" and direct["method"] == "direct", r
+    assert direct["min_similarity"] == 1.0 and direct["max_grey_difference"] == 0, direct
+    (plate,) = sr.plates(members[0], [members[1], renumbered], THICKNESS, tmp_path / "plates", verify=True)["plates"]
+    assert {m["name"]: m["method"] for m in plate["members"]} == {members[1].name: "reuse", "renumbered.ply": "direct"}
+    assert plate["min_similarity"] == 1.0 and plate["max_grey_difference"] == 0, plate
+    strict = sr.family(members[0], [members[1], renumbered], THICKNESS, tmp_path / "strict", strict=True)
+    assert strict["failed"] == 1, strict
+    assert re.fullmatch(r"Make Print Job: the current mesh cannot be made by reuse: its faces differ from those of "
+                        r"the mesh the encoding was made from \(encoding: 3008 faces, hash [0-9a-f]{16}; target: 3008 "
+                        r"faces, hash [0-9a-f]{16}\) \(strict is on; off, it would be sliced directly\)",
+                        strict["targets"][1]["error"]), strict
 
 
 def test_members_with_the_same_file_name_are_refused(make_family, tmp_path):

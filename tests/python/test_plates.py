@@ -196,7 +196,9 @@ def test_family_py_plates_verifies_every_plate(make_family, tmp_path):
     assert result["members"] == 7
     assert sum(len(p["members"]) for p in result["plates"]) == 7
     written = json.loads((tmp_path / "plates.json").read_text())
-    assert [[m["name"] for m in p["members"]] for p in written["plates"]] == [p["members"] for p in result["plates"]]
+    assert [[m["name"] for m in p["members"]] for p in written["plates"]] == \
+        [[m["name"] for m in p["members"]] for p in result["plates"]]
+    assert all(m == {"name": m["name"], "method": "reuse"} for p in result["plates"] for m in p["members"])
     for p, plate in zip(result["plates"], written["plates"]):
         assert p["min_similarity"] == 1.0 and p["max_grey_difference"] == 0, p
         assert p["output"].endswith(".sl1s")
@@ -229,8 +231,8 @@ def test_plates_use_the_members_the_arrangement_loaded(pymeshlab, make_family, t
 
 def test_a_failing_plate_gives_up_the_kept_members_and_the_others_are_made(pymeshlab, make_family, tmp_path,
                                                                           monkeypatch):
-    """A plate that cannot be made from the kept members (one of them is another mesh's
-    connectivity, with no map) fails with the filter's message; its MeshSet is kept alive as a
+    """With strict, a plate that cannot be made from the kept members (one of them is another
+    mesh's connectivity, with no map) fails with the filter's message; its MeshSet is kept alive as a
     failed one (pymeshlab writes into it later), no plate after it uses it, and every other plate
     is made from freshly loaded members, equal to direct slicing."""
     members = make_family("arch", 8)
@@ -241,15 +243,15 @@ def test_a_failing_plate_gives_up_the_kept_members_and_the_others_are_made(pymes
     monkeypatch.setattr(sr, "_load_mesh", lambda ms, path: loads.append(str(path)) or load_mesh(ms, path))
     failed_before = len(sr._failed_meshsets)
     r = sr.plates(members[0], [*members[1:], other], out=tmp_path / "out", layer_thickness=THICKNESS,
-                  profile={"printer": "method"}, verify=True, workers=0)
+                  profile={"printer": "method"}, verify=True, strict=True, workers=0)
     assert r["failed"] == 1 and len(r["plates"]) >= 2, r
     bad = next(p for p in r["plates"] if "error" in p)
-    assert "ear.ply" in bad["members"] and "faces" in bad["error"], bad
+    assert {"name": "ear.ply"} in bad["members"] and "faces" in bad["error"], bad
     assert not (tmp_path / "out" / Path(bad["output"]).name).exists()
     made = [p for p in r["plates"] if "error" not in p]
     assert all(p["min_similarity"] == 1.0 and p["max_grey_difference"] == 0 for p in made), made
     # Plates after the failed one loaded their own members; none is loaded twice before it.
-    after = [m for p in r["plates"][r["plates"].index(bad) + 1:] for m in p["members"]]
+    after = [m["name"] for p in r["plates"][r["plates"].index(bad) + 1:] for m in p["members"]]
     assert sorted(Path(x).name for x in loads[1 + len(members):]) == sorted(after)
     assert len(sr._failed_meshsets) == failed_before + 1 and sr._arranged is None
 
