@@ -16,7 +16,7 @@ printer's own print file (its preset's extension in common/printer/presets.json:
 slices each member directly and compares the masks (min_similarity 1 and max_grey_difference 0
 mean identical).
 A member whose slicing cannot be reused (another connectivity, no map) is sliced directly, its
-entry's "method" "direct"; --strict fails it instead, with the reason.
+entry's "method" "direct" and "direct_reason" saying why; --strict fails it instead, with the reason.
 Prints one JSON object: {"source": MESH0, "seconds": total, "source_seconds", "engine",
 "failed", "targets": [{"mesh", "layers", "points", "resliced_layers", "seconds", "output",
 "method", "worker"[, "min_similarity", "max_grey_difference"][, "resumed"]}

@@ -159,7 +159,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     target's seconds.
     keep_contours=True: also writes out/<stem>.srb (.ctr when binary is False).
     A member whose slicing cannot be reused (another connectivity, no map) is sliced directly,
-    its entry's "method" "direct" (the filter's log says why); strict=True fails it instead, with
+    its entry's "method" "direct" and "direct_reason" why; strict=True fails it instead, with
     the reason.
 
     Where the members are made (slicereuse_batch.py): workers=0 (the default) in this process;
@@ -323,6 +323,8 @@ def _make_member(job, encoding):
         entry = {"layers": r["layers"], "points": r["points"], "resliced_layers": r["resliced_layers"],
                  "seconds": time.perf_counter() - t0, "output": job.output,
                  "method": "reuse" if r["reused"] else "direct"}
+        if encoding and not r["reused"]:
+            entry["direct_reason"] = NOT_OF_THE_FAMILY
         if job.details:
             entry.update(slicing_seconds=r["slicing_seconds"], masks_seconds=r["masks_seconds"],
                          cpu_seconds=time.process_time() - c0)
@@ -451,6 +453,22 @@ def _arrange(job, _shared):
     return {"members": r["members"], "arrange_seconds": r["arrange_seconds"], "z_start": lowest}
 
 
+# Why a member given the source's encoding was sliced directly. pymeshlab returns the filters'
+# numbers only (reused, sliced_directly_<name>); the one cause they report is this one, whose
+# details (the two meshes' face counts and hashes) are in the filter's log line.
+NOT_OF_THE_FAMILY = ("its faces are not those of the source's mesh (another connectivity, and no map), so it was "
+                     "sliced directly")
+
+
+def _plate_member(member, encoding, result):
+    """A plate member's summary entry: its name and method, and why when sliced for want of reuse."""
+    if not encoding:
+        return dict(member, method="direct")
+    if result.get(f"sliced_directly_{member['name']}"):
+        return dict(member, method="direct", direct_reason=NOT_OF_THE_FAMILY)
+    return dict(member, method="reuse")
+
+
 def _make_plate(job, encoding):
     """One plate's print file (a plates() task): its members (kept from the arrangement when it
     ran in this process, else loaded) made into that plate by transfer of encoding (a path; ""
@@ -466,8 +484,7 @@ def _make_plate(job, encoding):
         common = dict(layer_thickness=job.layer_thickness, z_start=job.z_start, placements_file=job.summary,
                       plate=job.plate, placements_output="", visible_only=True, strict=job.strict, **job.profile)
         r = ms.apply_filter("make_plate_job", encoding_file=encoding, output_path=job.plate_output, **common)
-        members = [dict(m, method="direct" if not encoding or r.get(f"sliced_directly_{m['name']}") else "reuse")
-                   for m in job.base["members"]]
+        members = [_plate_member(m, encoding, r) for m in job.base["members"]]
         entry = {"members": members, "layers": r["layers"], "points": r["points"],
                  "seconds": time.perf_counter() - t0}
         if job.check_output:
