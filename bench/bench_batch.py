@@ -38,7 +38,7 @@ def main():
     ap.add_argument("--out", type=Path, default=ROOT / "out" / "bench_batch")
     a = ap.parse_args()
     subprocess.run(["rm", "-rf", str(a.out)], check=True)
-    subprocess.run([str(ROOT / "build" / "2020" / "tests" / "gen_family"), "--shape", "arch", "--faces", str(a.faces),
+    subprocess.run([str(ROOT / "build" / "2020" / "tools" / "gen_family"), "--shape", "arch", "--faces", str(a.faces),
                     "--members", str(a.members + 1), "--height", "14.484", "--seed", "1",
                     "--out", str(a.out / "family")], check=True, stdout=subprocess.DEVNULL)
     meshes = sorted((a.out / "family").glob("member_*.ply"))

@@ -41,9 +41,9 @@ prusa_thickness=${prusa_thickness:-$thickness}
 [ -x /usr/bin/time ] || { echo "bench_family: /usr/bin/time is missing (scripts/setup installs it)" >&2; exit 1; }
 rm -rf "$out" && mkdir -p "$out"
 
-"$root/build/2020/tests/gen_family" --shape arch --faces "$faces" --members "$((members + 1))" --height 14.484 \
+"$root/build/2020/tools/gen_family" --shape arch --faces "$faces" --members "$((members + 1))" --height 14.484 \
   --seed 1 --out "$out/family" >/dev/null
-"$root/build/2020/tests/gen_family" --shape arch --faces "$faces" --members 4 --height 14.484 --seed 2 \
+"$root/build/2020/tools/gen_family" --shape arch --faces "$faces" --members 4 --height 14.484 --seed 2 \
   --z-change --out "$out/family_z" >/dev/null
 for i in 1 2 3; do mv "$out/family_z/member_00$i.ply" "$out/family/member_z0$i.ply"; done
 rm -rf "$out/family_z"

@@ -32,7 +32,7 @@ while [ $# -gt 0 ]; do
 done
 command -v prusa-slicer >/dev/null || { echo "prusa-slicer is not installed (scripts/setup installs it)" >&2; exit 1; }
 rm -rf "$out" && mkdir -p "$out"
-"$root/build/2020/tests/gen_family" --shape arch --faces "$faces" --members "$((members + 1))" --height 14.484 \
+"$root/build/2020/tools/gen_family" --shape arch --faces "$faces" --members "$((members + 1))" --height 14.484 \
   --seed 1 --out "$out/family" >/dev/null
 "$root/scripts/meshlabserver" -i "$out/family/member_001.ply" -o "$out/member_001.stl" >/dev/null 2>&1
 mapfile -t meshes < <(ls "$out"/family/member_*.ply)

@@ -22,7 +22,7 @@ command -v prusa-slicer >/dev/null || { echo "prusa-slicer is not installed (apt
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
-"$root/build/2020/tests/gen_family" --shape arch --faces "$faces" --members 1 --height 14.484 --seed 1 --out . >/dev/null
+"$root/build/2020/tools/gen_family" --shape arch --faces "$faces" --members 1 --height 14.484 --seed 1 --out . >/dev/null
 "$root/scripts/meshlabserver" -i member_000.ply -o part.stl >/dev/null 2>&1
 
 # One filter: Make Print Job, slicing directly (no encoding file) into an .sl1 archive in memory.

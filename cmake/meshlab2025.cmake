@@ -28,8 +28,6 @@ string(STRIP "${_slicereuse_ml_version}" _slicereuse_ml_version)
 find_package(Qt5 5.15 REQUIRED COMPONENTS Core Gui Widgets OpenGL Xml)
 find_package(Eigen3 REQUIRED NO_MODULE)
 find_path(SLICEREUSE_GLEW_INCLUDE GL/glew.h REQUIRED)
-# Plugins need moc for Q_OBJECT / Q_PLUGIN_METADATA.
-set(CMAKE_AUTOMOC ON)
 
 add_library(meshlab_host INTERFACE)
 target_include_directories(meshlab_host SYSTEM INTERFACE

@@ -2,7 +2,7 @@
 
 Run: scripts/python -m pytest tests/python
 Needs the 2025 plugin (build/2025, or $SLICEREUSE_PLUGIN) and the family generator gen_family
-($SLICEREUSE_GEN_FAMILY, else build/2020/tests/gen_family, else any build/*/tests/gen_family).
+($SLICEREUSE_GEN_FAMILY, else build/2020/tools/gen_family, else any build/*/tools/gen_family).
 A missing gen_family is an error, not a skip: scripts/build builds it.
 """
 import os
@@ -23,8 +23,8 @@ HEIGHT = 8.0  # mm: every shape then fits the default 76.8 x 57.6 mm mask area
 def _gen_family_binary():
     env = os.environ.get("SLICEREUSE_GEN_FAMILY")
     candidates = [Path(env)] if env else []
-    candidates.append(ROOT / "build" / "2020" / "tests" / "gen_family")
-    candidates += sorted((ROOT / "build").glob("*/tests/gen_family"), key=lambda p: -p.stat().st_mtime)
+    candidates.append(ROOT / "build" / "2020" / "tools" / "gen_family")
+    candidates += sorted((ROOT / "build").glob("*/tools/gen_family"), key=lambda p: -p.stat().st_mtime)
     for c in candidates:
         if c.is_file() and os.access(c, os.X_OK):
             return c
@@ -43,7 +43,7 @@ Z_CHANGE_FLAGS = {None: [], "band": ["--z-band"], "everywhere": ["--z-change"]}
 def make_family(tmp_path_factory):
     """make_family(shape, members, z_change=None, faces=3000, seed=1) -> [member paths].
     z_change: None (members differ in x-y only), "band" (z also changes within one band of
-    heights) or "everywhere" (z changes at every height); see tests/support/family.h.
+    heights) or "everywhere" (z changes at every height); see tools/family/family.h.
     shuffle: members other than the base get renumbered vertices and faces (gen_family --shuffle),
     the same surfaces with other connectivity."""
     binary = _gen_family_binary()

@@ -20,7 +20,7 @@
 //
 // Another plugin of the same generation (e.g. the io_encoding IO plugin) uses the parameter,
 // host, error and result pieces with the same traits: it links the CMake target
-// slicereuse_host_adapter, which puts this folder (and mesh_convert.h) on its include path.
+// slicereuse_host (host/CMakeLists.txt), which puts this folder on its include path.
 //
 // Result line, logged after every successful filter in both hosts (meshlabserver has no result
 // dict; its log is the only output a script run gives):

@@ -1,4 +1,4 @@
-// gen_family: writes a mass-customization family (see support/family.h) as PLY files.
+// gen_family: writes a mass-customization family (see family/family.h) as PLY files.
 //   gen_family --shape {arch,ear,handle,box,sphere,torus} --faces N --members M
 //              [--z-change | --z-band] [--shuffle] --height MM --seed S --out DIR
 // --z-change: z changes everywhere (ZChange::Everywhere); --z-band: only within one band of

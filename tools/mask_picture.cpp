@@ -1,6 +1,6 @@
 // mask_picture: the README's picture of one anti-aliased layer next to its binary mask.
 //   mask_picture --printer ID --faces N --out FILE.png
-// Slices the family's arch base (support/family.h) at half its height, rasterizes that layer for
+// Slices the family's arch base (family/family.h) at half its height, rasterizes that layer for
 // the preset ID (printer_presets.h), binary and anti-aliased (gamma 1), cuts the same window of
 // kWindow x kWindow pixels around the part's top-most lit pixel (where the outline curves) out
 // of both, and writes them side
