@@ -1,9 +1,10 @@
 #pragma once
-// json_value: the placements file's JSON (placements_file.cpp) as a tree with typed access that
-// names the place of a wrong value; internal.
+// json_value: a JSON document (the placements file) as a tree with typed access that names the
+// place of a wrong value.
 // parse_json(text, name) -> the document's value tree, parsed by nlohmann::json (numbers as
-// strtod reads them: exactly what %.17g wrote). Throws Error "'name': parse error at line N,
-// column C: what" on a syntax error; nesting deeper than 64 is refused.
+// strtod reads them: exactly the double a shortest round-trip or %.17g text came from). Throws
+// Error "'name': parse error at line N, column C: what" on a syntax error; nesting deeper than
+// 64 is refused.
 // Value::at(key, where) / as_*(where) throw Error naming `where` (e.g. "plate 2, member 3")
 // when the key is missing or the type differs.
 #include <map>
