@@ -79,6 +79,11 @@ const JsonValue& JsonValue::at(const std::string& key, const std::string& where)
   return *v;
 }
 
+bool JsonValue::as_bool(const std::string& where) const {
+  want(*this, Type::Bool, where);
+  return boolean;
+}
+
 double JsonValue::as_number(const std::string& where) const {
   want(*this, Type::Number, where);
   return number;

@@ -4,7 +4,8 @@
 // orientation, mirrors), the anti-aliasing gamma its own slicer uses, what its print file
 // carries (printer model, exposure, bottom and faded layers), and the print file it takes.
 // Offsets stay the user's (a preset centres the part). docs/formats.md, "Printer profiles",
-// lists the sources.
+// lists the sources. The presets are data, common/printer/presets.json (python/ reads it too),
+// compiled in and read on first use.
 //   printer_presets()       every preset, in the order menus show them
 //   printer_preset(id)      the one named id, or Error listing the ids
 #include <string>

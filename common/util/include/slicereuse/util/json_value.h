@@ -1,6 +1,6 @@
 #pragma once
-// json_value: a JSON document (the placements file) as a tree with typed access that names the
-// place of a wrong value.
+// json_value: a JSON document (the placements file, the printer presets) as a tree with typed
+// access that names the place of a wrong value.
 // parse_json(text, name) -> the document's value tree, parsed by nlohmann::json (numbers as
 // strtod reads them: exactly the double a shortest round-trip or %.17g text came from). Throws
 // Error "'name': parse error at line N, column C: what" on a syntax error; nesting deeper than
@@ -24,6 +24,7 @@ struct JsonValue {
 
   const JsonValue* find(const std::string& key) const;
   const JsonValue& at(const std::string& key, const std::string& where) const;
+  bool as_bool(const std::string& where) const;
   double as_number(const std::string& where) const;
   const std::string& as_string(const std::string& where) const;
   const std::vector<JsonValue>& as_array(const std::string& where) const;
