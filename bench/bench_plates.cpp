@@ -22,12 +22,12 @@
 
 #include "bench_args.h"
 #include "family.h"
-#include "slicereuse/masks/printer_presets.h"
 #include "slicereuse/plates/arrange_plates.h"
 #include "slicereuse/plates/placements_file.h"
 #include "slicereuse/plates/plate_file_names.h"
 #include "slicereuse/plates/plate_job.h"
 #include "slicereuse/plates/plate_layout.h"
+#include "slicereuse/printer/printer_presets.h"
 #include "slicereuse/transfer/transfer_contours.h"
 #include "slicereuse/util/format.h"
 #include "slicereuse/util/buffer.h"

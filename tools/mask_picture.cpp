@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "family.h"
-#include "slicereuse/masks/mask_png.h"
-#include "slicereuse/masks/printer_presets.h"
-#include "slicereuse/masks/rasterize_layer.h"
+#include "slicereuse/png/mask_png.h"
+#include "slicereuse/printer/printer_presets.h"
+#include "slicereuse/raster/rasterize_layer.h"
 #include "slicereuse/slicing/slice_layers.h"
 #include "slicereuse/util/atomic_file.h"
 #include "slicereuse/util/error.h"

@@ -2,7 +2,7 @@
 // far their grey levels differ; no mesh involved.
 #include "filter_params.h"
 #include "filters_common.h"
-#include "slicereuse/masks/compare_mask_stacks.h"
+#include "slicereuse/printfiles/compare_mask_stacks.h"
 
 namespace slicereuse::plugin {
 namespace {

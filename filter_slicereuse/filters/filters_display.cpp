@@ -6,7 +6,7 @@
 
 #include "filter_params.h"
 #include "filters_common.h"
-#include "slicereuse/masks/printer_presets.h"
+#include "slicereuse/printer/printer_presets.h"
 #include "slicereuse/util/error.h"
 
 namespace slicereuse::plugin {

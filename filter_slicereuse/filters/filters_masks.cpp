@@ -3,7 +3,7 @@
 #include "filter_params.h"
 #include "filters_common.h"
 #include "slicereuse/formats/slice_files.h"
-#include "slicereuse/masks/export_masks.h"
+#include "slicereuse/printfiles/export_masks.h"
 #include "slicereuse/util/error.h"
 
 namespace slicereuse::plugin {

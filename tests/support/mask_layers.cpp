@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "slicereuse/masks/rasterize_layer.h"
+#include "slicereuse/raster/rasterize_layer.h"
 
 namespace slicereuse::test {
 

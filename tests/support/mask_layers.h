@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "slicereuse/masks/printer_profile.h"
+#include "slicereuse/printer/printer_profile.h"
 #include "slicereuse/slicing/slices.h"
 
 namespace slicereuse::test {

@@ -13,10 +13,10 @@
 
 #include "mask_layers.h"
 #include "mask_stack.h"
-#include "slicereuse/masks/compare_mask_stacks.h"
-#include "slicereuse/masks/export_masks.h"
-#include "slicereuse/masks/mask_png.h"
-#include "slicereuse/masks/printer_profile.h"
+#include "slicereuse/png/mask_png.h"
+#include "slicereuse/printer/printer_profile.h"
+#include "slicereuse/printfiles/compare_mask_stacks.h"
+#include "slicereuse/printfiles/export_masks.h"
 #include "test_files.h"
 
 using namespace slicereuse;

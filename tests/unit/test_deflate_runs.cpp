@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "slicereuse/masks/deflate_runs.h"
+#include "slicereuse/png/deflate_runs.h"
 
 using namespace slicereuse;
 

@@ -18,7 +18,7 @@
 #include "shapes.h"
 #include "shuffle_mesh.h"
 #include "slicereuse/formats/slice_files.h"
-#include "slicereuse/masks/mask_png.h"
+#include "slicereuse/png/mask_png.h"
 #include "slicereuse/slicing/slice_layers.h"
 #include "slicereuse/transfer/transfer_contours.h"
 #include "temp_folder.h"

@@ -12,9 +12,9 @@
 
 #include "error_of.h"
 #include "family.h"
-#include "slicereuse/masks/compare_mask_stacks.h"
-#include "slicereuse/masks/export_masks.h"
-#include "slicereuse/masks/printer_profile.h"
+#include "slicereuse/printer/printer_profile.h"
+#include "slicereuse/printfiles/compare_mask_stacks.h"
+#include "slicereuse/printfiles/export_masks.h"
 #include "slicereuse/slicing/layer_chunks.h"
 #include "slicereuse/slicing/layer_planes.h"
 #include "slicereuse/slicing/slice_layers.h"

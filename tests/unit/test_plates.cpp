@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -16,8 +17,6 @@
 #include "family.h"
 #include "mask_stack.h"
 #include "shapes.h"
-#include "slicereuse/masks/export_masks.h"
-#include "slicereuse/masks/mask_png.h"
 #include "slicereuse/plates/arrange_plates.h"
 #include "slicereuse/plates/footprint.h"
 #include "slicereuse/plates/placement.h"
@@ -25,6 +24,8 @@
 #include "slicereuse/plates/placements_file.h"
 #include "slicereuse/plates/plate_job.h"
 #include "slicereuse/plates/plate_layout.h"
+#include "slicereuse/png/mask_png.h"
+#include "slicereuse/printfiles/export_masks.h"
 #include "slicereuse/transfer/transfer_contours.h"
 #include "slicereuse/util/format.h"
 #include "slicereuse/slicing/slice_layers.h"
@@ -308,6 +309,8 @@ TEST_F(PlacementsFileTest, ReadsBackExactlyThePlacementsUsed) {
   const PlacementsFile f = read_placements_file(path("plates.json"));
   EXPECT_EQ(f.spacing_mm, 2);
   EXPECT_EQ(f.platform.x0, platform.x0);
+  EXPECT_EQ(f.platform.y0, platform.y0);
+  EXPECT_EQ(f.platform.x1, platform.x1);
   EXPECT_EQ(f.platform.y1, platform.y1);
   ASSERT_EQ(f.plates.size(), a.members.size());
   for (size_t k = 0; k < f.plates.size(); ++k) {
@@ -330,6 +333,42 @@ TEST_F(PlacementsFileTest, ReadsBackExactlyThePlacementsUsed) {
   names.erase(names.begin());
   names.pop_back();
   EXPECT_NE(test::error_of([&] { arrangement_of(f, names); }).find("member 'ball' (plate"), std::string::npos);
+}
+
+// Doubles whose shortest decimal form is long or extreme: each read back bit for bit.
+TEST_F(PlacementsFileTest, EveryDoubleReadsBackBitForBit) {
+  const std::vector<double> xs = {0.1 + 0.2, -1.0 / 3, 5e-324, 2.2250738585072014e-308, 1.7976931348623157e308,
+                                  -0.0, 123456789.123456789, 1e22, 38.4 * 3, 0};
+  PlacementsFile f;
+  f.spacing_mm = xs[0];
+  f.platform = {xs[1], xs[2], xs[3], xs[4]};
+  PlateRecord r;
+  for (size_t i = 0; i + 2 < xs.size(); ++i) {
+    r.names.push_back("m" + std::to_string(i));
+    r.placements.push_back({xs[i], xs[i + 1], xs[i + 2]});
+  }
+  r.area_used = xs[6];
+  f.plates.push_back(r);
+  write_placements_file(path("p.json"), f);
+  const PlacementsFile g = read_placements_file(path("p.json"));
+  auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  EXPECT_TRUE(same(g.spacing_mm, f.spacing_mm));
+  EXPECT_TRUE(same(g.platform.x0, f.platform.x0) && same(g.platform.y0, f.platform.y0) &&
+              same(g.platform.x1, f.platform.x1) && same(g.platform.y1, f.platform.y1));
+  ASSERT_EQ(g.plates.size(), 1u);
+  EXPECT_TRUE(same(g.plates[0].area_used, r.area_used));
+  ASSERT_EQ(g.plates[0].placements.size(), r.placements.size());
+  for (size_t i = 0; i < r.placements.size(); ++i) {
+    const Placement &p = g.plates[0].placements[i], &q = r.placements[i];
+    EXPECT_TRUE(same(p.theta_deg, q.theta_deg) && same(p.tx_mm, q.tx_mm) && same(p.ty_mm, q.ty_mm)) << i;
+    EXPECT_EQ(g.plates[0].names[i], r.names[i]);
+  }
+  // A name that is not UTF-8 is refused before the file is made.
+  f.plates[0].names[0] = "caf\xe9";
+  EXPECT_EQ(test::error_of([&] { write_placements_file(path("q.json"), f); }),
+            "cannot write the placements file '" + path("q.json") +
+                "': a member's name or a plate's output is not UTF-8 text");
+  EXPECT_FALSE(std::filesystem::exists(path("q.json")));
 }
 
 // One plate of a file (what family.py's per-plate tasks load): its members only, as one plate.

@@ -15,13 +15,13 @@
 
 #include "error_of.h"
 #include "mask_layers.h"
-#include "slicereuse/masks/export_masks.h"
-#include "slicereuse/masks/mask_png.h"
-#include "slicereuse/masks/printer_presets.h"
+#include "slicereuse/png/mask_png.h"
+#include "slicereuse/printer/printer_presets.h"
+#include "slicereuse/printfiles/export_masks.h"
+#include "slicereuse/raster/top_view.h"
 #include "slicereuse/util/format.h"
 #include "test_files.h"
 #include "thumbnail_png.h"
-#include "top_view.h"
 
 using namespace slicereuse;
 using test::Layer;

@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "error_of.h"
-#include "slicereuse/masks/export_masks.h"
-#include "slicereuse/masks/printer_profile.h"
+#include "slicereuse/printer/printer_profile.h"
+#include "slicereuse/printfiles/export_masks.h"
 #include "slicereuse/slicing/slice_layers.h"
 #include "shapes.h"
 #include "temp_folder.h"

@@ -1,22 +1,21 @@
 #include "slicereuse/plates/placements_file.h"
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <map>
 
-#include "json_value.h"
 #include "slicereuse/util/atomic_file.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
 #include "slicereuse/util/input_file.h"
-#include "slicereuse/util/json_string.h"
+#include "slicereuse/util/json_value.h"
 
 namespace slicereuse {
 namespace {
 
 constexpr const char* kFormat = "slicereuse placements";
 constexpr int kVersion = 1;
-
-std::string number(double v) { return format("%.17g", v); }
 
 double finite(const detail::JsonValue& v, const std::string& where) {
   const double x = v.as_number(where);
@@ -78,25 +77,30 @@ Arrangement arrangement_of(const PlacementsFile& file, const std::vector<std::st
 }
 
 void write_placements_file(const std::string& path, const PlacementsFile& f) {
-  std::string s = format("{\n  \"format\": %s,\n  \"version\": %d,\n", json_string(kFormat).c_str(), kVersion);
-  s += "  \"spacing_mm\": " + number(f.spacing_mm) + ",\n";
-  s += "  \"platform_mm\": {\"x0\": " + number(f.platform.x0) + ", \"y0\": " + number(f.platform.y0) +
-       ", \"x1\": " + number(f.platform.x1) + ", \"y1\": " + number(f.platform.y1) + "},\n";
-  s += "  \"plates\": [";
+  // Ordered: the keys stay in the order docs/formats.md shows them.
+  using Json = nlohmann::ordered_json;
+  Json plates = Json::array();
   for (size_t k = 0; k < f.plates.size(); ++k) {
     const PlateRecord& r = f.plates[k];
-    s += k ? ",\n" : "\n";
-    s += format("    {\"plate\": %zu, \"area_used\": %s, \"output\": %s,\n     \"members\": [", k + 1,
-                number(r.area_used).c_str(), json_string(r.output).c_str());
+    Json members = Json::array();
     for (size_t i = 0; i < r.names.size(); ++i) {
       const Placement& p = r.placements[i];
-      s += i ? ",\n       " : "\n       ";
-      s += "{\"name\": " + json_string(r.names[i]) + ", \"theta_deg\": " + number(p.theta_deg) +
-           ", \"tx_mm\": " + number(p.tx_mm) + ", \"ty_mm\": " + number(p.ty_mm) + "}";
+      members.push_back({{"name", r.names[i]}, {"theta_deg", p.theta_deg}, {"tx_mm", p.tx_mm}, {"ty_mm", p.ty_mm}});
     }
-    s += "]}";
+    plates.push_back({{"plate", k + 1}, {"area_used", r.area_used}, {"output", r.output}, {"members", std::move(members)}});
   }
-  s += "\n  ]\n}\n";
+  const Json platform = {{"x0", f.platform.x0}, {"y0", f.platform.y0}, {"x1", f.platform.x1}, {"y1", f.platform.y1}};
+  const Json doc = {{"format", kFormat},
+                    {"version", kVersion},
+                    {"spacing_mm", f.spacing_mm},
+                    {"platform_mm", platform},
+                    {"plates", std::move(plates)}};
+  std::string s;
+  try {
+    s = doc.dump(2) + "\n";
+  } catch (const nlohmann::json::type_error&) {  // dump's one refusal: a string that is not UTF-8
+    throw Error("cannot write the placements file '" + path + "': a member's name or a plate's output is not UTF-8 text");
+  }
   AtomicFile out(path);
   out.write(s.data(), s.size());
   out.commit();

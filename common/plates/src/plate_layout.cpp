@@ -6,8 +6,8 @@
 #include <cmath>
 #include <cstring>
 
-#include "slicereuse/masks/mask_png.h"
 #include "slicereuse/plates/footprint.h"
+#include "slicereuse/png/mask_png.h"
 #include "slicereuse/util/atomic_file.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"

@@ -23,9 +23,9 @@
 #include <string>
 #include <vector>
 
-#include "slicereuse/masks/printer_profile.h"
 #include "slicereuse/mesh/mesh.h"
 #include "slicereuse/plates/placement.h"
+#include "slicereuse/printer/printer_profile.h"
 #include "slicereuse/util/progress.h"
 
 namespace slicereuse {

@@ -3,8 +3,9 @@
 // file"). JSON, written by the hosts after arranging (arrange_plates.h) and read back when a
 // person gives the placements instead of having them computed.
 //
-// write_placements_file(path, plates): atomic (util/atomic_file.h); numbers with 17 significant
-// digits, so reading gives back exactly the doubles written.
+// write_placements_file(path, plates): atomic (util/atomic_file.h), by nlohmann::json; numbers in
+// the shortest form that reads back as the same double, so reading gives back exactly the doubles
+// written. Throws Error for a name or output that is not UTF-8 text, before creating the file.
 // read_placements_file(path): the plates as written; throws Error naming the file, the line of a
 // syntax error, or the plate and member of a missing or mistyped field, a non-finite number, a
 // member named twice, or a plate without members. Fields the reader does not know are ignored

@@ -36,8 +36,8 @@
 #include <string>
 #include <vector>
 
-#include "slicereuse/masks/export_masks.h"
 #include "slicereuse/mesh/mesh.h"
+#include "slicereuse/printfiles/export_masks.h"
 #include "slicereuse/slicing/slice_layers.h"
 #include "slicereuse/slicing/slices.h"
 #include "slicereuse/transfer/transfer_contours.h"

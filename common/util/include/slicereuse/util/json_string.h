@@ -1,8 +1,7 @@
 #pragma once
 // json_string: text as a JSON string literal, quotes included: '"' and '\' escaped, control
-// characters as \u00XX, other bytes (UTF-8) as they are. The one JSON string writer of the
-// project: the hosts' result lines (host_adapter.h) and the placements file
-// (placements_file.h).
+// characters as \u00XX, other bytes (UTF-8) as they are: the hosts' result lines (host_adapter.h),
+// written a line at a time. Files are written with nlohmann::json (placements_file.h).
 #include <cstdio>
 #include <string>
 

@@ -1,0 +1,60 @@
+#include "slicereuse/printer/printer_profile.h"
+
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "slicereuse/util/error.h"
+
+namespace slicereuse {
+
+void validate_printer_profile(const PrinterProfile& p) {
+  if (p.width_px <= 0 || p.height_px <= 0 || p.width_px > kMaxDisplayPixels || p.height_px > kMaxDisplayPixels)
+    throw Error("display size " + std::to_string(p.width_px) + " x " + std::to_string(p.height_px) +
+                " px is not within 1.." + std::to_string(kMaxDisplayPixels) + " pixels per side");
+  if (!(p.pixel_size_x_um > 0) || !(p.pixel_size_y_um > 0) || !std::isfinite(p.pixel_size_x_um) ||
+      !std::isfinite(p.pixel_size_y_um))
+    throw Error("pixel size " + std::to_string(p.pixel_size_x_um) + " x " +
+                std::to_string(p.pixel_size_y_um) + " um is not positive");
+  if (!std::isfinite(p.offset_x_mm) || !std::isfinite(p.offset_y_mm))
+    throw Error("display offset is not finite");
+  if (!(p.gamma >= 0) || !std::isfinite(p.gamma))
+    throw Error("anti-aliasing gamma " + std::to_string(p.gamma) +
+                " is not a finite number >= 0 (0: binary threshold, 1: linear coverage)");
+  for (const auto& [name, seconds] : {std::pair<const char*, double>{"exposure time", p.exposure_s},
+                                      {"bottom exposure time", p.bottom_exposure_s},
+                                      {"time between exposures", p.layer_move_s}})
+    if (!(seconds >= 0) || !std::isfinite(seconds))
+      throw Error(std::string(name) + " " + std::to_string(seconds) + " s is not a finite number >= 0");
+  if (p.bottom_layers < 0 || p.faded_layers < 0)
+    throw Error("bottom layers (" + std::to_string(p.bottom_layers) + ") and faded layers (" +
+                std::to_string(p.faded_layers) + ") must not be negative");
+}
+
+MaskImageLayout mask_image_layout(const PrinterProfile& p) {
+  MaskImageLayout m;
+  if (!p.portrait) {
+    m.width = p.width_px;
+    m.height = p.height_px;
+    m.column_um = p.pixel_size_x_um;
+    m.row_um = p.pixel_size_y_um;
+    m.column_offset_mm = p.offset_x_mm;
+    m.row_offset_mm = p.offset_y_mm;
+    m.columns_descend = p.mirror_x;
+  } else {
+    // The landscape image turned counter-clockwise: columns along -y, rows along -x.
+    m.width = p.height_px;
+    m.height = p.width_px;
+    m.column_axis = 1;
+    m.row_axis = 0;
+    m.column_um = p.pixel_size_y_um;
+    m.row_um = p.pixel_size_x_um;
+    m.column_offset_mm = p.offset_y_mm;
+    m.row_offset_mm = p.offset_x_mm;
+    m.columns_descend = !p.mirror_x;
+  }
+  m.rows_ascend = p.mirror_y;
+  return m;
+}
+
+}  // namespace slicereuse

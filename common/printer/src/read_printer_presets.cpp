@@ -1,0 +1,79 @@
+#include "read_printer_presets.h"
+
+#include <climits>
+#include <cmath>
+#include <set>
+
+#include "slicereuse/util/error.h"
+#include "slicereuse/util/format.h"
+#include "slicereuse/util/json_value.h"
+
+namespace slicereuse::detail {
+namespace {
+
+// An object's keys, read with messages that say whose key it is (where: "the job of printer
+// preset 'prusa_sl1' (presets.json)").
+struct Fields {
+  const JsonValue& object;
+  std::string where;
+
+  const JsonValue& at(const char* key) const { return object.at(key, where); }
+  std::string of(const char* key) const { return format("\"%s\" in %s", key, where.c_str()); }
+  const std::string& text(const char* key) const { return at(key).as_string(of(key)); }
+  double number(const char* key) const { return at(key).as_number(of(key)); }
+  bool flag(const char* key) const { return at(key).as_bool(of(key)); }
+  int whole(const char* key) const {
+    const double x = number(key);
+    if (x != std::floor(x) || x < INT_MIN || x > INT_MAX)
+      throw Error(format("%s is %g, not a whole number", of(key).c_str(), x));
+    return int(x);
+  }
+};
+
+PrinterProfile profile_of(const Fields& display, bool antialiasing, const Fields& job) {
+  PrinterProfile p;
+  p.width_px = display.whole("width_px");
+  p.height_px = display.whole("height_px");
+  p.pixel_size_x_um = display.number("pixel_x_um");
+  p.pixel_size_y_um = display.number("pixel_y_um");
+  p.portrait = display.flag("portrait");
+  p.mirror_x = display.flag("mirror_x");
+  p.mirror_y = display.flag("mirror_y");
+  p.antialiasing = antialiasing;
+  p.gamma = 1;
+  p.printer_model = job.text("model");
+  p.exposure_s = job.number("exposure_s");
+  p.bottom_exposure_s = job.number("bottom_exposure_s");
+  p.bottom_layers = job.whole("bottom_layers");
+  p.faded_layers = job.whole("faded_layers");
+  p.layer_move_s = job.number("layer_move_s");
+  return p;
+}
+
+}  // namespace
+
+std::vector<PrinterPreset> read_printer_presets(const std::string& text, const std::string& name) {
+  const JsonValue doc = parse_json(text, name);
+  const auto& list = doc.at("presets", name).as_array("\"presets\" in " + name);
+  if (list.empty()) throw Error(name + " has no presets");
+  std::vector<PrinterPreset> presets;
+  std::set<std::string> ids;
+  for (size_t k = 0; k < list.size(); ++k) {
+    const Fields unnamed{list[k], format("printer preset %zu (%s)", k + 1, name.c_str())};
+    const std::string& id = unnamed.text("id");
+    const Fields preset{list[k], format("printer preset '%s' (%s)", id.c_str(), name.c_str())};
+    if (!ids.insert(id).second) throw Error(preset.where + " is given twice");
+    PrinterPreset p{id, preset.text("name"), preset.text("extension"), {}};
+    p.profile = profile_of({preset.at("display"), "the display of " + preset.where}, preset.flag("antialiasing"),
+                           {preset.at("job"), "the job of " + preset.where});
+    try {
+      validate_printer_profile(p.profile);
+    } catch (const Error& e) {
+      throw Error(preset.where + ": " + e.what());
+    }
+    presets.push_back(std::move(p));
+  }
+  return presets;
+}
+
+}  // namespace slicereuse::detail

@@ -1,0 +1,427 @@
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cerrno>
+#include <cmath>
+#include <chrono>
+#include <cstring>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <omp.h>
+
+#include "goo_format.h"
+#include "goo_writer.h"
+#include "mask_stack.h"
+#include "sl1_writer.h"
+#include "thumbnail_png.h"
+#include "slicereuse/png/mask_png.h"
+#include "slicereuse/printer/printer_profile.h"
+#include "slicereuse/printfiles/export_masks.h"
+#include "slicereuse/raster/rasterize_layer.h"
+#include "slicereuse/raster/top_view.h"
+#include "slicereuse/util/atomic_file.h"
+#include "slicereuse/util/buffer.h"
+#include "slicereuse/util/error.h"
+#include "slicereuse/util/format.h"
+#include "slicereuse/util/ordered_parallel.h"
+#include "slicereuse/util/parallel_blocks.h"
+#include "slicereuse/util/seconds_since.h"
+
+namespace slicereuse {
+namespace {
+
+// Folder output names its images layer00000.png, layer00001.png, ...
+const char* const FOLDER_PREFIX = "layer";
+const char* const PHASE = "writing mask images";
+
+// What export needs of a layer besides its image, found in the same visit to its points (hot in
+// cache for the rasterizer then), not in passes of their own over the whole stack: the closed
+// contours' area (shoelace; holes run clockwise and subtract) for the resin volume, and their
+// extent. validate_slices leaves the points to this pass: a non-finite x or y makes a contour's
+// shoelace sum non-finite, so only then are its points looked at, and a point that cannot be
+// drawn is refused (open contours are not drawn, and z is not used).
+struct LayerSummary {
+  double area = 0;
+  double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
+};
+
+// Layer k of the stack; a point is named by its number in its part's slices.
+LayerSummary summarize_layer(const LayerView& layer, size_t k) {
+  LayerSummary m;
+  for (const LayerPart& part : layer) {
+    const Slices& s = *part.slices;
+    for (uint64_t c = s.layer_begin[part.layer]; c < s.layer_begin[part.layer + 1]; ++c) {
+      if (s.contour_open[c]) continue;
+      const uint64_t b = s.contour_begin[c], e = s.contour_begin[c + 1];
+      const double* p = s.xyz.data();
+      const double area = contour_area(s, c);
+      if (!std::isfinite(area))  // a non-finite point, or products beyond the double range
+        for (uint64_t i = b; i < e; ++i)
+          if (!std::isfinite(p[3 * i]) || !std::isfinite(p[3 * i + 1]))
+            throw Error(format("contour point %llu (layer %zu) has a coordinate that is not a finite number",
+                               (unsigned long long)i, k));
+      m.area += area;
+      for (uint64_t i = b; i < e; ++i) {
+        m.lo_x = std::min(m.lo_x, p[3 * i]);
+        m.hi_x = std::max(m.hi_x, p[3 * i]);
+        m.lo_y = std::min(m.lo_y, p[3 * i + 1]);
+        m.hi_y = std::max(m.hi_y, p[3 * i + 1]);
+      }
+    }
+  }
+  return m;
+}
+
+// The layers' summaries as the encoders make them, on any thread, in any order: areas kept per
+// layer and summed in layer order, so the volume does not depend on the schedule.
+class StackSummary {
+ public:
+  explicit StackSummary(size_t layers) : area_(layers, 0) {}
+
+  void add(size_t k, const LayerSummary& m) {
+    area_[k] = m.area;
+    std::lock_guard<std::mutex> lock(mutex_);
+    extent_.lo_x = std::min(extent_.lo_x, m.lo_x);
+    extent_.hi_x = std::max(extent_.hi_x, m.hi_x);
+    extent_.lo_y = std::min(extent_.lo_y, m.lo_y);
+    extent_.hi_y = std::max(extent_.hi_y, m.hi_y);
+  }
+
+  // Resin volume in ml; layer thickness in mm.
+  double used_material_ml(double thickness) const {
+    double mm3 = 0;
+    for (double a : area_) mm3 += std::max(0.0, a) * thickness;
+    return mm3 / 1000;
+  }
+
+  // The display covers |x + offset_x| <= width * pixel / 2 around the model origin (likewise y).
+  void measure_extent(const PrinterProfile& p, MaskExportStats& stats) const {
+    const LayerSummary& e = extent_;
+    if (e.lo_x > e.hi_x) return;  // no closed contour: nothing is drawn
+    stats.min_x = e.lo_x;
+    stats.max_x = e.hi_x;
+    stats.min_y = e.lo_y;
+    stats.max_y = e.hi_y;
+    const double half_w = 0.5e-3 * p.width_px * p.pixel_size_x_um, half_h = 0.5e-3 * p.height_px * p.pixel_size_y_um;
+    stats.outside_display = e.lo_x + p.offset_x_mm < -half_w || e.hi_x + p.offset_x_mm > half_w ||
+                            e.lo_y + p.offset_y_mm < -half_h || e.hi_y + p.offset_y_mm > half_h;
+  }
+
+ private:
+  std::vector<double> area_;
+  std::mutex mutex_;
+  LayerSummary extent_;
+};
+
+// What a thread keeps to draw a layer a maker makes (LayerMaker): its parts and their view.
+struct MadeLayer {
+  std::vector<SlicePart> parts;
+  std::vector<LayerPart> view;
+};
+
+// The stack an export works on: one Slices, ranges of layers made on demand in parts
+// (SliceChunks), each dropped before the next is made, or layers made where they are drawn
+// (LayerMaker: one range). Layer numbers are the stack's; a range's own layers count from 0.
+class Stack {
+ public:
+  explicit Stack(const Slices& s) : whole_(&s), first_{0, s.layers()}, thickness_(s.thickness) {}
+  explicit Stack(const SliceChunks& c) : chunks_(&c), first_(c.first), thickness_(c.thickness) {
+    if (first_.size() < 2 || first_.front() != 0 ||
+        std::adjacent_find(first_.begin(), first_.end(), std::greater_equal<size_t>()) != first_.end())
+      throw Error("mask export: the layer ranges must start at layer 0 and each hold at least one layer");
+  }
+  explicit Stack(const LayerMaker& m) : maker_(&m), first_{0, m.layers}, thickness_(m.thickness) {}
+
+  size_t layers() const { return first_.back(); }
+  size_t ranges() const { return first_.size() - 1; }
+  size_t begin(size_t i) const { return first_[i]; }
+  size_t end(size_t i) const { return first_[i + 1]; }
+  double thickness() const { return thickness_; }
+  // Where range i's share of the export begins and ends, and where its encoding begins within it:
+  // a range made on demand spends the first half of its share being made.
+  double share_begin(size_t i) const { return double(begin(i)) / double(layers()); }
+  double share_end(size_t i) const { return double(end(i)) / double(layers()); }
+  double encoding_begin(size_t i) const {
+    return whole_ || maker_ ? share_begin(i) : 0.5 * (share_begin(i) + share_end(i));
+  }
+  // Range i's encoding, 0 to 1, as progress of the whole export.
+  Progress encoding_progress(size_t i, const Progress& progress) const {
+    return sub_progress(progress, encoding_begin(i), share_end(i));
+  }
+
+  // Makes range i, checked (the previous range's parts are freed first), whose layer `local` is
+  // then layer(local); returns its open contours (a maker's are counted as its layers are made,
+  // made_open_contours).
+  size_t open_range(size_t i, const Progress& progress) {
+    if (whole_) return whole_->open_contours();
+    if (maker_) return 0;
+    held_.clear();
+    held_ = chunks_->make(i, sub_progress(progress, share_begin(i), encoding_begin(i)));
+    const size_t n = end(i) - begin(i);
+    size_t open = 0;
+    // Each layer's parts, layer after layer: layer j's are parts_[part_begin_[j] .. part_begin_[j + 1]).
+    part_begin_.assign(n + 1, 0);
+    for (const SlicePart& p : held_) {
+      if (p.first > n || p.slices.layers() > n - p.first)
+        throw Error(format("mask export: layer range %zu holds a part of %zu layers from its layer %zu, beyond "
+                           "its %zu layers",
+                           i, p.slices.layers(), p.first, n));
+      check(p.slices);
+      open += p.slices.open_contours();
+      for (size_t j = p.first; j < p.first + p.slices.layers(); ++j) ++part_begin_[j + 1];
+    }
+    for (size_t j = 0; j < n; ++j) part_begin_[j + 1] += part_begin_[j];
+    parts_.resize(part_begin_[n]);
+    std::vector<size_t> at(part_begin_.begin(), part_begin_.end() - 1);
+    for (const SlicePart& p : held_)
+      for (size_t j = p.first; j < p.first + p.slices.layers(); ++j) parts_[at[j]++] = {&p.slices, j - p.first};
+    return open;
+  }
+
+  // Layer `local` of the range opened last; a maker's is made into `made`, the calling thread's,
+  // and checked.
+  LayerView layer(size_t local, MadeLayer& made) {
+    if (whole_) return LayerView(*whole_, local);
+    if (!maker_) return LayerView(parts_.data() + part_begin_[local], part_begin_[local + 1] - part_begin_[local]);
+    maker_->make(local, made.parts);
+    made.view.clear();
+    size_t open = 0;
+    for (const SlicePart& p : made.parts) {
+      if (p.first != 0 || p.slices.layers() != 1)
+        throw Error(format("mask export: layer %zu was made as a part of %zu layers from its layer %zu, not as one layer",
+                           local, p.slices.layers(), p.first));
+      check(p.slices);
+      open += p.slices.open_contours();
+      made.view.push_back({&p.slices, 0});
+    }
+    made_open_ += open;
+    return LayerView(made.view.data(), made.view.size());
+  }
+
+  // The open contours of the layers a maker made.
+  size_t made_open_contours() const { return made_open_; }
+
+  static void check(const Slices& s) {
+    validate_slices(s, false);  // the points: summarize_layer
+    if (!s.has_points()) throw Error("mask export needs contour points, but the slices carry only an encoding");
+  }
+
+ private:
+  const Slices* whole_ = nullptr;
+  const SliceChunks* chunks_ = nullptr;
+  const LayerMaker* maker_ = nullptr;
+  std::atomic<size_t> made_open_{0};
+  std::vector<size_t> first_;
+  double thickness_ = 0;
+  std::vector<SlicePart> held_;
+  std::vector<LayerPart> parts_;
+  std::vector<size_t> part_begin_;
+};
+
+// The layer, layer `k` of the stack.
+void encode_layer(const LayerView& layer, size_t k, const PrinterProfile& p, int bits, std::vector<uint8_t>& png,
+                  StackSummary& summary) {
+  summary.add(k, summarize_layer(layer, k));
+  if (bits == 8 && p.antialiasing) {  // anti-aliased: straight into the PNG
+    rasterize_layer_antialiased_png(layer, p, png);
+    return;
+  }
+  if (bits == 8) {  // binary 8-bit (.sl1): straight from the runs
+    thread_local MaskRuns runs;
+    rasterize_layer_runs(layer, p, runs);
+    encode_mask_png(runs, png);
+    return;
+  }
+  thread_local Buffer<uint8_t> image;
+  const MaskImageLayout layout = mask_image_layout(p);
+  image.resize(size_t(layout.width) * size_t(layout.height));
+  rasterize_layer(layer, p, image.data());
+  encode_mask_png(image.data(), layout.width, layout.height, bits, png);
+}
+
+void write_file(const std::string& path, const std::vector<uint8_t>& data) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) throw Error("cannot create '" + path + "': " + std::strerror(errno));
+  size_t done = 0;
+  while (done < data.size()) {
+    const ssize_t n = ::write(fd, data.data() + done, data.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int e = errno;
+      ::close(fd);
+      throw Error("cannot write '" + path + "': " + std::strerror(n < 0 ? e : ENOSPC));
+    }
+    done += size_t(n);
+  }
+  if (::close(fd) != 0) throw Error("cannot write '" + path + "': " + std::strerror(errno));
+}
+
+// The images are written into a staged folder that replaces the target (or moves its images
+// into an existing target) only when all are written; images of a former, longer export there
+// are removed then.
+void export_folder(Stack& stack, const PrinterProfile& p, const std::string& folder, StackSummary& summary,
+                   size_t& open_contours, const Progress& progress) {
+  StagedOutputs outputs;
+  const std::string staged = outputs.folder(folder);
+  for (size_t i = 0; i < stack.ranges(); ++i) {
+    open_contours += stack.open_range(i, progress);
+    const size_t first = stack.begin(i);
+    parallel_blocks(
+        stack.end(i) - first,
+        [&](size_t local) {
+          thread_local std::vector<uint8_t> png;
+          thread_local MadeLayer made;
+          encode_layer(stack.layer(local, made), first + local, p, p.antialiasing ? 8 : 1, png, summary);
+          // Plain writes: the staged folder as a whole is what appears atomically.
+          write_file(staged + "/" + mask_layer_file_name(FOLDER_PREFIX, first + local), png);
+        },
+        stack.encoding_progress(i, progress), PHASE);
+  }
+  // Last chance to cancel: once committed, the export is done and no longer reports.
+  report_progress(progress, 1, PHASE);
+  outputs.commit();
+  for (size_t k = stack.layers();; ++k) {
+    const std::string stale = folder + "/" + mask_layer_file_name(FOLDER_PREFIX, k);
+    if (::unlink(stale.c_str()) != 0) break;
+  }
+}
+
+// Encodes layers on all cores, a window ahead of the archive writer (write_sl1, write_goo), which
+// asks for them in order: range by range, the next one made when the writer first asks for one
+// of its layers. encode(layer, k, bytes) makes the layer, layer k of the stack.
+class OrderedLayers {
+ public:
+  using Encode = std::function<void(const LayerView& layer, size_t k, std::vector<uint8_t>& bytes)>;
+
+  OrderedLayers(Stack& stack, size_t& open_contours, const Progress& progress, Encode encode)
+      : stack_(stack), open_contours_(open_contours), progress_(progress), encode_(std::move(encode)) {}
+
+  const std::vector<uint8_t>& operator()(size_t k) {
+    if (!items_ || k >= stack_.end(range_)) next_range();
+    const size_t local = k - stack_.begin(range_);
+    if (local % 64 == 0)
+      report_progress(range_progress_, double(local) / double(stack_.end(range_) - stack_.begin(range_)), PHASE);
+    return items_->get(local);
+  }
+
+ private:
+  void next_range() {
+    if (items_) ++range_;
+    items_.reset();  // all of the range's layers were taken: its workers are idle
+    open_contours_ += stack_.open_range(range_, progress_);
+    range_progress_ = stack_.encoding_progress(range_, progress_);
+    const size_t first = stack_.begin(range_);
+    items_ = std::make_unique<OrderedParallel>(
+        stack_.end(range_) - first, size_t(16) * size_t(omp_get_max_threads()),
+        [this, first](size_t local, std::vector<uint8_t>& bytes) {
+          thread_local MadeLayer made;
+          encode_(stack_.layer(local, made), first + local, bytes);
+        });
+  }
+
+  Stack& stack_;
+  size_t& open_contours_;
+  const Progress& progress_;
+  const Encode encode_;
+  Progress range_progress_;
+  size_t range_ = 0;
+  std::unique_ptr<OrderedParallel> items_;
+};
+
+// An .sl1: always 8-bit PNGs, since PrusaSlicer's SL1 import decodes only 8-bit greyscale PNGs
+// (1-bit layers would import as empty). Each layer is also drawn into the top view the
+// thumbnails are made from.
+void export_sl1(Stack& stack, const PrinterProfile& p, const std::string& path, StackSummary& summary,
+                size_t& open_contours, const Progress& progress) {
+  TopView top_view(p, stack.layers());
+  OrderedLayers encoder(stack, open_contours, progress,
+                        [&](const LayerView& layer, size_t k, std::vector<uint8_t>& png) {
+                          encode_layer(layer, k, p, 8, png, summary);
+                          top_view.add(layer, k);
+                        });
+  write_sl1(path,
+            Sl1Job{p, stack.layers(), stack.thickness(), [&] { return summary.used_material_ml(stack.thickness()); },
+                   [&](int width, int height, std::vector<uint8_t>& png) {
+                     thumbnail_png(top_view.finish(), width, height, png);
+                   }},
+            std::ref(encoder));
+}
+
+// A .goo: each layer's record straight from its runs, which also go into the previews.
+void export_goo(Stack& stack, const PrinterProfile& p, const std::string& path, StackSummary& summary,
+                size_t& open_contours, const Progress& progress) {
+  const GooJob job{p, stack.layers(), stack.thickness()};
+  TopView top_view(p, stack.layers());
+  OrderedLayers encoder(stack, open_contours, progress,
+                        [&](const LayerView& layer, size_t k, std::vector<uint8_t>& record) {
+                          summary.add(k, summarize_layer(layer, k));
+                          thread_local MaskRuns runs;
+                          if (p.antialiasing)
+                            rasterize_layer_antialiased_runs(layer, p, runs);
+                          else
+                            rasterize_layer_runs(layer, p, runs);
+                          top_view.add(layer, k);
+                          encode_goo_layer(job, k, runs, record);
+                        });
+  write_goo(path, job, std::ref(encoder), [&] {
+    return GooSummary{summary.used_material_ml(stack.thickness()), goo_preview(top_view.finish(), kGooSmallPreview),
+                      goo_preview(top_view.finish(), kGooBigPreview)};
+  });
+}
+
+MaskExportStats export_stack(Stack& stack, const PrinterProfile& profile, const std::string& output_path,
+                             const Progress& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  validate_printer_profile(profile);
+  if (stack.layers() == 0) throw Error("mask export: the slices have no layers");
+  if (output_path.empty()) throw Error("mask export: no output path given");
+  report_progress(progress, 0, PHASE);
+  StackSummary summary(stack.layers());
+  MaskExportStats stats;
+  // The output's kind: ".sl1" and ".sl1s" are the same format (PrusaSlicer names the file after
+  // the printer), anything but those and ".goo" a folder.
+  const std::string ext = lower_extension(output_path);
+  if (ext == ".sl1" || ext == ".sl1s") {
+    export_sl1(stack, profile, output_path, summary, stats.ignored_open_contours, progress);
+  } else if (ext == ".goo") {
+    export_goo(stack, profile, output_path, summary, stats.ignored_open_contours, progress);
+  } else {
+    export_folder(stack, profile, output_path, summary, stats.ignored_open_contours, progress);
+  }
+  stats.ignored_open_contours += stack.made_open_contours();
+  stats.layers = stack.layers();
+  summary.measure_extent(profile, stats);
+  stats.seconds = seconds_since(start);
+  return stats;
+}
+
+}  // namespace
+
+MaskExportStats export_masks(const Slices& s, const PrinterProfile& profile,
+                             const std::string& output_path, const Progress& progress) {
+  Stack::check(s);
+  Stack stack(s);
+  return export_stack(stack, profile, output_path, progress);
+}
+
+MaskExportStats export_masks(const SliceChunks& chunks, const PrinterProfile& profile,
+                             const std::string& output_path, const Progress& progress) {
+  Stack stack(chunks);
+  return export_stack(stack, profile, output_path, progress);
+}
+
+MaskExportStats export_masks(const LayerMaker& maker, const PrinterProfile& profile, const std::string& output_path,
+                             const Progress& progress) {
+  Stack stack(maker);
+  return export_stack(stack, profile, output_path, progress);
+}
+
+}  // namespace slicereuse
