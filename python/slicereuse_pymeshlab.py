@@ -419,7 +419,7 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
             check = out / "direct" / Path(output).name if verify else None
             members = [m["name"] for m in plate["members"]]
             jobs.append(PlateJob(name=Path(output).name, out=str(out), epoch=epoch,
-                                 base={"output": output, "layout": str(Path(output).with_suffix("")) + "_layout.png",
+                                 base={"output": output, "layout": plate["layout"],
                                        "members": [{"name": m} for m in members], "area_used": plate["area_used"]},
                                  outputs=[str(p) for p in (output, check) if p],
                                  key=batch.key_of(plate=k, **parameters), plate=k, summary=str(summary),

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 
+#include "slicereuse/plates/plate_file_names.h"
 #include "slicereuse/util/atomic_file.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
@@ -87,7 +88,13 @@ void write_placements_file(const std::string& path, const PlacementsFile& f) {
       const Placement& p = r.placements[i];
       members.push_back({{"name", r.names[i]}, {"theta_deg", p.theta_deg}, {"tx_mm", p.tx_mm}, {"ty_mm", p.ty_mm}});
     }
-    plates.push_back({{"plate", k + 1}, {"area_used", r.area_used}, {"output", r.output}, {"members", std::move(members)}});
+    // The layout picture's name beside the print file's, so a reader need not make it up.
+    const std::string layout = r.output.empty() ? "" : plate_layout_file_name(r.output);
+    plates.push_back({{"plate", k + 1},
+                      {"area_used", r.area_used},
+                      {"output", r.output},
+                      {"layout", layout},
+                      {"members", std::move(members)}});
   }
   const Json platform = {{"x0", f.platform.x0}, {"y0", f.platform.y0}, {"x1", f.platform.x1}, {"y1", f.platform.y1}};
   const Json doc = {{"format", kFormat},
