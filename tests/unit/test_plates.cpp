@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -307,6 +308,11 @@ TEST_F(PlacementsFileTest, ReadsBackExactlyThePlacementsUsed) {
   for (size_t k = 0; k < a.members.size(); ++k) outputs.push_back("plate_" + std::to_string(k + 1) + ".sl1");
   write_placements_file(path("plates.json"), placements_of(a, s.names, 2, platform, outputs));
   const PlacementsFile f = read_placements_file(path("plates.json"));
+  // Each plate's layout picture is named beside its print file, for readers of the file.
+  std::ifstream written(path("plates.json"));
+  const std::string text((std::istreambuf_iterator<char>(written)), std::istreambuf_iterator<char>());
+  for (size_t k = 0; k < outputs.size(); ++k)
+    EXPECT_NE(text.find("\"layout\": \"plate_" + std::to_string(k + 1) + "_layout.png\""), std::string::npos) << text;
   EXPECT_EQ(f.spacing_mm, 2);
   EXPECT_EQ(f.platform.x0, platform.x0);
   EXPECT_EQ(f.platform.y0, platform.y0);
