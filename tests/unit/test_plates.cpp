@@ -790,7 +790,7 @@ TEST_F(PlateLayoutTest, DrawsEveryMemberAndRefusesOneWithoutFacesWritingNothing)
   EXPECT_FALSE(std::filesystem::exists(path("bad_layout.png")));
 }
 
-TEST(PlateJob, RefusesNoMembersAndAnEncodingWithoutThickness) {
+TEST(PlateJob, RefusesNoMembersAnEncodingWithoutThicknessAndAStartAboveEveryMember) {
   PlateJobOptions o;
   EXPECT_NE(test::error_of([&] { export_plate({}, o, display(100, 100), "/tmp/never"); }).find("at least one member"),
             std::string::npos);
@@ -799,4 +799,14 @@ TEST(PlateJob, RefusesNoMembersAndAnEncodingWithoutThickness) {
   o.encoding = &planes_only;
   EXPECT_NE(test::error_of([&] { export_plate({box}, o, display(100, 100), "/tmp/never"); }).find("no layer thickness"),
             std::string::npos);
+  PlateJobOptions above;
+  above.slicing.thickness = 0.1;
+  above.slicing.z_start = 5;
+  EXPECT_EQ(test::error_of([&] { export_plate({box}, above, display(100, 100), "/tmp/never"); }),
+            "no layers: z_start 5 mm is not below the top of the mesh at z = 1 mm");
+  EXPECT_EQ(test::error_of([&] {
+              export_plate({box, test::make_box(3, 0, 0, 4, 1, 2)}, above, display(100, 100), "/tmp/never");
+            }),
+            "no layers: z_start 5 mm is not below the top of any member at z = 2 mm");
+  EXPECT_FALSE(std::filesystem::exists("/tmp/never"));
 }

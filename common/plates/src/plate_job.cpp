@@ -295,6 +295,12 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
   std::vector<PlateMember> members = prepare_members(placed, o, st);
   size_t L = 0;
   for (const PlateMember& p : members) L = std::max(L, p.layers());
+  if (L == 0) {
+    double top = -INFINITY;
+    for (const Mesh& m : placed) top = std::max(top, z_range(m).max);
+    throw Error(format("no layers: z_start %g mm is not below the top of %s at z = %g mm", st.z_start,
+                       placed.size() == 1 ? "the mesh" : "any member", top));
+  }
   st.layers = L;
   const uint64_t budget = o.whole_stack ? 0 : range_budget(o);
 
