@@ -1,0 +1,31 @@
+#pragma once
+// layer_region: one layer's filled region as Clipper polygons (integer coordinates, kRegionScale
+// units per mm), and back.
+//
+// layer_paths: the layer's closed contours as they are (open contours are ignored: they bound
+// nothing), in kRegionScale units, rounded to the nearest unit (1 nm).
+// layer_region: the region those contours fill by the nonzero winding rule (the masks' rule,
+// rasterize_layer.h) as simple polygons: outer loops counter-clockwise, holes clockwise, none
+// crossing another. Overlapping members or supports merge into one region.
+// region_into_layer: polygons (any orientation convention Clipper gives, outer CCW) as layer 0 of
+// out (replaced): one closed contour per polygon at height z, xyz only, no encoding.
+#include <clipper.hpp>
+#include <cmath>
+
+#include "slicereuse/slicing/layer_view.h"
+#include "slicereuse/slicing/slices.h"
+
+namespace slicereuse {
+
+constexpr double kRegionScale = 1e6;  // Clipper units per mm (1 nm)
+
+inline ClipperLib::cInt region_units(double mm) { return ClipperLib::cInt(std::llround(mm * kRegionScale)); }
+
+ClipperLib::Paths layer_paths(const LayerView& layer);
+ClipperLib::Paths layer_region(const LayerView& layer);
+void region_into_layer(const ClipperLib::Paths& region, double z, Slices& out);
+
+// Area in mm^2 of a region (outer loops positive, holes negative).
+double region_area_mm2(const ClipperLib::Paths& region);
+
+}  // namespace slicereuse

@@ -1,0 +1,69 @@
+#pragma once
+// support_tree: the support structure a part's support points ask for, as one mesh to slice with
+// the part (closed shells that may overlap each other and the part: the masks' nonzero rule
+// fills their union). The part is not moved: the structure stands below it, on ground_z.
+// For each point, after PrusaSlicer's SLA supports (SL1S defaults, its sla_print *SL1S*):
+//   head: a vertical cone whose narrow end (head_front_diameter_mm) sits head_penetration_mm
+//     inside the part above the point, widening to the pillar's diameter head_width_mm below the
+//     point;
+//   pillar: a vertical cylinder of pillar_diameter_mm from the head down to the pad's top (or
+//     ground_z without a pad), standing on a base cone (base_diameter_mm, base_height_mm);
+//     where the way down is blocked by the part (a vertical ray through the pillar's axis or its
+//     rim, with clearance, hits it), the pillar ends on the part with a small head
+//     (head_front_diameter_mm, penetrating head_penetration_mm) instead.
+// pad (pad_enable): under everything that reaches ground_z, the convex hull of the bases grown
+//   by pad_brim_mm, pad_wall_thickness_mm thick, its walls sloping at pad_wall_slope_deg.
+// head_zones: where the structure may enter the part (each head, and each foot on the part), as
+// vertical cones: the only places the part's and the supports' sections may overlap.
+// Throws Error when a point lies below ground_z + elevation or the structure would be taller than
+// max_height_mm ("... pillar of H mm, taller than the printer's ... mm").
+#include <cstddef>
+#include <vector>
+
+#include "slicereuse/mesh/mesh.h"
+#include "slicereuse/supports/support_points.h"
+
+namespace slicereuse {
+
+struct SupportTreeOptions {  // PrusaSlicer 2.5's SL1S print profile (sla_print:*SL1S*)
+  double head_front_diameter_mm = 0.5;
+  double head_penetration_mm = 0.5;
+  double head_width_mm = 3;
+  double pillar_diameter_mm = 1;
+  double base_diameter_mm = 3;
+  double base_height_mm = 1;
+  double object_elevation_mm = 5;
+  bool pad_enable = true;
+  double pad_wall_thickness_mm = 1;
+  double pad_wall_slope_deg = 45;
+  double pad_brim_mm = 1.6;
+  double max_height_mm = 150;
+};
+
+// A vertical cone where supports may enter the part: radius r_bottom at z_bottom, r_top at z_top.
+struct HeadZone {
+  double x = 0, y = 0;
+  double z_bottom = 0, z_top = 0;
+  double r_bottom = 0, r_top = 0;
+};
+
+struct SupportTree {
+  Mesh mesh;
+  std::vector<HeadZone> head_zones;
+  size_t pillars = 0;         // reaching the pad or ground
+  size_t on_part = 0;         // ending on the part
+  double ground_z = 0;
+};
+
+SupportTree build_support_tree(const Mesh& part, const SupportPoints& points, double ground_z,
+                               const SupportTreeOptions& options);
+
+// Where the structure stands for a part sliced from z_start in layers of thickness: elevation
+// rounded to whole layers below z_start (0 when the part stands on the plate), so the part's
+// layers keep their planes and the job gains round(elevation / thickness) layers below it.
+size_t support_layers_below(double elevation_mm, double thickness);
+inline double support_ground_z(double z_start, double thickness, double elevation_mm) {
+  return z_start - double(support_layers_below(elevation_mm, thickness)) * thickness;
+}
+
+}  // namespace slicereuse
