@@ -5,7 +5,7 @@
 #include <string_view>
 
 #include "error_of.h"
-#include "text_tokens.h"
+#include "slicereuse/util/text_tokens.h"
 
 using namespace slicereuse::detail;
 

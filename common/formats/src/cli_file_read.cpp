@@ -18,7 +18,7 @@
 #include "slicereuse/util/buffer.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/input_file.h"
-#include "text_tokens.h"
+#include "slicereuse/util/text_tokens.h"
 
 namespace slicereuse {
 namespace {

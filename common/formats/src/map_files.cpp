@@ -15,7 +15,7 @@
 #include "slicereuse/util/atomic_file.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/input_file.h"
-#include "text_tokens.h"
+#include "slicereuse/util/text_tokens.h"
 
 namespace slicereuse {
 namespace {

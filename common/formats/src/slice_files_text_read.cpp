@@ -12,7 +12,7 @@
 #include "slice_files_detail.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/parallel_blocks.h"
-#include "text_tokens.h"
+#include "slicereuse/util/text_tokens.h"
 
 namespace slicereuse::detail {
 namespace {

@@ -1,5 +1,6 @@
 #pragma once
 // text_tokens: the one tokenizer of the text formats, .ctr / .enc (slice_files_text_read.cpp),
+// support points (support_points_file.cpp),
 // .map (map_files.cpp) and ASCII CLI (cli_file_read.cpp); internal, not part of the API.
 //   LineReader: the lines of a text, ending at '\n' (a '\r' before it is dropped), numbered from 1;
 //   fail_at_line: the error naming the file and the line, "'path', line N: what".
