@@ -17,21 +17,17 @@ anti-aliasing to PrusaSlicer's. The part is a tapered L turned by 17 degrees, so
 pixels at arbitrary places and a mirror or turn would not go unnoticed.
 Skipped only when prusa-slicer is not installed (scripts/setup installs it).
 """
-import configparser
 import math
-import re
 import shutil
 import struct
 import subprocess
-import zipfile
-import zlib
-from pathlib import Path
 
 import numpy as np
 import pytest
+from slicereuse_prusaslicer import VENDOR_PROFILES, read_archive, write_config
+from slicereuse_prusaslicer import prusaslicer_config as vendor_config
 
 PRUSA_SLICER = shutil.which("prusa-slicer")
-VENDOR_PROFILES = Path("/usr/share/PrusaSlicer/profiles/PrusaResearch.ini")
 LAYER_HEIGHT = 0.05
 PART_HEIGHT = 5.0  # mm: 100 layers
 
@@ -73,62 +69,12 @@ def write_stl(path, triangles):
             f.write(struct.pack("<12fH", *(n / np.linalg.norm(n)), *t[0], *t[1], *t[2], 0))
 
 
-def vendor_section(ini, section):
-    """A PrusaResearch.ini section with what it inherits (parents first, "; "-separated)."""
-    kind = section.split(":", 1)[0]
-    values = {}
-    for parent in filter(None, (p.strip() for p in ini[section].get("inherits", "").split(";"))):
-        values.update(vendor_section(ini, f"{kind}:{parent}"))
-    values.update({k: v for k, v in ini[section].items() if k != "inherits"})
-    return values
-
-
 def prusaslicer_config(printer):
     """The printer preset with its default print and material presets, as the GUI would combine
     them, with supports, pad and elephant foot compensation off, gamma 1 and equal layers."""
     assert VENDOR_PROFILES.is_file(), f"PrusaSlicer's profiles are missing: {VENDOR_PROFILES}"
-    ini = configparser.ConfigParser(interpolation=None, strict=False, delimiters=("=",))
-    ini.optionxform = str
-    ini.read(VENDOR_PROFILES)
-    machine = vendor_section(ini, f"printer:{printer}")
-    config = {**vendor_section(ini, f"sla_print:{machine['default_sla_print_profile']}"),
-              **vendor_section(ini, f"sla_material:{machine['default_sla_material_profile']}"), **machine}
-    for key in list(config):
-        if key.startswith(("compatible_", "default_")) or key.endswith("_notes"):
-            del config[key]
-    config.update(supports_enable="0", pad_enable="0", elefant_foot_compensation="0", gamma_correction="1",
-                  layer_height=str(LAYER_HEIGHT), initial_layer_height=str(LAYER_HEIGHT))
-    return config
-
-
-def png_grey(data, name):
-    """An 8-bit greyscale PNG without row filters (what both writers make) as a uint8 array."""
-    assert data[:8] == b"\x89PNG\r\n\x1a\n", name
-    pos, idat, header = 8, b"", None
-    while pos < len(data):
-        size, kind = struct.unpack(">I4s", data[pos:pos + 8])
-        if kind == b"IHDR":
-            header = struct.unpack(">IIBBBBB", data[pos + 8:pos + 8 + size])
-        elif kind == b"IDAT":
-            idat += data[pos + 8:pos + 8 + size]
-        pos += 12 + size
-    width, height, depth, colour, _, _, interlace = header
-    assert (depth, colour, interlace) == (8, 0, 0), f"{name}: not 8-bit greyscale: {header}"
-    rows = np.frombuffer(zlib.decompress(idat), np.uint8).reshape(height, width + 1)
-    assert not rows[:, 0].any(), f"{name}: row filters (this reader takes only filter 0)"
-    return rows[:, 1:]
-
-
-def read_archive(path):
-    """(layer images in order, config.ini dict, prusaslicer.ini dict)."""
-    with zipfile.ZipFile(path) as z:
-        layers = sorted(n for n in z.namelist() if "/" not in n and re.search(r"\d{5}\.png$", n))
-        images = [png_grey(z.read(n), f"{path.name}:{n}") for n in layers]
-        inis = []
-        for name in ("config.ini", "prusaslicer.ini"):
-            inis.append(dict(line.split(" = ", 1) if " = " in line else (line.rstrip(" ="), "")
-                             for line in z.read(name).decode().splitlines()))
-    return images, inis[0], inis[1]
+    return vendor_config(printer, supports_enable="0", pad_enable="0", elefant_foot_compensation="0",
+                         gamma_correction="1", layer_height=str(LAYER_HEIGHT), initial_layer_height=str(LAYER_HEIGHT))
 
 
 def same_value(a, b):
@@ -153,7 +99,7 @@ def part(tmp_path_factory):
 def test_our_archive_is_prusaslicers_pixel_for_pixel_within_2_levels(pymeshlab, part, preset, printer, extension):
     folder, centre = part
     config = prusaslicer_config(printer)
-    (folder / f"{preset}.ini").write_text("".join(f"{k} = {v}\n" for k, v in config.items()))
+    write_config(folder / f"{preset}.ini", config)
     bed = np.array([[float(c) for c in p.split("x")] for p in config["bed_shape"].split(",")])
     bed_centre = (bed.min(0) + bed.max(0)) / 2
     display_centre = np.array([float(config["display_width"]), float(config["display_height"])]) / 2

@@ -1,0 +1,76 @@
+"""PrusaSlicer's side of a comparison: its printers' configurations from its own vendor profiles,
+and reading the .sl1 / .sl1s archives it (or we) write. Used by the tests that compare our print
+files with PrusaSlicer's (tests/python/test_prusaslicer_sl1.py) and by the benchmarks that run
+both (bench/bench_supports.py)."""
+import configparser
+import re
+import struct
+import zipfile
+import zlib
+from pathlib import Path
+
+import numpy as np
+
+VENDOR_PROFILES = Path("/usr/share/PrusaSlicer/profiles/PrusaResearch.ini")
+
+
+def vendor_section(ini, section):
+    """A PrusaResearch.ini section with what it inherits (parents first, "; "-separated)."""
+    kind = section.split(":", 1)[0]
+    values = {}
+    for parent in filter(None, (p.strip() for p in ini[section].get("inherits", "").split(";"))):
+        values.update(vendor_section(ini, f"{kind}:{parent}"))
+    values.update({k: v for k, v in ini[section].items() if k != "inherits"})
+    return values
+
+
+def prusaslicer_config(printer, **overrides):
+    """The printer preset with its default print and material presets, as the GUI would combine
+    them, then the overrides (PrusaSlicer's keys, values as strings)."""
+    assert VENDOR_PROFILES.is_file(), f"PrusaSlicer's profiles are missing: {VENDOR_PROFILES}"
+    ini = configparser.ConfigParser(interpolation=None, strict=False, delimiters=("=",))
+    ini.optionxform = str
+    ini.read(VENDOR_PROFILES)
+    machine = vendor_section(ini, f"printer:{printer}")
+    config = {**vendor_section(ini, f"sla_print:{machine['default_sla_print_profile']}"),
+              **vendor_section(ini, f"sla_material:{machine['default_sla_material_profile']}"), **machine}
+    for key in list(config):
+        if key.startswith(("compatible_", "default_")) or key.endswith("_notes"):
+            del config[key]
+    config.update(overrides)
+    return config
+
+
+def write_config(path, config):
+    """config as an .ini PrusaSlicer's --load reads."""
+    Path(path).write_text("".join(f"{k} = {v}\n" for k, v in config.items()))
+
+
+def png_grey(data, name):
+    """An 8-bit greyscale PNG without row filters (what both writers make) as a uint8 array."""
+    assert data[:8] == b"\x89PNG\r\n\x1a\n", name
+    pos, idat, header = 8, b"", None
+    while pos < len(data):
+        size, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        if kind == b"IHDR":
+            header = struct.unpack(">IIBBBBB", data[pos + 8:pos + 8 + size])
+        elif kind == b"IDAT":
+            idat += data[pos + 8:pos + 8 + size]
+        pos += 12 + size
+    width, height, depth, colour, _, _, interlace = header
+    assert (depth, colour, interlace) == (8, 0, 0), f"{name}: not 8-bit greyscale: {header}"
+    rows = np.frombuffer(zlib.decompress(idat), np.uint8).reshape(height, width + 1)
+    assert not rows[:, 0].any(), f"{name}: row filters (this reader takes only filter 0)"
+    return rows[:, 1:]
+
+
+def read_archive(path):
+    """(layer images in order, config.ini dict, prusaslicer.ini dict)."""
+    with zipfile.ZipFile(path) as z:
+        layers = sorted(n for n in z.namelist() if "/" not in n and re.search(r"\d{5}\.png$", n))
+        images = [png_grey(z.read(n), f"{path.name}:{n}") for n in layers]
+        inis = []
+        for name in ("config.ini", "prusaslicer.ini"):
+            inis.append(dict(line.split(" = ", 1) if " = " in line else (line.rstrip(" ="), "")
+                             for line in z.read(name).decode().splitlines()))
+    return images, inis[0], inis[1]
