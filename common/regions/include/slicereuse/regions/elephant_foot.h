@@ -1,11 +1,12 @@
 #pragma once
 // elephant_foot: the first layer shrunk against elephant-foot spread (PrusaSlicer's
 // elefant_foot_compensation and elefant_foot_min_width): the layer's region (layer_region.h)
-// offset inwards by compensation_mm, except where that would make a feature narrower than
-// min_width_mm: such features keep the width an opening by min_width_mm / 2 leaves them. The
-// result replaces the layer's contours, so binary and anti-aliased masks agree.
+// offset inwards by compensation_mm (miter joins), except where that would make a feature
+// narrower than min_width_mm: such features (those an opening by min_width_mm / 2 +
+// compensation_mm removes) keep their own width, unshrunk. The result replaces the layer's
+// contours, so binary and anti-aliased masks agree.
 // Output: out replaced by one layer at height z (region_into_layer). compensation_mm 0 copies
-// the region unchanged.
+// the region unchanged. Throws Error for a negative or non-finite compensation or width.
 #include "slicereuse/slicing/layer_view.h"
 #include "slicereuse/slicing/slices.h"
 

@@ -10,13 +10,21 @@
 //     ground_z without a pad), standing on a base cone (base_diameter_mm, base_height_mm);
 //     where the way down is blocked by the part (a vertical ray through the pillar's axis or its
 //     rim, with clearance, hits it), the pillar ends on the part with a small head
-//     (head_front_diameter_mm, penetrating head_penetration_mm) instead.
+//     (head_front_diameter_mm, penetrating head_penetration_mm) instead: a foot, upside down,
+//     whose cone starts 1 mm above the highest hit; where the part below is nearer than the
+//     head's width, the head itself ends in it.
+// Every cone and cylinder is a 16-gon (support_shapes.h), the pad a loft between two outlines;
+// each shell closed, its faces counter-clockwise seen from outside.
 // pad (pad_enable): under everything that reaches ground_z, the convex hull of the bases grown
 //   by pad_brim_mm, pad_wall_thickness_mm thick, its walls sloping at pad_wall_slope_deg.
 // head_zones: where the structure may enter the part (each head, and each foot on the part), as
 // vertical cones: the only places the part's and the supports' sections may overlap.
-// Throws Error when a point lies below ground_z + elevation or the structure would be taller than
-// max_height_mm ("... pillar of H mm, taller than the printer's ... mm").
+// No points: no structure and no pad (an empty mesh, ground_z set).
+// Throws Error when a point lies at or below the pad's top (ground_z without a pad), the
+// structure would be taller than max_height_mm ("... pillar of H mm, taller than the printer's
+// ... mm"), an option or ground_z is not a finite number of the right sign, the pad's walls
+// slope in by more than the base's radius and brim, or the points are inconsistent
+// (validate_support_points) or the part has no faces.
 #include <cstddef>
 #include <vector>
 
@@ -61,6 +69,11 @@ SupportTree build_support_tree(const Mesh& part, const SupportPoints& points, do
 // Where the structure stands for a part sliced from z_start in layers of thickness: elevation
 // rounded to whole layers below z_start (0 when the part stands on the plate), so the part's
 // layers keep their planes and the job gains round(elevation / thickness) layers below it.
+// Elevation 0 (the part on the plate, or sunk into the pad) is out of scope for the structure:
+// then ground_z = z_start, the pad would fill the part's own lowest layers and every point
+// under its top is refused; a part on the plate is printed without supports.
+// Throws Error for a thickness that is not positive, an elevation that is negative or not
+// finite, or more than kMaxLayers layers.
 size_t support_layers_below(double elevation_mm, double thickness);
 inline double support_ground_z(double z_start, double thickness, double elevation_mm) {
   return z_start - double(support_layers_below(elevation_mm, thickness)) * thickness;

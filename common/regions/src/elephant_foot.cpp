@@ -1,0 +1,56 @@
+#include "slicereuse/regions/elephant_foot.h"
+
+#include <cmath>
+
+#include "slicereuse/regions/layer_region.h"
+#include "slicereuse/util/error.h"
+#include "slicereuse/util/format.h"
+
+namespace slicereuse {
+
+namespace {
+
+// Miter joins, limit 3: PrusaSlicer's offsets' defaults (ClipperUtils). A straight contour moves
+// by exactly the compensation and a corner stays a corner (no arc of new vertices); a round
+// opening would also cut slivers off convex corners, kept unshrunk as islands.
+constexpr double kMiterLimit = 3;
+
+ClipperLib::Paths offset_region(const ClipperLib::Paths& region, double delta_mm) {
+  ClipperLib::ClipperOffset offset(kMiterLimit);
+  offset.AddPaths(region, ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
+  ClipperLib::Paths out;
+  offset.Execute(out, double(region_units(delta_mm)));
+  return out;
+}
+
+ClipperLib::Paths clip(const ClipperLib::Paths& a, const ClipperLib::Paths& b, ClipperLib::ClipType type) {
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(a, ClipperLib::ptSubject, true);
+  clipper.AddPaths(b, ClipperLib::ptClip, true);
+  ClipperLib::Paths out;
+  clipper.Execute(type, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  return out;
+}
+
+}  // namespace
+
+void compensate_elephant_foot(const LayerView& layer, double z, double compensation_mm, double min_width_mm,
+                              Slices& out) {
+  if (!(std::isfinite(compensation_mm) && compensation_mm >= 0))
+    throw Error(format("the elephant-foot compensation is %g mm; it must be a finite, non-negative number",
+                       compensation_mm));
+  if (!(std::isfinite(min_width_mm) && min_width_mm >= 0))
+    throw Error(format("the elephant-foot minimal width is %g mm; it must be a finite, non-negative number",
+                       min_width_mm));
+  ClipperLib::Paths region = layer_region(layer);
+  if (compensation_mm > 0) {
+    // Features an opening by min_width + 2 compensation removes: shrunk, they would be narrower
+    // than min_width (or gone), so they keep their own width.
+    const double half = min_width_mm / 2 + compensation_mm;
+    const ClipperLib::Paths narrow = clip(region, offset_region(offset_region(region, -half), half), ClipperLib::ctDifference);
+    region = clip(offset_region(region, -compensation_mm), narrow, ClipperLib::ctUnion);
+  }
+  region_into_layer(region, z, out);
+}
+
+}  // namespace slicereuse
