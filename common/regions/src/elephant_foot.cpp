@@ -45,10 +45,13 @@ void compensate_elephant_foot(const LayerView& layer, double z, double compensat
   ClipperLib::Paths region = layer_region(layer);
   if (compensation_mm > 0) {
     // Features an opening by min_width + 2 compensation removes: shrunk, they would be narrower
-    // than min_width (or gone), so they keep their own width.
+    // than min_width (or gone), so they keep their own width, and a collar of the compensation
+    // into the rest of the region, which shrinks away from them, keeps them joined to it.
     const double half = min_width_mm / 2 + compensation_mm;
-    const ClipperLib::Paths narrow = clip(region, offset_region(offset_region(region, -half), half), ClipperLib::ctDifference);
-    region = clip(offset_region(region, -compensation_mm), narrow, ClipperLib::ctUnion);
+    const ClipperLib::Paths opened = offset_region(offset_region(region, -half), half);
+    const ClipperLib::Paths narrow = clip(region, opened, ClipperLib::ctDifference);
+    const ClipperLib::Paths kept = clip(region, offset_region(narrow, compensation_mm), ClipperLib::ctIntersection);
+    region = clip(offset_region(region, -compensation_mm), kept, ClipperLib::ctUnion);
   }
   region_into_layer(region, z, out);
 }

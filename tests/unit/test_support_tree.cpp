@@ -1,0 +1,309 @@
+// The support tree: closed outward shells, pillars that enter the part only at heads and feet,
+// supports that form no island of their own, blocked ways down, the pad, and errors in words.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "error_of.h"
+#include "family.h"
+#include "shapes.h"
+#include "slicereuse/mesh/fingerprint.h"
+#include "slicereuse/regions/layer_region.h"
+#include "slicereuse/slicing/layer_planes.h"
+#include "slicereuse/slicing/slice_layers.h"
+#include "slicereuse/supports/support_tree.h"
+
+using namespace slicereuse;
+using ClipperLib::Paths;
+
+namespace {
+
+constexpr double kLayer = 0.05;
+
+// Points at the centroids of the given faces of part.
+SupportPoints points_on(const Mesh& part, const std::vector<uint32_t>& faces) {
+  SupportPoints p;
+  p.fingerprint = mesh_fingerprint(part);
+  for (uint32_t f : faces) {
+    p.face.push_back(f);
+    p.bary.insert(p.bary.end(), {1.0 / 3, 1.0 / 3, 1 - 2.0 / 3});
+    p.kind.push_back(uint8_t(SupportKind::Overhang));
+    p.layer.push_back(0);
+  }
+  place_support_points(p, part);
+  return p;
+}
+
+// The face of part whose centroid is nearest (x, y, z).
+uint32_t face_near(const Mesh& part, double x, double y, double z) {
+  uint32_t best = 0;
+  double best_d = HUGE_VAL;
+  for (uint32_t f = 0; f < part.faces(); ++f) {
+    double c[3] = {0, 0, 0};
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) c[k] += part.V[3 * size_t(part.F[3 * f + j]) + k] / 3;
+    const double d = (c[0] - x) * (c[0] - x) + (c[1] - y) * (c[1] - y) + (c[2] - z) * (c[2] - z);
+    if (d < best_d) best_d = d, best = f;
+  }
+  return best;
+}
+
+// Faces facing down (unit normal z < -0.5), greedily at least `spacing` mm apart.
+std::vector<uint32_t> downward_faces(const Mesh& part, double spacing) {
+  std::vector<uint32_t> faces;
+  const SupportPoints all = [&] {
+    std::vector<uint32_t> f(part.faces());
+    std::iota(f.begin(), f.end(), 0u);
+    return points_on(part, f);
+  }();
+  std::vector<std::array<double, 3>> taken;
+  for (uint32_t f = 0; f < part.faces(); ++f) {
+    if (all.normal[3 * f + 2] >= -0.5) continue;
+    const double* c = &all.xyz[3 * size_t(f)];
+    if (std::any_of(taken.begin(), taken.end(), [&](const std::array<double, 3>& t) {
+          return (t[0] - c[0]) * (t[0] - c[0]) + (t[1] - c[1]) * (t[1] - c[1]) + (t[2] - c[2]) * (t[2] - c[2]) <
+                 spacing * spacing;
+        }))
+      continue;
+    taken.push_back({c[0], c[1], c[2]});
+    faces.push_back(f);
+  }
+  return faces;
+}
+
+// The mesh's shells: the components of faces joined by shared vertices, each as its own mesh.
+std::vector<Mesh> shells_of(const Mesh& m) {
+  std::vector<uint32_t> root(m.vertices());
+  std::iota(root.begin(), root.end(), 0u);
+  auto find = [&](uint32_t v) {
+    while (root[v] != v) v = root[v] = root[root[v]];
+    return v;
+  };
+  for (size_t f = 0; f < m.faces(); ++f)
+    for (int j = 1; j < 3; ++j) root[find(m.F[3 * f + j])] = find(m.F[3 * f]);
+  std::vector<int> shell_of_root(m.vertices(), -1);
+  std::vector<Mesh> shells;
+  for (size_t f = 0; f < m.faces(); ++f) {
+    int& s = shell_of_root[find(m.F[3 * f])];
+    // Vertices keep their ids (unused ones are harmless to the edge census and the volume).
+    if (s < 0) s = int(shells.size()), shells.push_back(Mesh{m.V, {}});
+    Mesh& shell = shells[size_t(s)];
+    shell.F.insert(shell.F.end(), &m.F[3 * f], &m.F[3 * f] + 3);
+  }
+  return shells;
+}
+
+void expect_closed_outward_shells(const SupportTree& tree, size_t expected_shells) {
+  const std::vector<Mesh> shells = shells_of(tree.mesh);
+  EXPECT_EQ(shells.size(), expected_shells);
+  for (size_t s = 0; s < shells.size(); ++s) {
+    EXPECT_EQ(test::edge_census(shells[s]).bad_edges, 0u) << "shell " << s;
+    EXPECT_GT(test::signed_volume(shells[s]), 0) << "shell " << s;
+  }
+}
+
+Paths region_of(const Slices& s, size_t k) { return layer_region(LayerView(s, k)); }
+
+Paths clip(const Paths& a, const Paths& b, ClipperLib::ClipType type) {
+  ClipperLib::Clipper c;
+  c.AddPaths(a, ClipperLib::ptSubject, true);
+  c.AddPaths(b, ClipperLib::ptClip, true);
+  Paths out;
+  c.Execute(type, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  return out;
+}
+
+// The head zones' sections at z, as circles around the 16-gons, grown by 1e-3 mm.
+Paths zones_at(const std::vector<HeadZone>& zones, double z) {
+  Paths out;
+  for (const HeadZone& h : zones) {
+    if (z < h.z_bottom || z > h.z_top) continue;
+    const double r = h.r_bottom + (h.r_top - h.r_bottom) * (z - h.z_bottom) / (h.z_top - h.z_bottom);
+    const double R = r / std::cos(M_PI / 64) + 1e-3;
+    ClipperLib::Path circle;
+    for (int i = 0; i < 64; ++i)
+      circle.emplace_back(region_units(h.x + R * std::cos(2 * M_PI * i / 64)),
+                          region_units(h.y + R * std::sin(2 * M_PI * i / 64)));
+    out.push_back(circle);
+  }
+  return clip(out, {}, ClipperLib::ctUnion);
+}
+
+// Slices part and tree on the same planes and checks, layer by layer: the part's and the
+// supports' sections overlap only within the head zones; every piece of the supports' section
+// above layer 0 overlaps the layer below (supports or part: a foot rests on the part).
+// Returns the number of layers where part and supports overlap.
+size_t check_sections(const Mesh& part, const SupportTree& tree) {
+  const std::vector<double> planes = layer_planes(tree.ground_z, kLayer, z_range(part).max);
+  const Slices ps = slice_planes(part, planes, {}, false), ss = slice_planes(tree.mesh, planes, {}, false);
+  EXPECT_EQ(ss.open_contours(), 0u);
+  if (tree.pillars > 0) EXPECT_GT(region_area_mm2(region_of(ss, 0)), 0);
+  size_t overlapping = 0;
+  Paths below;
+  for (size_t k = 0; k < planes.size(); ++k) {
+    const Paths p = region_of(ps, k), s = region_of(ss, k);
+    const Paths both = clip(p, s, ClipperLib::ctIntersection);
+    if (!both.empty()) ++overlapping;
+    const Paths outside = clip(both, zones_at(tree.head_zones, planes[k]), ClipperLib::ctDifference);
+    EXPECT_LT(region_area_mm2(outside), 1e-9) << "layer " << k << " at z = " << planes[k];
+    if (k > 0)
+      for (const ClipperLib::Path& piece : s)
+        if (ClipperLib::Orientation(piece))
+          EXPECT_FALSE(clip({piece}, below, ClipperLib::ctIntersection).empty())
+              << "an island of the supports in layer " << k << " at z = " << planes[k];
+    below = clip(p, s, ClipperLib::ctUnion);
+  }
+  return overlapping;
+}
+
+test::FamilyOptions shape(const char* name) {
+  test::FamilyOptions o;
+  o.shape = name;
+  o.faces = 10000;
+  o.height = 10;
+  return o;
+}
+
+}  // namespace
+
+TEST(SupportTree, OnePointOverFlatGroundIsHeadPillarBaseAndPad) {
+  const Mesh part = test::make_box(0, 0, 0, 4, 4, 2);
+  const SupportPoints pts = points_on(part, {face_near(part, 1, 2, 0)});
+  const SupportTree tree = build_support_tree(part, pts, -6, SupportTreeOptions{});
+  EXPECT_EQ(tree.pillars, 1u);
+  EXPECT_EQ(tree.on_part, 0u);
+  EXPECT_EQ(tree.ground_z, -6);
+  ASSERT_EQ(tree.head_zones.size(), 1u);
+  const HeadZone& h = tree.head_zones[0];
+  EXPECT_DOUBLE_EQ(h.z_top, 0.5);
+  EXPECT_DOUBLE_EQ(h.z_bottom, -3);
+  EXPECT_DOUBLE_EQ(h.r_top, 0.25);
+  EXPECT_DOUBLE_EQ(h.r_bottom, 0.5);
+  expect_closed_outward_shells(tree, 4);  // head, pillar, base, pad
+  const ZRange zr = z_range(tree.mesh);
+  EXPECT_EQ(zr.min, -6);
+  EXPECT_EQ(zr.max, 0.5);
+  // The pad's bottom is exactly ground_z, its top ground_z + the wall thickness; the base on it
+  // is 1 mm high, the pillar above it reaches the head's bottom.
+  std::vector<double> zs;
+  for (size_t v = 0; v < tree.mesh.vertices(); ++v) zs.push_back(tree.mesh.V[3 * v + 2]);
+  std::sort(zs.begin(), zs.end());
+  zs.erase(std::unique(zs.begin(), zs.end()), zs.end());
+  EXPECT_EQ(zs, (std::vector<double>{-6, -5, -4, -3, 0.5}));
+  check_sections(part, tree);
+}
+
+TEST(SupportTree, NoPadStandsOnTheGround) {
+  const Mesh part = test::make_box(0, 0, 0, 4, 4, 2);
+  SupportTreeOptions o;
+  o.pad_enable = false;
+  const SupportTree tree = build_support_tree(part, points_on(part, {face_near(part, 1, 2, 0)}), -5, o);
+  expect_closed_outward_shells(tree, 3);  // head, pillar, base
+  EXPECT_EQ(z_range(tree.mesh).min, -5);
+}
+
+TEST(SupportTree, NoPointsNoStructure) {
+  const Mesh part = test::make_box(0, 0, 0, 4, 4, 2);
+  const SupportTree tree = build_support_tree(part, points_on(part, {}), -5, SupportTreeOptions{});
+  EXPECT_EQ(tree.mesh.faces(), 0u);
+  EXPECT_TRUE(tree.head_zones.empty());
+  EXPECT_EQ(tree.ground_z, -5);
+}
+
+TEST(SupportTree, BlockedPillarEndsOnThePartWithAFoot) {
+  // A wide slab above a small block: under the block the way down is blocked, beside it clear.
+  Mesh part = test::make_box(0, 0, 0, 10, 10, 2);
+  const Mesh slab = test::make_box(0, 0, 8, 20, 10, 10);
+  const uint32_t offset = uint32_t(part.vertices());
+  part.V.insert(part.V.end(), slab.V.begin(), slab.V.end());
+  for (uint32_t i : slab.F) part.F.push_back(i + offset);
+  const SupportPoints pts = points_on(part, {face_near(part, 5, 5, 8), face_near(part, 15, 5, 8)});
+  ASSERT_LT(pts.xyz[0], 10);
+  ASSERT_GT(pts.xyz[3], 10);
+  const SupportTree tree = build_support_tree(part, pts, -5, SupportTreeOptions{});
+  EXPECT_EQ(tree.pillars, 1u);
+  EXPECT_EQ(tree.on_part, 1u);
+  ASSERT_EQ(tree.head_zones.size(), 3u);  // two heads and the foot
+  const HeadZone& foot = tree.head_zones[1];
+  EXPECT_DOUBLE_EQ(foot.z_bottom, 2 - 0.5);
+  EXPECT_DOUBLE_EQ(foot.z_top, 2 + 1);
+  EXPECT_DOUBLE_EQ(foot.r_bottom, 0.25);
+  EXPECT_DOUBLE_EQ(foot.r_top, 0.5);
+  // head, pillar, foot; head, pillar, base; pad
+  expect_closed_outward_shells(tree, 7);
+  EXPECT_GT(check_sections(part, tree), 0u);
+}
+
+TEST(SupportTree, HeadReachingThePartBelowEndsInIt) {
+  Mesh part = test::make_box(0, 0, 0, 10, 10, 2);
+  const Mesh slab = test::make_box(0, 0, 4, 10, 10, 6);
+  const uint32_t offset = uint32_t(part.vertices());
+  part.V.insert(part.V.end(), slab.V.begin(), slab.V.end());
+  for (uint32_t i : slab.F) part.F.push_back(i + offset);
+  const SupportTree tree = build_support_tree(part, points_on(part, {face_near(part, 5, 5, 4)}), -5, {});
+  EXPECT_EQ(tree.pillars, 0u);
+  EXPECT_EQ(tree.on_part, 1u);
+  ASSERT_EQ(tree.head_zones.size(), 1u);
+  EXPECT_DOUBLE_EQ(tree.head_zones[0].z_bottom, 1.5);
+  expect_closed_outward_shells(tree, 1);  // no pillar reaches the ground: no pad either
+  check_sections(part, tree);
+}
+
+TEST(SupportTree, SphereAndHandleEnterThePartOnlyAtHeads) {
+  for (const char* name : {"sphere", "handle"}) {
+    SCOPED_TRACE(name);
+    const Mesh part = test::make_family_base(shape(name));
+    const SupportPoints pts = points_on(part, downward_faces(part, 1.5));
+    ASSERT_GT(pts.size(), 10u);
+    const double ground_z = support_ground_z(0, kLayer, 5);
+    const SupportTree tree = build_support_tree(part, pts, ground_z, SupportTreeOptions{});
+    EXPECT_EQ(tree.pillars + tree.on_part, pts.size());
+    if (std::string(name) == "handle") EXPECT_GT(tree.on_part, 0u);
+    EXPECT_GT(tree.pillars, 0u);
+    const std::vector<Mesh> shells = shells_of(tree.mesh);
+    for (size_t s = 0; s < shells.size(); ++s) {
+      EXPECT_EQ(test::edge_census(shells[s]).bad_edges, 0u);
+      EXPECT_GT(test::signed_volume(shells[s]), 0);
+    }
+    EXPECT_GT(check_sections(part, tree), 0u);
+  }
+}
+
+TEST(SupportTree, LayersBelow) {
+  EXPECT_EQ(support_layers_below(5, 0.05), 100u);
+  EXPECT_EQ(support_layers_below(0, 0.05), 0u);
+  EXPECT_EQ(support_layers_below(5.02, 0.05), 100u);
+  EXPECT_EQ(support_layers_below(5.03, 0.05), 101u);
+  EXPECT_DOUBLE_EQ(support_ground_z(1, 0.05, 5), -4);
+  EXPECT_ERROR(support_layers_below(-1, 0.05), "the object's elevation is -1 mm");
+  EXPECT_ERROR(support_layers_below(NAN, 0.05), "the object's elevation is nan mm");
+  EXPECT_ERROR(support_layers_below(5, 0), "the layer thickness is 0 mm");
+  EXPECT_ERROR(support_layers_below(1e9, 1e-3), "more than 10000000");
+}
+
+TEST(SupportTree, BadInputInWords) {
+  const Mesh part = test::make_box(0, 0, 0, 4, 4, 2);
+  const SupportPoints pts = points_on(part, {face_near(part, 1, 2, 0)});
+  EXPECT_ERROR(build_support_tree(part, pts, -0.5, {}), "support point 1 at z = 0 mm is below the pad's top at 0.5 mm");
+  SupportTreeOptions no_pad;
+  no_pad.pad_enable = false;
+  EXPECT_ERROR(build_support_tree(part, pts, 0, no_pad), "support point 1 at z = 0 mm is below the ground at 0 mm");
+  SupportTreeOptions low;
+  low.max_height_mm = 5;
+  EXPECT_ERROR(build_support_tree(part, pts, -5, low),
+               "support point 1 needs a pillar of 5.5 mm (from the ground at z = -5 mm to its head's top), taller "
+               "than the printer's 5 mm");
+  EXPECT_ERROR(build_support_tree(part, pts, NAN, {}), "the supports' ground is at z = nan mm, not a finite height");
+  SupportTreeOptions bad;
+  bad.head_width_mm = -1;
+  EXPECT_ERROR(build_support_tree(part, pts, -5, bad),
+               "the support option head_width_mm is -1 mm; it must be a finite, positive number");
+  SupportTreeOptions steep;
+  steep.pad_wall_slope_deg = 10;
+  EXPECT_ERROR(build_support_tree(part, pts, -5, steep), "the pad would have no top");
+  SupportPoints nan_point = pts;
+  nan_point.xyz[2] = NAN;
+  EXPECT_ERROR(build_support_tree(part, nan_point, -5, {}), "support point 1 has a position or normal that is not a finite number");
+}
