@@ -195,6 +195,26 @@ TEST(SupportTree, OnePointOverFlatGroundIsHeadPillarBaseAndPad) {
   check_sections(part, tree);
 }
 
+TEST(SupportTree, PadIsTheHullOfTheBasesGrownByTheBrim) {
+  // Three pillars on a line (the hull's middle corner drops out): the pad's section just above
+  // the ground is a 16-gon of radius base + brim - 0.025 mm (walls at 45 degrees) stretched 4 mm.
+  const Mesh part = test::make_box(0, 0, 0, 6, 4, 2);
+  SupportPoints pts = points_on(part, {face_near(part, 1, 2, 0), face_near(part, 1, 2, 0), face_near(part, 1, 2, 0)});
+  for (size_t i = 0; i < 3; ++i) {
+    pts.xyz[3 * i] = 1 + 2.0 * double(i);
+    pts.xyz[3 * i + 1] = 2;
+    pts.xyz[3 * i + 2] = 0;
+  }
+  const SupportTree tree = build_support_tree(part, pts, -6, SupportTreeOptions{});
+  EXPECT_EQ(tree.pillars, 3u);
+  expect_closed_outward_shells(tree, 10);
+  const Slices s = slice_planes(tree.mesh, {-6 + kLayer / 2}, {}, false);
+  const double r = 1.5 + 1.6 - kLayer / 2;
+  // Within the rounding of the section's points to 1 nm along its 27 mm outline.
+  EXPECT_NEAR(region_area_mm2(region_of(s, 0)), 8 * r * r * std::sin(M_PI / 8) + 4 * 2 * r, 3e-5);
+  check_sections(part, tree);
+}
+
 TEST(SupportTree, NoPadStandsOnTheGround) {
   const Mesh part = test::make_box(0, 0, 0, 4, 4, 2);
   SupportTreeOptions o;

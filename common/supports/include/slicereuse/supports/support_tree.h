@@ -19,7 +19,7 @@
 //   by pad_brim_mm, pad_wall_thickness_mm thick, its walls sloping at pad_wall_slope_deg.
 // head_zones: where the structure may enter the part (each head, and each foot on the part), as
 // vertical cones: the only places the part's and the supports' sections may overlap.
-// No points: no structure and no pad (an empty mesh, ground_z set).
+// No points: no structure (an empty mesh, ground_z set); no pillar reaching the ground: no pad.
 // Throws Error when a point lies at or below the pad's top (ground_z without a pad), the
 // structure would be taller than max_height_mm ("... pillar of H mm, taller than the printer's
 // ... mm"), an option or ground_z is not a finite number of the right sign, the pad's walls
