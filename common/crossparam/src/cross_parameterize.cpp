@@ -47,13 +47,13 @@
 
 #include "landmark_warp.h"
 #include "lattice_registration.h"
+#include "slicereuse/crossparam/surface_grid.h"
 #include "slicereuse/mesh/fingerprint.h"
 #include "slicereuse/mesh/mesh_topology.h"
 #include "slicereuse/mesh/vec3.h"
 #include "slicereuse/mesh/vertex_normals.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/seconds_since.h"
-#include "surface_grid.h"
 #include "surface_patches.h"
 
 namespace slicereuse {

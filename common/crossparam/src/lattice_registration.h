@@ -28,9 +28,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "slicereuse/crossparam/surface_grid.h"
 #include "slicereuse/mesh/mesh.h"
 #include "slicereuse/util/progress.h"
-#include "surface_grid.h"
 
 namespace slicereuse {
 

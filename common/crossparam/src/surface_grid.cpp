@@ -1,4 +1,4 @@
-#include "surface_grid.h"
+#include "slicereuse/crossparam/surface_grid.h"
 
 #include <algorithm>
 #include <cmath>

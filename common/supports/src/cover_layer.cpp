@@ -1,0 +1,125 @@
+#include "cover_layer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "slicereuse/regions/layer_region.h"
+#include "slicereuse/supports/support_points.h"
+
+namespace slicereuse {
+namespace {
+
+struct Candidates {
+  std::vector<std::array<double, 2>> lattice, boundary;
+};
+
+std::array<double, 2> mm(const ClipperLib::IntPoint& p) {
+  return {double(p.X) / kRegionScale, double(p.Y) / kRegionScale};
+}
+
+Candidates candidates_of(const ClipperLib::Paths& part, double g) {
+  Candidates c;
+  double y_lo = INFINITY, y_hi = -INFINITY;
+  for (const ClipperLib::Path& loop : part)
+    for (const ClipperLib::IntPoint& p : loop) y_lo = std::min(y_lo, mm(p)[1]), y_hi = std::max(y_hi, mm(p)[1]);
+  std::vector<double> xs;
+  for (double j = std::ceil(y_lo / g); j * g <= y_hi; ++j) {
+    const double y = j * g;
+    xs.clear();
+    for (const ClipperLib::Path& loop : part)
+      for (size_t i = 0; i < loop.size(); ++i) {
+        const std::array<double, 2> a = mm(loop[i]), b = mm(loop[(i + 1) % loop.size()]);
+        if ((a[1] <= y) != (b[1] <= y)) xs.push_back(a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1]));
+      }
+    std::sort(xs.begin(), xs.end());
+    for (size_t i = 0; i + 1 < xs.size(); i += 2)
+      for (double k = std::ceil(xs[i] / g); k * g <= xs[i + 1]; ++k) c.lattice.push_back({k * g, y});
+  }
+  const double step = g / 4;
+  for (const ClipperLib::Path& loop : part)
+    for (size_t i = 0; i < loop.size(); ++i) {
+      const std::array<double, 2> a = mm(loop[i]), b = mm(loop[(i + 1) % loop.size()]);
+      const int pieces = std::max(1, int(std::ceil(std::hypot(b[0] - a[0], b[1] - a[1]) / step)));
+      for (int s = 0; s < pieces; ++s) {
+        const double t = double(s) / pieces;
+        c.boundary.push_back({a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])});
+      }
+    }
+  return c;
+}
+
+std::array<double, 2> centroid(const ClipperLib::Paths& part) {
+  double a = 0, cx = 0, cy = 0;
+  for (const ClipperLib::Path& loop : part)
+    for (size_t i = 0; i < loop.size(); ++i) {
+      const std::array<double, 2> p = mm(loop[i]), q = mm(loop[(i + 1) % loop.size()]);
+      const double w = p[0] * q[1] - q[0] * p[1];
+      a += w, cx += (p[0] + q[0]) * w, cy += (p[1] + q[1]) * w;
+    }
+  if (a == 0) return mm(part[0][0]);
+  return {cx / (3 * a), cy / (3 * a)};
+}
+
+// The points taken so far, hashed in cells of the reach, for "is any within reach of (x, y)".
+class Taken {
+ public:
+  explicit Taken(double reach) : reach_(reach) {}
+  bool covers(double x, double y) const {
+    const long long cx = cell(x), cy = cell(y);
+    for (long long i = cx - 1; i <= cx + 1; ++i)
+      for (long long j = cy - 1; j <= cy + 1; ++j) {
+        const auto it = cells_.find(key(i, j));
+        if (it == cells_.end()) continue;
+        for (const std::array<double, 2>& p : it->second)
+          if ((p[0] - x) * (p[0] - x) + (p[1] - y) * (p[1] - y) <= reach_ * reach_) return true;
+      }
+    return false;
+  }
+  void add(double x, double y) { cells_[key(cell(x), cell(y))].push_back({x, y}); }
+
+ private:
+  long long cell(double v) const { return (long long)std::floor(v / reach_); }
+  static long long key(long long i, long long j) { return i * 0x9E3779B1LL + j; }
+  double reach_;
+  std::unordered_map<long long, std::vector<std::array<double, 2>>> cells_;
+};
+
+}  // namespace
+
+std::vector<PlanePoint> cover_layer(const LayerAreas& areas, const std::vector<std::array<double, 2>>& existing,
+                                    double radius) {
+  const double g = radius / 2;
+  Taken taken(radius - g * std::sqrt(0.5) - g / 8);
+  for (const std::array<double, 2>& p : existing) taken.add(p[0], p[1]);
+  std::vector<PlanePoint> out;
+  auto take = [&](const std::array<double, 2>& p, SupportKind kind) {
+    taken.add(p[0], p[1]);
+    out.push_back({p[0], p[1], uint8_t(kind)});
+  };
+  auto cover = [&](const std::vector<ClipperLib::Paths>& parts, SupportKind kind) {
+    for (const ClipperLib::Paths& part : parts) {
+      const Candidates c = candidates_of(part, g);
+      if (kind == SupportKind::Island &&
+          std::none_of(existing.begin(), existing.end(),
+                       [&](const std::array<double, 2>& p) { return part_contains(part, p[0], p[1]); })) {
+        std::array<double, 2> seed = mm(part[0][0]);
+        const std::array<double, 2> m = centroid(part);
+        double best = INFINITY;
+        for (const std::array<double, 2>& p : c.lattice) {
+          const double d = std::hypot(p[0] - m[0], p[1] - m[1]);
+          if (d < best) best = d, seed = p;
+        }
+        take(seed, kind);
+      }
+      for (const std::vector<std::array<double, 2>>* list : {&c.lattice, &c.boundary})
+        for (const std::array<double, 2>& p : *list)
+          if (!taken.covers(p[0], p[1])) take(p, kind);
+    }
+  };
+  cover(areas.islands, SupportKind::Island);
+  cover(areas.overhangs, SupportKind::Overhang);
+  return out;
+}
+
+}  // namespace slicereuse

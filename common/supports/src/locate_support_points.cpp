@@ -1,0 +1,39 @@
+#include "slicereuse/supports/locate_support_points.h"
+
+#include <cmath>
+#include <limits>
+
+#include "slicereuse/crossparam/surface_grid.h"
+#include "slicereuse/mesh/fingerprint.h"
+#include "slicereuse/util/error.h"
+#include "slicereuse/util/format.h"
+
+namespace slicereuse {
+
+SupportPoints locate_support_points(const Mesh& mesh, const std::vector<double>& xyz, std::vector<uint8_t> kinds) {
+  const size_t n = xyz.size() / 3;
+  if (xyz.size() % 3) throw Error(format("support point positions come 3 numbers a point; %zu is not a multiple of 3", xyz.size()));
+  if (kinds.empty()) kinds.assign(n, uint8_t(SupportKind::Overhang));
+  if (kinds.size() != n) throw Error(format("%zu support point positions but %zu kinds", n, kinds.size()));
+  for (size_t i = 0; i < xyz.size(); ++i)
+    if (!std::isfinite(xyz[i])) throw Error(format("support point %zu has a coordinate that is not a finite number", i / 3 + 1));
+  SupportPoints points;
+  points.fingerprint = mesh_fingerprint(mesh);
+  points.kind = std::move(kinds);
+  points.layer.assign(n, 0);
+  points.face.resize(n);
+  points.bary.resize(3 * n);
+  if (n) {
+    const SurfaceGrid grid(mesh);
+#pragma omp parallel for schedule(dynamic, 256)
+    for (long long i = 0; i < (long long)n; ++i) {
+      const SurfacePoint s = grid.nearest_on_surface(&xyz[3 * i], nullptr, 0, std::numeric_limits<double>::infinity());
+      points.face[i] = s.face;
+      for (int j = 0; j < 3; ++j) points.bary[3 * i + j] = s.bary[j];
+    }
+  }
+  place_support_points(points, mesh);
+  return points;
+}
+
+}  // namespace slicereuse

@@ -1,0 +1,147 @@
+#include "support_areas.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "slicereuse/mesh/fingerprint.h"
+#include "slicereuse/regions/layer_region.h"
+#include "slicereuse/util/error.h"
+#include "slicereuse/util/format.h"
+#include "slicereuse/util/parallel_blocks.h"
+
+namespace slicereuse {
+namespace {
+
+// The outer loops of a PolyTree, each with its holes, at every depth (an outer loop inside a
+// hole is a part of its own).
+void collect_parts(const ClipperLib::PolyNode& node, std::vector<ClipperLib::Paths>& parts) {
+  for (const ClipperLib::PolyNode* outer : node.Childs) {
+    ClipperLib::Paths part{outer->Contour};
+    for (const ClipperLib::PolyNode* hole : outer->Childs) {
+      part.push_back(hole->Contour);
+      collect_parts(*hole, parts);
+    }
+    parts.push_back(std::move(part));
+  }
+}
+
+std::vector<ClipperLib::Paths> parts_of(const ClipperLib::Paths& region) {
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(region, ClipperLib::ptSubject, true);
+  ClipperLib::PolyTree tree;
+  clipper.Execute(ClipperLib::ctUnion, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  std::vector<ClipperLib::Paths> parts;
+  collect_parts(tree, parts);
+  return parts;
+}
+
+ClipperLib::IntRect bounds(const ClipperLib::Paths& paths) {
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(paths, ClipperLib::ptSubject, true);
+  return clipper.GetBounds();
+}
+
+bool overlaps(const ClipperLib::Paths& part, const ClipperLib::Paths& region, const ClipperLib::IntRect& b) {
+  const ClipperLib::IntRect a = bounds(part);
+  if (a.right < b.left || b.right < a.left || a.bottom < b.top || b.bottom < a.top) return false;
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(part, ClipperLib::ptSubject, true);
+  clipper.AddPaths(region, ClipperLib::ptClip, true);
+  ClipperLib::Paths common;
+  clipper.Execute(ClipperLib::ctIntersection, common, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  return !common.empty();
+}
+
+LayerAreas areas_of(const ClipperLib::Paths* below, const ClipperLib::Paths& region, const SupportPointOptions& o) {
+  LayerAreas out;
+  if (!below) {
+    if (o.raised) out.islands = parts_of(region);
+    return out;
+  }
+  const ClipperLib::IntRect below_bounds = bounds(*below);
+  for (ClipperLib::Paths& part : parts_of(region))
+    if (!overlaps(part, *below, below_bounds)) out.islands.push_back(std::move(part));
+  ClipperLib::ClipperOffset grow;
+  // Arcs within 1 um of the true circle: finer only adds vertices, coarser would undercut.
+  grow.ArcTolerance = 1e-3 * kRegionScale;
+  grow.AddPaths(*below, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+  ClipperLib::Paths grown;
+  grow.Execute(grown, o.self_supporting_mm * kRegionScale);
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(region, ClipperLib::ptSubject, true);
+  clipper.AddPaths(grown, ClipperLib::ptClip, true);
+  ClipperLib::PolyTree tree;
+  clipper.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  collect_parts(tree, out.overhangs);
+  return out;
+}
+
+double segment_distance2(double x, double y, const ClipperLib::IntPoint& a, const ClipperLib::IntPoint& b) {
+  const double ax = double(a.X) / kRegionScale, ay = double(a.Y) / kRegionScale;
+  const double dx = double(b.X) / kRegionScale - ax, dy = double(b.Y) / kRegionScale - ay;
+  const double len2 = dx * dx + dy * dy;
+  const double s = len2 > 0 ? std::clamp(((x - ax) * dx + (y - ay) * dy) / len2, 0.0, 1.0) : 0.0;
+  const double ex = ax + s * dx - x, ey = ay + s * dy - y;
+  return ex * ex + ey * ey;
+}
+
+double distance_to_parts(const std::vector<ClipperLib::Paths>& parts, double x, double y) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const ClipperLib::Paths& part : parts) {
+    if (part_contains(part, x, y)) return 0;
+    for (const ClipperLib::Path& loop : part)
+      for (size_t i = 0; i < loop.size(); ++i)
+        best = std::min(best, segment_distance2(x, y, loop[i], loop[(i + 1) % loop.size()]));
+  }
+  return std::sqrt(best);
+}
+
+}  // namespace
+
+void check_support_input(const Mesh& mesh, const Slices& slicing, const SupportPointOptions& o) {
+  if (!slicing.has_points()) throw Error("support points need the slicing's contour points (xyz), and it has none");
+  if (!slicing.has_encoding()) throw Error("support points need the slicing's encoding (face, edge, t), and it has none");
+  if (!(slicing.thickness > 0)) throw Error(format("support points need the slicing's layer thickness, and it is %g", slicing.thickness));
+  const Fingerprint fp = mesh_fingerprint(mesh);
+  if (slicing.fingerprint != fp)
+    throw Error("the slicing is of a mesh of " + describe_fingerprint(slicing.fingerprint) + ", this one has " +
+                describe_fingerprint(fp));
+  const double r = o.support_radius_mm();
+  if (!(r > 0) || !std::isfinite(r) || !(o.self_supporting_mm >= 0))
+    throw Error(format("support points need a positive support radius and self-supporting distance; minimal "
+                       "distance %g mm, density %g, self-supporting %g mm",
+                       o.minimal_distance_mm, o.density_relative, o.self_supporting_mm));
+}
+
+std::vector<LayerAreas> support_areas(const Slices& slicing, const SupportPointOptions& options,
+                                      const Progress& progress) {
+  const size_t n = slicing.layers();
+  std::vector<ClipperLib::Paths> regions(n);
+  parallel_blocks(n, [&](size_t k) { regions[k] = layer_region(LayerView(slicing, k)); },
+                  sub_progress(progress, 0, 0.5), "support regions");
+  std::vector<LayerAreas> areas(n);
+  parallel_blocks(n, [&](size_t k) { areas[k] = areas_of(k ? &regions[k - 1] : nullptr, regions[k], options); },
+                  sub_progress(progress, 0.5, 1), "support areas");
+  return areas;
+}
+
+bool part_contains(const ClipperLib::Paths& part, double x, double y) {
+  const ClipperLib::IntPoint p(region_units(x), region_units(y));
+  if (ClipperLib::PointInPolygon(p, part[0]) == 0) return false;
+  for (size_t h = 1; h < part.size(); ++h)
+    if (ClipperLib::PointInPolygon(p, part[h]) == 1) return false;
+  return true;
+}
+
+double distance_to_areas(const LayerAreas& areas, double x, double y) {
+  return std::min(distance_to_parts(areas.islands, x, y), distance_to_parts(areas.overhangs, x, y));
+}
+
+LayerSpan layer_span(const Slices& s, size_t k) {
+  const double h = s.thickness;
+  const double below = k ? s.layer_z[k - 1] : s.layer_z[0] - h;
+  return {below - h, s.layer_z[k] + h};
+}
+
+}  // namespace slicereuse

@@ -1,0 +1,88 @@
+#include "support_points_for_areas.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "cover_layer.h"
+#include "downward_faces.h"
+#include "slicereuse/mesh/fingerprint.h"
+#include "slicereuse/util/error.h"
+#include "slicereuse/util/format.h"
+#include "slicereuse/util/parallel_blocks.h"
+
+namespace slicereuse {
+namespace {
+
+struct LayerPoints {
+  std::vector<uint32_t> face;
+  std::vector<double> bary;
+  std::vector<uint8_t> kind;
+};
+
+// The contour point of layer k nearest to (x, y), as face and area coordinates.
+void nearest_contour_point(const Slices& s, size_t k, double x, double y, uint32_t& face, double bary[3]) {
+  size_t best = s.contour_begin[s.layer_begin[k]];
+  double best_d2 = INFINITY;
+  for (size_t p = best; p < s.contour_begin[s.layer_begin[k + 1]]; ++p) {
+    const double d2 = (s.xyz[3 * p] - x) * (s.xyz[3 * p] - x) + (s.xyz[3 * p + 1] - y) * (s.xyz[3 * p + 1] - y);
+    if (d2 < best_d2) best_d2 = d2, best = p;
+  }
+  face = s.face[best];
+  const int j = s.edge[best];
+  bary[j] = 1 - s.t[best];
+  bary[(j + 1) % 3] = s.t[best];
+  bary[(j + 2) % 3] = 0;
+}
+
+}  // namespace
+
+SupportPoints support_points_for_areas(const Mesh& mesh, const Slices& slicing, const std::vector<LayerAreas>& areas,
+                                       const SupportPointOptions& options, const SupportPoints* existing,
+                                       const Progress& progress) {
+  const size_t n = slicing.layers();
+  const Fingerprint fp = mesh_fingerprint(mesh);
+  std::vector<std::vector<std::array<double, 2>>> taken(n);
+  if (existing) {
+    if (existing->fingerprint != fp)
+      throw Error("the existing support points are for a mesh of " + describe_fingerprint(existing->fingerprint) +
+                  ", this one has " + describe_fingerprint(fp));
+    for (size_t i = 0; i < existing->size(); ++i)
+      if (existing->layer[i] < n) taken[existing->layer[i]].push_back({existing->xyz[3 * i], existing->xyz[3 * i + 1]});
+  }
+  const DownwardFaces down(mesh);
+  std::vector<LayerPoints> layers(n);
+  parallel_blocks(
+      n,
+      [&](size_t k) {
+        const std::vector<PlanePoint> plane = cover_layer(areas[k], taken[k], options.support_radius_mm());
+        const LayerSpan span = layer_span(slicing, k);
+        const LayerSpan inner{k ? slicing.layer_z[k - 1] : span.lo, slicing.layer_z[k]};
+        LayerPoints& out = layers[k];
+        for (const PlanePoint& p : plane) {
+          uint32_t face;
+          double bary[3];
+          if (!down.hit(p.x, p.y, span, inner, face, bary)) nearest_contour_point(slicing, k, p.x, p.y, face, bary);
+          out.face.push_back(face);
+          out.bary.insert(out.bary.end(), bary, bary + 3);
+          out.kind.push_back(p.kind);
+        }
+      },
+      progress, "support points");
+  size_t total = 0;
+  for (const LayerPoints& l : layers) total += l.face.size();
+  if (total > options.max_points)
+    throw Error(format("the part needs %zu support points, more than the limit of %zu", total, options.max_points));
+  SupportPoints points;
+  points.fingerprint = fp;
+  for (size_t k = 0; k < n; ++k) {
+    const LayerPoints& l = layers[k];
+    points.face.insert(points.face.end(), l.face.begin(), l.face.end());
+    points.bary.insert(points.bary.end(), l.bary.begin(), l.bary.end());
+    points.kind.insert(points.kind.end(), l.kind.begin(), l.kind.end());
+    points.layer.insert(points.layer.end(), l.face.size(), uint32_t(k));
+  }
+  place_support_points(points, mesh);
+  return points;
+}
+
+}  // namespace slicereuse

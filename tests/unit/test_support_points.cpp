@@ -1,0 +1,313 @@
+// Support points on family parts (sphere, handle): every island and overhang of every layer is
+// covered within the support radius, checked on regions computed here with Clipper; the points
+// lie on the mesh; the result does not depend on the thread count; transfer keeps, adds, moves
+// and drops as its header says; bad input is refused in words; located positions round-trip.
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "error_of.h"
+#include "family.h"
+#include "slicereuse/crossparam/surface_grid.h"
+#include "slicereuse/crossparam/surface_map.h"
+#include "slicereuse/mesh/fingerprint.h"
+#include "slicereuse/regions/layer_region.h"
+#include "slicereuse/slicing/slice_layers.h"
+#include "slicereuse/supports/generate_support_points.h"
+#include "slicereuse/supports/locate_support_points.h"
+#include "slicereuse/supports/transfer_support_points.h"
+
+using namespace slicereuse;
+
+namespace {
+
+test::FamilyOptions family_options(const std::string& shape) {
+  test::FamilyOptions o;
+  o.shape = shape;
+  o.faces = 8000;
+  o.height = 10;
+  o.seed = 3;
+  o.z_change = test::ZChange::Everywhere;
+  return o;
+}
+
+Slices slice(const Mesh& m) {
+  SliceOptions o;
+  o.thickness = 0.05;
+  return slice_layers(m, o);
+}
+
+// The parts of layer k's region (outer loop with holes) that overlap nothing of layer k-1, and
+// the region minus layer k-1's grown by the self-supporting distance: written here from the
+// header's words, not from the library's code.
+struct Needs {
+  std::vector<ClipperLib::Paths> islands;
+  ClipperLib::Paths overhang;
+};
+
+Needs needs_of(const Slices& s, size_t k, const SupportPointOptions& o) {
+  Needs n;
+  const ClipperLib::Paths region = layer_region(LayerView(s, k));
+  ClipperLib::Clipper c;
+  c.AddPaths(region, ClipperLib::ptSubject, true);
+  ClipperLib::PolyTree tree;
+  c.Execute(ClipperLib::ctUnion, tree);
+  ClipperLib::Paths below;
+  if (k) below = layer_region(LayerView(s, k - 1));
+  for (ClipperLib::PolyNode* node = tree.GetFirst(); node; node = node->GetNext()) {
+    if (node->IsHole()) continue;
+    ClipperLib::Paths part{node->Contour};
+    for (const ClipperLib::PolyNode* hole : node->Childs) part.push_back(hole->Contour);
+    if (k == 0) {
+      if (o.raised) n.islands.push_back(part);
+      continue;
+    }
+    ClipperLib::Clipper i;
+    i.AddPaths(part, ClipperLib::ptSubject, true);
+    i.AddPaths(below, ClipperLib::ptClip, true);
+    ClipperLib::Paths common;
+    i.Execute(ClipperLib::ctIntersection, common, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    if (common.empty()) n.islands.push_back(part);
+  }
+  if (k) {
+    ClipperLib::ClipperOffset grow;
+    grow.ArcTolerance = 100;  // 0.1 um: finer than the library's, so the overhang checked is no smaller
+    grow.AddPaths(below, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+    ClipperLib::Paths grown;
+    grow.Execute(grown, o.self_supporting_mm * kRegionScale);
+    ClipperLib::Clipper d;
+    d.AddPaths(region, ClipperLib::ptSubject, true);
+    d.AddPaths(grown, ClipperLib::ptClip, true);
+    d.Execute(ClipperLib::ctDifference, n.overhang, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  }
+  return n;
+}
+
+bool inside(const ClipperLib::Paths& region, double x, double y) {
+  const ClipperLib::IntPoint p(region_units(x), region_units(y));
+  int winding = 0;
+  for (const ClipperLib::Path& loop : region) {
+    const int in = ClipperLib::PointInPolygon(p, loop);
+    if (in == -1) return true;
+    if (in) winding += ClipperLib::Orientation(loop) ? 1 : -1;
+  }
+  return winding != 0;
+}
+
+// The sample points of an area: its vertices and a 0.1 mm grid inside it.
+std::vector<std::array<double, 2>> samples(const ClipperLib::Paths& area) {
+  std::vector<std::array<double, 2>> out;
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  for (const ClipperLib::Path& loop : area)
+    for (const ClipperLib::IntPoint& p : loop) {
+      const double q[2] = {double(p.X) / kRegionScale, double(p.Y) / kRegionScale};
+      out.push_back({q[0], q[1]});
+      for (int a = 0; a < 2; ++a) lo[a] = std::min(lo[a], q[a]), hi[a] = std::max(hi[a], q[a]);
+    }
+  for (double x = std::floor(lo[0] * 10) / 10; x <= hi[0]; x += 0.1)
+    for (double y = std::floor(lo[1] * 10) / 10; y <= hi[1]; y += 0.1)
+      if (inside(area, x, y)) out.push_back({x, y});
+  return out;
+}
+
+// Every island holds a point of its layer (boundary included) and every sample of every
+// island and overhang lies within the support radius of one.
+void expect_covered(const Slices& s, const SupportPoints& points, const SupportPointOptions& o, const char* what) {
+  std::map<size_t, std::vector<std::array<double, 2>>> by_layer;
+  for (size_t i = 0; i < points.size(); ++i) by_layer[points.layer[i]].push_back({points.xyz[3 * i], points.xyz[3 * i + 1]});
+  const double r = o.support_radius_mm() + 1e-9;
+  size_t islands = 0, uncovered = 0, without_point = 0;
+  for (size_t k = 0; k < s.layers(); ++k) {
+    const Needs n = needs_of(s, k, o);
+    const std::vector<std::array<double, 2>>& layer = by_layer[k];
+    auto near = [&](const std::array<double, 2>& q) {
+      return std::any_of(layer.begin(), layer.end(),
+                         [&](const std::array<double, 2>& p) { return std::hypot(p[0] - q[0], p[1] - q[1]) <= r; });
+    };
+    for (const ClipperLib::Paths& island : n.islands) {
+      ++islands;
+      if (std::none_of(layer.begin(), layer.end(), [&](const std::array<double, 2>& p) { return inside(island, p[0], p[1]); }))
+        ++without_point;
+      for (const std::array<double, 2>& q : samples(island)) uncovered += !near(q);
+    }
+    for (const std::array<double, 2>& q : samples(n.overhang)) uncovered += !near(q);
+  }
+  EXPECT_GT(islands, 0u) << what;
+  EXPECT_EQ(without_point, 0u) << what;
+  EXPECT_EQ(uncovered, 0u) << what;
+}
+
+// Valid, on the mesh, each on a downward-facing face or a face its layer's plane crosses.
+void expect_on_mesh(const Mesh& m, const Slices& s, const SupportPoints& points) {
+  validate_support_points(points, &m);
+  const SurfaceGrid grid(m);
+  size_t off = 0, wrong_face = 0, contour = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const SurfacePoint q = grid.nearest_on_surface(&points.xyz[3 * i], nullptr, 0, INFINITY);
+    off += q.distance > 1e-9;
+    const uint32_t* f = &m.F[3 * size_t(points.face[i])];
+    double zlo = INFINITY, zhi = -INFINITY;
+    for (int j = 0; j < 3; ++j) zlo = std::min(zlo, m.V[3 * size_t(f[j]) + 2]), zhi = std::max(zhi, m.V[3 * size_t(f[j]) + 2]);
+    const double plane = s.layer_z[points.layer[i]];
+    if (points.normal[3 * i + 2] < 0) continue;
+    ++contour;
+    wrong_face += !(zlo < plane && plane <= zhi);
+  }
+  EXPECT_EQ(off, 0u);
+  EXPECT_EQ(wrong_face, 0u);
+  std::cout << "[ support  ] " << contour << " of " << points.size() << " points on contour faces\n";
+}
+
+// The default self-supporting distance (0.5 mm a layer) leaves a sphere's bottom unsupported at
+// 0.05 mm layers; 0.05 mm (45 degrees) gives every layer of its lower half an overhang.
+SupportPointOptions options() {
+  SupportPointOptions o;
+  o.self_supporting_mm = 0.05;
+  return o;
+}
+
+struct Part {
+  test::FamilyOptions options;
+  Mesh mesh;
+  Slices slicing;
+  SupportPoints points;
+};
+
+Part part(const std::string& shape, const SupportPointOptions& o = options()) {
+  Part p;
+  p.options = family_options(shape);
+  p.mesh = test::make_family_base(p.options);
+  p.slicing = slice(p.mesh);
+  p.points = generate_support_points(p.mesh, p.slicing, o);
+  size_t islands = 0;
+  for (uint8_t k : p.points.kind) islands += k == uint8_t(SupportKind::Island);
+  std::cout << "[ support  ] " << shape << ", " << p.mesh.faces() << " faces, " << p.slicing.layers()
+            << " layers: " << p.points.size() << " points (" << islands << " island)\n";
+  return p;
+}
+
+class SupportPointsOn : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(SupportPointsOn, CoverIslandsAndOverhangsAndLieOnTheMesh) {
+  const SupportPointOptions o = options();
+  const Part p = part(GetParam(), o);
+  EXPECT_EQ(p.points.fingerprint, mesh_fingerprint(p.mesh));
+  expect_covered(p.slicing, p.points, o, "source");
+  expect_on_mesh(p.mesh, p.slicing, p.points);
+  for (size_t i = 1; i < p.points.size(); ++i) EXPECT_LE(p.points.layer[i - 1], p.points.layer[i]);
+}
+
+TEST_P(SupportPointsOn, DoNotDependOnTheThreadCount) {
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const Part one = part(GetParam());
+  omp_set_num_threads(2);
+  const Part two = part(GetParam());
+  omp_set_num_threads(threads);
+  EXPECT_EQ(one.points.face, two.points.face);
+  EXPECT_EQ(one.points.bary, two.points.bary);
+  EXPECT_EQ(one.points.kind, two.points.kind);
+  EXPECT_EQ(one.points.layer, two.points.layer);
+}
+
+TEST_P(SupportPointsOn, TransferOntoTheSourceKeepsThemAll) {
+  const Part p = part(GetParam());
+  SupportTransferStats stats;
+  const SupportPoints out = transfer_support_points(p.points, p.mesh, p.slicing, options(), &stats);
+  EXPECT_EQ(stats.transferred, p.points.size());
+  EXPECT_EQ(stats.kept, p.points.size());
+  EXPECT_EQ(stats.added + stats.moved + stats.dropped, 0u);
+  EXPECT_EQ(out.face, p.points.face);
+  EXPECT_EQ(out.bary, p.points.bary);
+  EXPECT_EQ(out.layer, p.points.layer);
+}
+
+TEST_P(SupportPointsOn, TransferOntoMembersCoversTheirOwnNeeds) {
+  const SupportPointOptions o = options();
+  const Part p = part(GetParam(), o);
+  for (int index = 1; index <= 3; ++index) {
+    const Mesh member = test::make_family_member(p.mesh, p.options, index);
+    const Slices slicing = slice(member);
+    SupportTransferStats stats;
+    const SupportPoints out = transfer_support_points(p.points, member, slicing, o, &stats);
+    std::cout << "[ support  ] member " << index << ": " << stats.kept << " kept, " << stats.moved << " moved, "
+              << stats.added << " added, " << stats.dropped << " dropped of " << stats.transferred << "\n";
+    EXPECT_EQ(stats.transferred, p.points.size());
+    EXPECT_EQ(stats.kept + stats.moved + stats.dropped, stats.transferred);
+    EXPECT_EQ(out.size(), stats.kept + stats.moved + stats.added);
+    EXPECT_GT(stats.kept, 0u);
+    expect_covered(slicing, out, o, ("member " + std::to_string(index)).c_str());
+    validate_support_points(out, &member);
+  }
+}
+
+TEST_P(SupportPointsOn, LocatingTheirPositionsGivesThemBack) {
+  const Part p = part(GetParam());
+  const SupportPoints located = locate_support_points(p.mesh, p.points.xyz, p.points.kind);
+  ASSERT_EQ(located.size(), p.points.size());
+  validate_support_points(located, &p.mesh);
+  EXPECT_EQ(located.kind, p.points.kind);
+  for (size_t i = 0; i < p.points.xyz.size(); ++i) EXPECT_NEAR(located.xyz[i], p.points.xyz[i], 1e-9);
+}
+
+INSTANTIATE_TEST_SUITE_P(Shapes, SupportPointsOn, ::testing::Values("sphere", "handle"));
+
+// Another connectivity: every face's corners rotated, and a map that takes each vertex to
+// itself; the points carried through it land where they were.
+TEST(SupportPoints, TransferThroughAMapCarriesThePositions) {
+  const Part p = part("sphere");
+  Mesh rotated = p.mesh;
+  for (size_t f = 0; f < rotated.faces(); ++f) std::rotate(&rotated.F[3 * f], &rotated.F[3 * f + 1], &rotated.F[3 * f + 3]);
+  SurfaceMap map;
+  map.source = mesh_fingerprint(p.mesh);
+  map.target = mesh_fingerprint(rotated);
+  map.source_vertices = map.target_vertices = p.mesh.vertices();
+  map.source_faces = p.mesh.F;
+  map.face.assign(p.mesh.vertices(), 0);
+  map.bary.assign(3 * p.mesh.vertices(), 0);
+  for (size_t f = 0; f < rotated.faces(); ++f)
+    for (int j = 0; j < 3; ++j) {
+      const uint32_t v = rotated.F[3 * f + j];
+      map.face[v] = uint32_t(f);
+      std::fill(&map.bary[3 * size_t(v)], &map.bary[3 * size_t(v) + 3], 0.0);
+      map.bary[3 * size_t(v) + j] = 1;
+    }
+  validate_surface_map(map);
+  const Slices slicing = slice(rotated);
+  SupportTransferStats stats;
+  const SupportPoints out = transfer_support_points(p.points, rotated, slicing, options(), &stats, &map);
+  EXPECT_EQ(stats.kept, p.points.size());
+  EXPECT_EQ(stats.added + stats.moved + stats.dropped, 0u);
+  ASSERT_EQ(out.size(), p.points.size());
+  for (size_t i = 0; i < out.xyz.size(); ++i) EXPECT_NEAR(out.xyz[i], p.points.xyz[i], 1e-9);
+  EXPECT_ERROR(transfer_support_points(p.points, rotated, slicing, {}), "and no map between them was given");
+}
+
+TEST(SupportPoints, RefuseSlicingsOfOtherMeshesAndTooManyPoints) {
+  const Part p = part("sphere");
+  const Mesh other = test::make_family_base(family_options("handle"));
+  EXPECT_ERROR(generate_support_points(other, p.slicing, {}),
+               "the slicing is of a mesh of " + describe_fingerprint(p.slicing.fingerprint) + ", this one has " +
+                   describe_fingerprint(mesh_fingerprint(other)));
+  SupportPointOptions few = options();
+  few.max_points = p.points.size() - 1;
+  EXPECT_EQ(test::error_of([&] { generate_support_points(p.mesh, p.slicing, few); }),
+            "the part needs " + std::to_string(p.points.size()) + " support points, more than the limit of " +
+                std::to_string(few.max_points));
+  Slices bare = p.slicing;
+  bare.face.clear();
+  EXPECT_ERROR(generate_support_points(p.mesh, bare, {}), "support points need the slicing's encoding");
+  bare = p.slicing;
+  bare.xyz.clear();
+  EXPECT_ERROR(generate_support_points(p.mesh, bare, {}), "support points need the slicing's contour points");
+}
+
+}  // namespace
