@@ -1,4 +1,5 @@
-// Support points on family parts (sphere, handle): every island and overhang of every layer is
+// Support points on family parts (sphere, handle, and box: its raised flat bottom is one wide
+// island, where the lattice's cover margin shows): every island and overhang of every layer is
 // covered within the support radius, checked on regions computed here with Clipper; the points
 // lie on the mesh; the result does not depend on the thread count; transfer keeps, adds, moves
 // and drops as its header says; bad input is refused in words; located positions round-trip.
@@ -258,7 +259,7 @@ TEST_P(SupportPointsOn, LocatingTheirPositionsGivesThemBack) {
   for (size_t i = 0; i < p.points.xyz.size(); ++i) EXPECT_NEAR(located.xyz[i], p.points.xyz[i], 1e-9);
 }
 
-INSTANTIATE_TEST_SUITE_P(Shapes, SupportPointsOn, ::testing::Values("sphere", "handle"));
+INSTANTIATE_TEST_SUITE_P(Shapes, SupportPointsOn, ::testing::Values("sphere", "handle", "box"));
 
 // Another connectivity: every face's corners rotated, and a map that takes each vertex to
 // itself; the points carried through it land where they were.
@@ -291,7 +292,7 @@ TEST(SupportPoints, TransferThroughAMapCarriesThePositions) {
   EXPECT_ERROR(transfer_support_points(p.points, rotated, slicing, {}), "and no map between them was given");
 }
 
-TEST(SupportPoints, RefuseSlicingsOfOtherMeshesAndTooManyPoints) {
+TEST(SupportPoints, RefuseSlicingsOfOtherMeshesTooManyPointsAndBadPositions) {
   const Part p = part("sphere");
   const Mesh other = test::make_family_base(family_options("handle"));
   EXPECT_ERROR(generate_support_points(other, p.slicing, {}),
@@ -308,6 +309,8 @@ TEST(SupportPoints, RefuseSlicingsOfOtherMeshesAndTooManyPoints) {
   bare = p.slicing;
   bare.xyz.clear();
   EXPECT_ERROR(generate_support_points(p.mesh, bare, {}), "support points need the slicing's contour points");
+  EXPECT_ERROR(locate_support_points(p.mesh, {0, 0}), "3 numbers a point; 2 is not a multiple of 3");
+  EXPECT_ERROR(locate_support_points(p.mesh, {0, 0, 0}, {7}), "support point 1 has kind 7");
 }
 
 }  // namespace

@@ -15,8 +15,11 @@ SupportPoints locate_support_points(const Mesh& mesh, const std::vector<double>&
   if (xyz.size() % 3) throw Error(format("support point positions come 3 numbers a point; %zu is not a multiple of 3", xyz.size()));
   if (kinds.empty()) kinds.assign(n, uint8_t(SupportKind::Overhang));
   if (kinds.size() != n) throw Error(format("%zu support point positions but %zu kinds", n, kinds.size()));
+  for (size_t i = 0; i < n; ++i)
+    if (kinds[i] > 1) throw Error(format("support point %zu has kind %u; 0 (island) and 1 (overhang) exist", i + 1, kinds[i]));
   for (size_t i = 0; i < xyz.size(); ++i)
     if (!std::isfinite(xyz[i])) throw Error(format("support point %zu has a coordinate that is not a finite number", i / 3 + 1));
+  validate_mesh(mesh);
   SupportPoints points;
   points.fingerprint = mesh_fingerprint(mesh);
   points.kind = std::move(kinds);

@@ -28,6 +28,7 @@ SupportPoints carried(const SupportPoints& source, const Mesh& member, const Fin
   if (map->source != source.fingerprint)
     throw Error("the map is from a mesh of " + describe_fingerprint(map->source) +
                 ", but the support points are for a mesh of " + describe_fingerprint(source.fingerprint));
+  validate_surface_map(*map);
   check_map_target(*map, member);
   std::vector<double> xyz(3 * source.size(), 0);
   for (size_t i = 0; i < source.size(); ++i)

@@ -7,14 +7,15 @@
 //   overhangs: the part of layer k farther than self_supporting_mm from layer k-1's region.
 // Points are placed on those areas so that every point of an island or overhang lies within
 // support_radius_mm() of a point of that layer (greedy cover of a lattice of candidates, then
-// the area's own vertices for slivers thinner than the lattice), no two points of a layer
-// closer than minimal_distance_mm, and every island has one. Each 2-D point becomes a point on
+// the area's boundary for slivers thinner than the lattice; cover_layer.h), no two points of a
+// layer closer than minimal_distance_mm where that allows the cover (coverage wins), and every
+// island has one. Each 2-D point becomes a point on
 // the mesh: the downward-facing face above it between the two layers' planes (a vertical ray),
 // with its area coordinates; failing that (a sliver's edge), the nearest contour point of layer
 // k, on the face its encoding names.
 //
 // existing: points already there (a member's transferred points, on this mesh): an area they
-// cover (their layer and support radius) gets none. The result is only the new points.
+// cover (their layer, layer[i], and support radius) gets none. The result is only the new points.
 // Output: the new points, ordered by layer, fingerprint of mesh. Throws Error when the slicing
 // has no points (xyz) or no encoding, or does not belong to mesh, or a count exceeds
 // options.max_points ("... needs N support points, more than the limit of M").

@@ -6,8 +6,8 @@
 // (SurfaceGrid) keeps each query to the faces near the point.
 // Input: a valid mesh, 3 coordinates per point, and one kind per point (SupportKind) or none
 // (all Overhang). Output: fingerprint of mesh, layer 0 for every point (no slicing is at hand).
-// Throws Error when xyz is not a multiple of 3 or kinds has another count, or a coordinate is
-// not finite.
+// Throws Error when xyz is not a multiple of 3, kinds has another count or a kind other than 0
+// or 1, a coordinate is not finite, or the mesh is not valid (validate_mesh).
 #include <cstdint>
 #include <vector>
 
