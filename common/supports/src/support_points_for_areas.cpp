@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "cover_layer.h"
-#include "downward_faces.h"
+#include "part_columns.h"
 #include "slicereuse/mesh/fingerprint.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
@@ -34,6 +34,23 @@ void nearest_contour_point(const Slices& s, size_t k, double x, double y, uint32
   bary[(j + 2) % 3] = 0;
 }
 
+// Where a vertical ray from below at (x, y) meets a downward-facing face first: the lowest hit
+// between the planes of layers k-1 and k (inner), else the lowest in the layer's span; ties go
+// to the lower face id.
+bool ray_hit(const PartColumns& down, double x, double y, const LayerSpan& span, const LayerSpan& inner,
+             uint32_t& face, double bary[3]) {
+  bool found = false, found_inner = false;
+  double best_z = 0;
+  down.for_each_hit(x, y, [&](uint32_t f, const double* l, double z) {
+    if (z < span.lo || z > span.hi) return;
+    const bool in_inner = z > inner.lo && z <= inner.hi;
+    if (found && (found_inner > in_inner || (found_inner == in_inner && !(z < best_z)))) return;
+    found = true, found_inner = in_inner, best_z = z, face = f;
+    for (int j = 0; j < 3; ++j) bary[j] = l[j];
+  });
+  return found;
+}
+
 }  // namespace
 
 SupportPoints support_points_for_areas(const Mesh& mesh, const Slices& slicing, const std::vector<LayerAreas>& areas,
@@ -49,7 +66,7 @@ SupportPoints support_points_for_areas(const Mesh& mesh, const Slices& slicing, 
     for (size_t i = 0; i < existing->size(); ++i)
       if (existing->layer[i] < n) taken[existing->layer[i]].push_back({existing->xyz[3 * i], existing->xyz[3 * i + 1]});
   }
-  const DownwardFaces down(mesh);
+  const PartColumns down(mesh, true);
   std::vector<LayerPoints> layers(n);
   parallel_blocks(
       n,
@@ -61,7 +78,7 @@ SupportPoints support_points_for_areas(const Mesh& mesh, const Slices& slicing, 
         for (const PlanePoint& p : plane) {
           uint32_t face;
           double bary[3];
-          if (!down.hit(p.x, p.y, span, inner, face, bary)) nearest_contour_point(slicing, k, p.x, p.y, face, bary);
+          if (!ray_hit(down, p.x, p.y, span, inner, face, bary)) nearest_contour_point(slicing, k, p.x, p.y, face, bary);
           out.face.push_back(face);
           out.bary.insert(out.bary.end(), bary, bary + 3);
           out.kind.push_back(p.kind);

@@ -1,0 +1,54 @@
+#pragma once
+// PartColumns: a part's faces (or only its downward-facing ones, unit normal z < 0) in a uniform
+// x-y grid over their bounding boxes (about one face per cell), so that a vertical ray tests
+// only the faces whose boxes cover its column. Built once per support tree or generation of
+// support points; queries are const and thread safe.
+// for_each_hit(x, y, hit) calls hit(face, l, z) for each face of the column, in face order,
+// whose projection holds (x, y) (edges included): l its area coordinates there (corner order,
+// summing to 1), z the face's height there. highest_hit: the highest such z in (z_floor, z_from)
+// (faces seen edge-on from above never count); NaN when there is none.
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "slicereuse/mesh/mesh.h"
+
+namespace slicereuse {
+
+class PartColumns {
+ public:
+  explicit PartColumns(const Mesh& part, bool downward_only = false);
+  double highest_hit(double x, double y, double z_from, double z_floor) const;
+  template <class Hit>
+  void for_each_hit(double x, double y, Hit&& hit) const;
+
+ private:
+  const Mesh& part_;
+  double x0_ = 0, y0_ = 0, cell_ = 1;
+  int64_t nx_ = 1, ny_ = 1;
+  std::vector<uint32_t> cell_begin_, cell_faces_;
+  int64_t column(double v, double v0, int64_t n) const;
+};
+
+template <class Hit>
+void PartColumns::for_each_hit(double x, double y, Hit&& hit) const {
+  const double cx = std::floor((x - x0_) / cell_), cy = std::floor((y - y0_) / cell_);
+  if (cx < 0 || cy < 0 || cx >= double(nx_) || cy >= double(ny_)) return;
+  const size_t c = size_t(cy) * size_t(nx_) + size_t(cx);
+  for (uint32_t i = cell_begin_[c]; i < cell_begin_[c + 1]; ++i) {
+    const uint32_t* f = &part_.F[3 * size_t(cell_faces_[i])];
+    const double* a = &part_.V[3 * size_t(f[0])];
+    const double* b = &part_.V[3 * size_t(f[1])];
+    const double* d = &part_.V[3 * size_t(f[2])];
+    const double area = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
+    if (area == 0) continue;
+    const double la = ((b[0] - x) * (d[1] - y) - (b[1] - y) * (d[0] - x)) / area;
+    const double lb = ((d[0] - x) * (a[1] - y) - (d[1] - y) * (a[0] - x)) / area;
+    const double ld = 1 - la - lb;
+    if (la < 0 || lb < 0 || ld < 0) continue;
+    const double l[3] = {la, lb, ld};
+    hit(cell_faces_[i], l, la * a[2] + lb * b[2] + ld * d[2]);
+  }
+}
+
+}  // namespace slicereuse
