@@ -61,7 +61,11 @@ std::array<double, 2> centroid(const ClipperLib::Paths& part) {
   return {cx / (3 * a), cy / (3 * a)};
 }
 
-// The points taken so far, hashed in cells of the reach, for "is any within reach of (x, y)".
+// Cell keys of the x-y hashes below.
+long long cell_key(long long i, long long j) { return i * 0x9E3779B1LL + j; }
+
+// The points of the layer taken so far, hashed in cells of the reach, for "is any within reach
+// of (x, y)".
 class Taken {
  public:
   explicit Taken(double reach) : reach_(reach) {}
@@ -80,24 +84,44 @@ class Taken {
 
  private:
   long long cell(double v) const { return (long long)std::floor(v / reach_); }
-  static long long key(long long i, long long j) { return i * 0x9E3779B1LL + j; }
+  static long long key(long long i, long long j) { return cell_key(i, j); }
   double reach_;
   std::unordered_map<long long, std::vector<std::array<double, 2>>> cells_;
 };
 
 }  // namespace
 
+long long HeldSurface::cell(double v) const { return (long long)std::floor(v / radius_); }
+
+void HeldSurface::add(double x, double y, double z) { cells_[cell_key(cell(x), cell(y))].push_back({x, y, z}); }
+
+bool HeldSurface::holds(double x, double y, double z, double reach) const {
+  const long long cx = cell(x), cy = cell(y);
+  for (long long i = cx - 1; i <= cx + 1; ++i)
+    for (long long j = cy - 1; j <= cy + 1; ++j) {
+      const auto it = cells_.find(cell_key(i, j));
+      if (it == cells_.end()) continue;
+      for (const std::array<double, 3>& p : it->second) {
+        const double dx = p[0] - x, dy = p[1] - y, dz = z - p[2];
+        if (dz >= 0 && dx * dx + dy * dy + dz * dz <= reach * reach) return true;
+      }
+    }
+  return false;
+}
+
 std::vector<PlanePoint> cover_layer(const LayerAreas& areas, const std::vector<std::array<double, 2>>& existing,
-                                    double radius) {
-  const double g = radius / 2;
-  Taken taken(radius - g * std::sqrt(0.5) - g / 8);
+                                    const HeldSurface& held, double z, const CoverReach& reach) {
+  const double g = reach.head / 2;
+  const double margin = g * std::sqrt(0.5) + g / 8;
+  const double support_reach = reach.support - margin;
+  Taken taken(reach.head - margin);
   for (const std::array<double, 2>& p : existing) taken.add(p[0], p[1]);
   std::vector<PlanePoint> out;
   auto take = [&](const std::array<double, 2>& p, SupportKind kind) {
     taken.add(p[0], p[1]);
     out.push_back({p[0], p[1], uint8_t(kind)});
   };
-  auto cover = [&](const std::vector<ClipperLib::Paths>& parts, SupportKind kind) {
+  auto cover = [&](const std::vector<ClipperLib::Paths>& parts, SupportKind kind, bool held_counts) {
     for (const ClipperLib::Paths& part : parts) {
       const Candidates c = candidates_of(part, g);
       if (kind == SupportKind::Island &&
@@ -114,11 +138,12 @@ std::vector<PlanePoint> cover_layer(const LayerAreas& areas, const std::vector<s
       }
       for (const std::vector<std::array<double, 2>>* list : {&c.lattice, &c.boundary})
         for (const std::array<double, 2>& p : *list)
-          if (!taken.covers(p[0], p[1])) take(p, kind);
+          if (!taken.covers(p[0], p[1]) && !(held_counts && held.holds(p[0], p[1], z, support_reach))) take(p, kind);
     }
   };
-  cover(areas.islands, SupportKind::Island);
-  cover(areas.overhangs, SupportKind::Overhang);
+  cover(areas.islands, SupportKind::Island, false);
+  cover(areas.far, SupportKind::Overhang, false);
+  cover(areas.overhangs, SupportKind::Overhang, true);
   return out;
 }
 

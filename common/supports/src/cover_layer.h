@@ -1,20 +1,22 @@
 #pragma once
-// cover_layer: one layer's support points in the plane, for its islands and overhangs
-// (support_areas.h), so that every point of those areas lies within radius of one.
+// cover_layer: one layer's support points in the plane, for its islands, far areas and
+// overhangs (support_areas.h), as generate_support_points.h says.
 //
-// Candidates: the points of the global lattice of spacing g = radius / 2 (x = i*g, y = j*g: the
-// same on every layer) inside each part, then the part's boundary, its vertices and points
+// Candidates: the points of the global lattice of spacing g = head_reach / 2 (x = i*g, y = j*g:
+// the same on every layer) inside each part, then the part's boundary, its vertices and points
 // between them at most g/4 apart (slivers narrower than g hold no lattice point). Every point of
-// a part is then within g/sqrt(2) + g/8 of a candidate (its nearest lattice point, or where the
-// way to it leaves the part), so a greedy pass that takes each candidate farther than
-// reach = radius - g/sqrt(2) - g/8 from every point taken so far covers the part within radius.
-// Points taken are more than reach apart; that is what minimal_distance_mm comes to when it is
-// larger (coverage wins). Existing points (mm) count as taken first. An island that holds no
-// existing point first gets the lattice point nearest its centroid (or its first vertex), so
-// every island has a point of its own. Islands come first, then overhangs; the order is fixed,
-// so the result is too.
+// a part is then within m = g/sqrt(2) + g/8 of a candidate (its nearest lattice point, or where
+// the way to it leaves the part), so a greedy pass that takes each candidate not yet covered
+// within reach - m covers the part within reach:
+//   islands and far areas: covered by points of this layer (existing ones first), reach
+//     head_reach;
+//   overhangs: also by the points held (HeldSurface) within support_radius in space.
+// An island that holds no existing point first gets the lattice point nearest its centroid (or
+// its first vertex), so every island has a point of its own. Islands come first, then far
+// areas, then overhangs; the order is fixed, so the result is too.
 #include <array>
 #include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 #include "support_areas.h"
@@ -26,7 +28,26 @@ struct PlanePoint {
   uint8_t kind;  // SupportKind
 };
 
+// The points of the layers covered so far, in space, hashed in x-y cells of the radius:
+// whether one at or below z lies within radius of (x, y, z).
+class HeldSurface {
+ public:
+  explicit HeldSurface(double radius) : radius_(radius) {}
+  bool holds(double x, double y, double z, double reach) const;
+  void add(double x, double y, double z);
+
+ private:
+  long long cell(double v) const;
+  double radius_;
+  std::unordered_map<long long, std::vector<std::array<double, 3>>> cells_;
+};
+
+struct CoverReach {
+  double head = 1;     // islands and far areas, by points of the layer
+  double support = 1;  // overhangs, in space
+};
+
 std::vector<PlanePoint> cover_layer(const LayerAreas& areas, const std::vector<std::array<double, 2>>& existing,
-                                    double radius);
+                                    const HeldSurface& held, double z, const CoverReach& reach);
 
 }  // namespace slicereuse

@@ -7,7 +7,14 @@
 
 namespace slicereuse {
 
-double SupportPointOptions::support_radius_mm() const { return minimal_distance_mm / std::sqrt(density_relative); }
+// PrusaSlicer's support force: a point holds 10 mm^2 of overhang at 100 % density.
+constexpr double kHeldAreaMm2 = 10;
+
+double SupportPointOptions::support_radius_mm() const { return std::sqrt(kHeldAreaMm2 / (M_PI * density_relative)); }
+
+double SupportPointOptions::self_supporting_mm(double thickness) const {
+  return thickness / std::tan(critical_angle_deg * M_PI / 180);
+}
 
 SupportPoints generate_support_points(const Mesh& mesh, const Slices& slicing, const SupportPointOptions& options,
                                       const SupportPoints* existing, const Progress& progress) {

@@ -53,7 +53,26 @@ bool overlaps(const ClipperLib::Paths& part, const ClipperLib::Paths& region, co
   return !common.empty();
 }
 
-LayerAreas areas_of(const ClipperLib::Paths* below, const ClipperLib::Paths& region, const SupportPointOptions& o) {
+// The parts of region minus below grown by distance (round joins).
+std::vector<ClipperLib::Paths> beyond(const ClipperLib::Paths& region, const ClipperLib::Paths& below, double distance) {
+  ClipperLib::ClipperOffset grow;
+  // Arcs within 1 um of the true circle: finer only adds vertices, coarser would undercut.
+  grow.ArcTolerance = 1e-3 * kRegionScale;
+  grow.AddPaths(below, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+  ClipperLib::Paths grown;
+  grow.Execute(grown, distance * kRegionScale);
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(region, ClipperLib::ptSubject, true);
+  clipper.AddPaths(grown, ClipperLib::ptClip, true);
+  ClipperLib::PolyTree tree;
+  clipper.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  std::vector<ClipperLib::Paths> parts;
+  collect_parts(tree, parts);
+  return parts;
+}
+
+LayerAreas areas_of(const ClipperLib::Paths* below, const ClipperLib::Paths& region, double thickness,
+                    const SupportPointOptions& o) {
   LayerAreas out;
   if (!below) {
     if (o.raised) out.islands = parts_of(region);
@@ -62,18 +81,8 @@ LayerAreas areas_of(const ClipperLib::Paths* below, const ClipperLib::Paths& reg
   const ClipperLib::IntRect below_bounds = bounds(*below);
   for (ClipperLib::Paths& part : parts_of(region))
     if (!overlaps(part, *below, below_bounds)) out.islands.push_back(std::move(part));
-  ClipperLib::ClipperOffset grow;
-  // Arcs within 1 um of the true circle: finer only adds vertices, coarser would undercut.
-  grow.ArcTolerance = 1e-3 * kRegionScale;
-  grow.AddPaths(*below, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
-  ClipperLib::Paths grown;
-  grow.Execute(grown, o.self_supporting_mm * kRegionScale);
-  ClipperLib::Clipper clipper;
-  clipper.AddPaths(region, ClipperLib::ptSubject, true);
-  clipper.AddPaths(grown, ClipperLib::ptClip, true);
-  ClipperLib::PolyTree tree;
-  clipper.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-  collect_parts(tree, out.overhangs);
+  out.overhangs = beyond(region, *below, o.self_supporting_mm(thickness));
+  if (!out.overhangs.empty()) out.far = beyond(region, *below, o.far_reach_mm);
   return out;
 }
 
@@ -107,11 +116,13 @@ void check_support_input(const Mesh& mesh, const Slices& slicing, const SupportP
   if (slicing.fingerprint != fp)
     throw Error("the slicing is of a mesh of " + describe_fingerprint(slicing.fingerprint) + ", this one has " +
                 describe_fingerprint(fp));
-  const double r = o.support_radius_mm();
-  if (!(r > 0) || !std::isfinite(r) || !(o.self_supporting_mm >= 0))
-    throw Error(format("support points need a positive support radius and self-supporting distance; minimal "
-                       "distance %g mm, density %g, self-supporting %g mm",
-                       o.minimal_distance_mm, o.density_relative, o.self_supporting_mm));
+  if (!(o.density_relative > 0) || !std::isfinite(o.density_relative))
+    throw Error(format("the support points' density must be a positive number, not %g %%", 100 * o.density_relative));
+  if (!(o.critical_angle_deg > 0 && o.critical_angle_deg < 90))
+    throw Error(format("the critical angle must lie between 0 and 90 degrees, not %g", o.critical_angle_deg));
+  if (!(o.far_reach_mm > 0 && o.head_reach_mm > 0 && std::isfinite(o.far_reach_mm) && std::isfinite(o.head_reach_mm)))
+    throw Error(format("the reach beyond the layer below (%g mm) and of a head (%g mm) must be positive",
+                       o.far_reach_mm, o.head_reach_mm));
 }
 
 std::vector<LayerAreas> support_areas(const Slices& slicing, const SupportPointOptions& options,
@@ -121,7 +132,7 @@ std::vector<LayerAreas> support_areas(const Slices& slicing, const SupportPointO
   parallel_blocks(n, [&](size_t k) { regions[k] = layer_region(LayerView(slicing, k)); },
                   sub_progress(progress, 0, 0.5), "support regions");
   std::vector<LayerAreas> areas(n);
-  parallel_blocks(n, [&](size_t k) { areas[k] = areas_of(k ? &regions[k - 1] : nullptr, regions[k], options); },
+  parallel_blocks(n, [&](size_t k) { areas[k] = areas_of(k ? &regions[k - 1] : nullptr, regions[k], slicing.thickness, options); },
                   sub_progress(progress, 0.5, 1), "support areas");
   return areas;
 }

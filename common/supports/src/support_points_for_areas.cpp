@@ -66,16 +66,28 @@ SupportPoints support_points_for_areas(const Mesh& mesh, const Slices& slicing, 
     for (size_t i = 0; i < existing->size(); ++i)
       if (existing->layer[i] < n) taken[existing->layer[i]].push_back({existing->xyz[3 * i], existing->xyz[3 * i + 1]});
   }
+  // The cover runs up the layers (a layer's overhangs may be held by points below); then each
+  // layer's points go onto the mesh on all cores.
+  std::vector<std::vector<PlanePoint>> plane(n);
+  const CoverReach reach{options.head_reach_mm, options.support_radius_mm()};
+  HeldSurface held(std::max(reach.head, reach.support));
+  const Progress cover_progress = sub_progress(progress, 0, 0.5);
+  for (size_t k = 0; k < n; ++k) {
+    const double z = slicing.layer_z[k];
+    plane[k] = cover_layer(areas[k], taken[k], held, z, reach);
+    for (const std::array<double, 2>& p : taken[k]) held.add(p[0], p[1], z);
+    for (const PlanePoint& p : plane[k]) held.add(p.x, p.y, z);
+    if (k % 64 == 0 || k + 1 == n) report_progress(cover_progress, double(k + 1) / double(n), "support points");
+  }
   const PartColumns down(mesh, true);
   std::vector<LayerPoints> layers(n);
   parallel_blocks(
       n,
       [&](size_t k) {
-        const std::vector<PlanePoint> plane = cover_layer(areas[k], taken[k], options.support_radius_mm());
         const LayerSpan span = layer_span(slicing, k);
         const LayerSpan inner{k ? slicing.layer_z[k - 1] : span.lo, slicing.layer_z[k]};
         LayerPoints& out = layers[k];
-        for (const PlanePoint& p : plane) {
+        for (const PlanePoint& p : plane[k]) {
           uint32_t face;
           double bary[3];
           if (!ray_hit(down, p.x, p.y, span, inner, face, bary)) nearest_contour_point(slicing, k, p.x, p.y, face, bary);
@@ -84,7 +96,7 @@ SupportPoints support_points_for_areas(const Mesh& mesh, const Slices& slicing, 
           out.kind.push_back(p.kind);
         }
       },
-      progress, "support points");
+      sub_progress(progress, 0.5, 1), "support points");
   size_t total = 0;
   for (const LayerPoints& l : layers) total += l.face.size();
   if (total > options.max_points)

@@ -4,7 +4,8 @@
 // Each layer's points in the plane (cover_layer.h), then each on the mesh: the face a vertical
 // ray from below meets first within the layer's span (PartColumns of its downward faces, preferring heights between
 // the planes of layers k-1 and k), else the contour point of layer k nearest in x-y, on the face
-// and edge its encoding names. Layers run on all cores, merged in layer order.
+// and edge its encoding names. The cover runs up the layers (an overhang may be held by
+// points below it), the rays on all cores, merged in layer order.
 // existing: points on this mesh that count as taken on their layer (layer[i]).
 // Output: the new points; Error past options.max_points.
 #include <vector>

@@ -4,12 +4,19 @@
 // code): each layer's region (layer_region.h) is compared with the layer below's:
 //   islands:   a connected region of layer k (k > 0, or k = 0 when the part is raised off the
 //              plate) that does not overlap layer k-1;
-//   overhangs: the part of layer k farther than self_supporting_mm from layer k-1's region.
-// Points are placed on those areas so that every point of an island or overhang lies within
-// support_radius_mm() of a point of that layer (greedy cover of a lattice of candidates, then
-// the area's boundary for slivers thinner than the lattice; cover_layer.h), no two points of a
-// layer closer than minimal_distance_mm where that allows the cover (coverage wins), and every
-// island has one. Each 2-D point becomes a point on
+//   overhangs: the part of layer k reaching farther than thickness / tan(critical_angle_deg)
+//              beyond layer k-1's region (PrusaSlicer's support_critical_angle);
+//   far:       the part of layer k farther than far_reach_mm from layer k-1's region.
+// Points are placed on those areas (greedy cover of a lattice of candidates, then the area's
+// boundary for slivers thinner than the lattice; cover_layer.h), layer by layer from the bottom:
+//   every point of an island or a far area lies within head_reach_mm of a point of its own
+//   layer, whose head then lies under it in the layer below: with far_reach_mm and
+//   head_reach_mm below 1 mm, no lit pixel of a mask is more than 1 mm from the layer below;
+//   every point of an overhang lies within support_radius_mm() of a point of its own layer or,
+//   in space, of a point of a layer below (the surface between them is held by it), as
+//   PrusaSlicer's support force spreads over the surface around a point;
+// every island has a point of its own, and points of a layer stand more than about half the
+// radius apart (minimal_distance_mm yields to the cover). Each 2-D point becomes a point on
 // the mesh: the downward-facing face above it between the two layers' planes (a vertical ray),
 // with its area coordinates; failing that (a sliver's edge), the nearest contour point of layer
 // k, on the face its encoding names.
@@ -30,16 +37,25 @@
 namespace slicereuse {
 
 struct SupportPointOptions {
-  // Farthest a layer may reach beyond the layer below without support.
-  double self_supporting_mm = 0.5;
-  // PrusaSlicer's support_points_density_relative / 100 and support_points_minimal_distance.
+  // PrusaSlicer's support_critical_angle, from the horizontal: a surface flatter than this
+  // overhangs.
+  double critical_angle_deg = 45;
+  // PrusaSlicer's support_points_density_relative / 100: at 1, one point holds 10 mm^2 of
+  // overhanging surface (PrusaSlicer's support force), support_radius_mm() = sqrt(10 / (pi d)).
   double density_relative = 1.0;
+  // PrusaSlicer's support_points_minimal_distance: how near a point added on a member may be
+  // to a dropped one to count as that point moved (transfer_support_points.h).
   double minimal_distance_mm = 1.0;
+  // The masks' rule (no lit pixel more than 1 mm from the layer below), see above.
+  double far_reach_mm = 0.9;
+  double head_reach_mm = 1.0;
   // Raised off the plate (support_object_elevation > 0): layer 0 is an island to support.
   bool raised = true;
   size_t max_points = 1000000;
-  // A point covers its layer within this distance: minimal_distance_mm / sqrt(density_relative).
+  // How far a point holds the overhanging surface around it: sqrt(10 / (pi density_relative)).
   double support_radius_mm() const;
+  // How far a layer may reach beyond the one below without overhanging.
+  double self_supporting_mm(double thickness) const;
 };
 
 SupportPoints generate_support_points(const Mesh& mesh, const Slices& slicing, const SupportPointOptions& options,
