@@ -6,12 +6,27 @@
 
 #include "slicereuse/mesh/fingerprint.h"
 #include "slicereuse/regions/layer_region.h"
+#include "slicereuse/regions/simplify_paths.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
 #include "slicereuse/util/parallel_blocks.h"
 
 namespace slicereuse {
 namespace {
+
+// The areas are found on the layers' contours simplified to within this (mm): far below a
+// head's or a pixel's size, and it divides the polygon work several times.
+constexpr double kAreaToleranceMm = 0.005;
+
+// Layer k's region, from its contours simplified.
+ClipperLib::Paths simplified_region(const Slices& slicing, size_t k) {
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(simplify_paths(layer_paths(LayerView(slicing, k)), kAreaToleranceMm * kRegionScale),
+                   ClipperLib::ptSubject, true);
+  ClipperLib::Paths region;
+  clipper.Execute(ClipperLib::ctUnion, region, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  return region;
+}
 
 // The outer loops of a PolyTree, each with its holes, at every depth (an outer loop inside a
 // hole is a part of its own).
@@ -56,8 +71,8 @@ bool overlaps(const ClipperLib::Paths& part, const ClipperLib::Paths& region, co
 // The parts of region minus below grown by distance (round joins).
 std::vector<ClipperLib::Paths> beyond(const ClipperLib::Paths& region, const ClipperLib::Paths& below, double distance) {
   ClipperLib::ClipperOffset grow;
-  // Arcs within 1 um of the true circle: finer only adds vertices, coarser would undercut.
-  grow.ArcTolerance = 1e-3 * kRegionScale;
+  // Arcs within the areas' tolerance of the true circle: finer only adds vertices.
+  grow.ArcTolerance = kAreaToleranceMm * kRegionScale;
   grow.AddPaths(below, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
   ClipperLib::Paths grown;
   grow.Execute(grown, distance * kRegionScale);
@@ -129,7 +144,7 @@ std::vector<LayerAreas> support_areas(const Slices& slicing, const SupportPointO
                                       const Progress& progress) {
   const size_t n = slicing.layers();
   std::vector<ClipperLib::Paths> regions(n);
-  parallel_blocks(n, [&](size_t k) { regions[k] = layer_region(LayerView(slicing, k)); },
+  parallel_blocks(n, [&](size_t k) { regions[k] = simplified_region(slicing, k); },
                   sub_progress(progress, 0, 0.5), "support regions");
   std::vector<LayerAreas> areas(n);
   parallel_blocks(n, [&](size_t k) { areas[k] = areas_of(k ? &regions[k - 1] : nullptr, regions[k], slicing.thickness, options); },

@@ -5,7 +5,8 @@
 //   overhangs: each connected part of region_k minus region_{k-1} grown by
 //              options.self_supporting_mm(thickness) (round joins), k > 0;
 //   far:       the same with region_{k-1} grown by options.far_reach_mm.
-// Polygons in kRegionScale units (layer_region.h), outer loop first, then its holes.
+// Polygons in kRegionScale units (layer_region.h), outer loop first, then its holes, found on the
+// layers' contours simplified to within 5 um (simplify_paths.h).
 // Also the checks both generation and transfer make on a slicing, and the heights that tie a
 // point to a layer.
 #include <cstddef>

@@ -1,0 +1,70 @@
+#include "slicereuse/regions/simplify_paths.h"
+
+#include <cmath>
+#include <utility>
+#include <vector>
+
+namespace slicereuse {
+namespace {
+
+// Squared distance from p to the segment ab, in Clipper units squared (doubles: the products of
+// coordinates of up to 1e9 units would overflow 64-bit integers).
+double distance2(const ClipperLib::IntPoint& p, const ClipperLib::IntPoint& a, const ClipperLib::IntPoint& b) {
+  const double dx = double(b.X - a.X), dy = double(b.Y - a.Y);
+  const double px = double(p.X - a.X), py = double(p.Y - a.Y);
+  const double len2 = dx * dx + dy * dy;
+  double t = len2 > 0 ? (px * dx + py * dy) / len2 : 0;
+  t = t < 0 ? 0 : (t > 1 ? 1 : t);
+  const double ex = px - t * dx, ey = py - t * dy;
+  return ex * ex + ey * ey;
+}
+
+// Marks the vertices of loop[first..last] (indices modulo n) that Douglas-Peucker keeps.
+void mark(const ClipperLib::Path& loop, size_t first, size_t last, double tol2, std::vector<char>& keep) {
+  const size_t n = loop.size();
+  std::vector<std::pair<size_t, size_t>> stack{{first, last}};
+  while (!stack.empty()) {
+    const auto [a, b] = stack.back();
+    stack.pop_back();
+    double worst = tol2;
+    size_t at = a;
+    for (size_t i = a + 1; i < b; ++i) {
+      const double d2 = distance2(loop[i % n], loop[a % n], loop[b % n]);
+      if (d2 > worst) worst = d2, at = i;
+    }
+    if (at == a) continue;
+    keep[at % n] = 1;
+    stack.push_back({a, at});
+    stack.push_back({at, b});
+  }
+}
+
+}  // namespace
+
+ClipperLib::Paths simplify_paths(const ClipperLib::Paths& paths, double tolerance) {
+  const double tol2 = tolerance * tolerance;
+  ClipperLib::Paths out;
+  out.reserve(paths.size());
+  std::vector<char> keep;
+  for (const ClipperLib::Path& loop : paths) {
+    const size_t n = loop.size();
+    if (n < 3) continue;
+    size_t far = 0;
+    double far2 = -1;
+    for (size_t i = 1; i < n; ++i) {
+      const double dx = double(loop[i].X - loop[0].X), dy = double(loop[i].Y - loop[0].Y);
+      if (dx * dx + dy * dy > far2) far2 = dx * dx + dy * dy, far = i;
+    }
+    keep.assign(n, 0);
+    keep[0] = keep[far] = 1;
+    mark(loop, 0, far, tol2, keep);
+    mark(loop, far, n, tol2, keep);
+    ClipperLib::Path simple;
+    for (size_t i = 0; i < n; ++i)
+      if (keep[i]) simple.push_back(loop[i]);
+    if (simple.size() >= 3) out.push_back(std::move(simple));
+  }
+  return out;
+}
+
+}  // namespace slicereuse
