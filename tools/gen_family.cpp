@@ -1,12 +1,16 @@
 // gen_family: writes a mass-customization family (see family/family.h) as PLY files.
 //   gen_family --shape {arch,ear,handle,box,sphere,torus} --faces N --members M
-//              [--z-change | --z-band] [--shuffle] --height MM --seed S --out DIR
+//              [--z-change | --z-band] [--shuffle] [--tilt DEG] --height MM --seed S --out DIR
 // --z-change: z changes everywhere (ZChange::Everywhere); --z-band: only within one band of
 // heights (ZChange::Band).
+// --tilt: every member turned by DEG degrees about the x axis through the base's lowest point,
+// as a lab orients a shell for printing (its overhangs then need supports); the same rigid turn
+// for all, so the family keeps its faces and stands on the base's lowest height.
 // writes DIR/member_000.ply (the base) ... and prints "path vertices faces" per file.
 // --shuffle renumbers the vertices and reorders and rotates the faces of every member but the
 // base (shuffle_mesh.h): the same surfaces with other connectivity in indices.
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -30,12 +34,30 @@ T number(const char* flag, const char* text) {
   return v;
 }
 
+// The members turned by deg about the x axis, then moved so that the base's lowest vertex lies at
+// z = 0 (x-y untouched).
+struct Tilt {
+  double c = 1, s = 0, dz = 0;
+  Tilt(const Mesh& base, double deg) : c(std::cos(deg * M_PI / 180)), s(std::sin(deg * M_PI / 180)) {
+    dz = INFINITY;
+    for (size_t v = 0; v < base.vertices(); ++v) dz = std::min(dz, s * base.V[3 * v + 1] + c * base.V[3 * v + 2]);
+  }
+  void apply(Mesh& m) const {
+    for (size_t v = 0; v < m.vertices(); ++v) {
+      const double y = m.V[3 * v + 1], z = m.V[3 * v + 2];
+      m.V[3 * v + 1] = c * y - s * z;
+      m.V[3 * v + 2] = s * y + c * z - dz;
+    }
+  }
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
   try {
     test::FamilyOptions o;
     int members = 1;
+    double tilt = 0;
     bool shuffle = false;
     std::string out;
     for (int i = 1; i < argc; ++i) {
@@ -55,6 +77,7 @@ int main(int argc, char** argv) {
       else if (a == "--members") members = number<int>("--members", v);
       else if (a == "--height") o.height = number<double>("--height", v);
       else if (a == "--seed") o.seed = number<uint64_t>("--seed", v);
+      else if (a == "--tilt") tilt = number<double>("--tilt", v);
       else if (a == "--out") out = v;
       else throw Error("unknown option " + a);
     }
@@ -62,11 +85,13 @@ int main(int argc, char** argv) {
     if (members < 1 || members > 1000) throw Error("--members must be in 1..1000");
     std::filesystem::create_directories(out);
     const Mesh base = test::make_family_base(o);
+    const Tilt turn(base, tilt);
     for (int m = 0; m < members; ++m) {
       char name[32];
       std::snprintf(name, sizeof name, "member_%03d.ply", m);
       const std::string path = (std::filesystem::path(out) / name).string();
       Mesh member = test::make_family_member(base, o, m);
+      if (tilt != 0) turn.apply(member);
       if (shuffle && m > 0) member = test::shuffle_mesh(member, o.seed * 1000 + uint64_t(m)).mesh;
       test::write_ply(path, member);
       std::printf("%s %zu %zu\n", path.c_str(), base.vertices(), base.faces());
