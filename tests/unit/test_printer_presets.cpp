@@ -16,7 +16,8 @@ namespace {
 
 PrinterPreset preset(const char* id, const char* name, const char* extension, int width, int height, double px,
                      double py, bool portrait, bool mirror_x, bool antialiasing, const char* model, double exposure,
-                     double bottom_exposure, int bottom_layers, int faded_layers, double move) {
+                     double bottom_exposure, int bottom_layers, int faded_layers, double move,
+                     double elephant_foot = 0) {
   PrinterPreset p{id, name, extension, {}};
   p.profile.width_px = width;
   p.profile.height_px = height;
@@ -31,6 +32,7 @@ PrinterPreset preset(const char* id, const char* name, const char* extension, in
   p.profile.bottom_layers = bottom_layers;
   p.profile.faded_layers = faded_layers;
   p.profile.layer_move_s = move;
+  p.profile.elephant_foot_mm = elephant_foot;
   return p;
 }
 
@@ -42,7 +44,7 @@ TEST(PrinterPresets, EveryPresetHasItsPrintersFiguresInMenuOrder) {
              1, 10, 5),
       preset("prusa_sl1", "Prusa SL1", ".sl1", 2560, 1440, 47.25, 47.25, true, true, true, "SL1", 7.5, 35, 3, 10, 5),
       preset("prusa_sl1s_speed", "Prusa SL1S Speed", ".sl1s", 2560, 1620, 50, 50, true, true, true, "SL1S", 2, 25, 3,
-             10, 2.5),
+             10, 2.5, 0.2),
       preset("anycubic_photon_mono_x", "Anycubic Photon Mono X", "", 3840, 2400, 50, 50, false, false, true, "", 2,
              40, 6, 0, 8),
       preset("elegoo_saturn_3_ultra", "Elegoo Saturn 3 Ultra", ".goo", 11520, 5120, 19, 24, false, false, true, "",
@@ -72,6 +74,8 @@ TEST(PrinterPresets, EveryPresetHasItsPrintersFiguresInMenuOrder) {
     EXPECT_EQ(a.bottom_layers, b.bottom_layers) << e.id;
     EXPECT_EQ(a.faded_layers, b.faded_layers) << e.id;
     EXPECT_EQ(a.layer_move_s, b.layer_move_s) << e.id;
+    EXPECT_EQ(a.elephant_foot_mm, b.elephant_foot_mm) << e.id;
+    EXPECT_EQ(a.elephant_foot_min_width_mm, 0.2) << e.id;
     EXPECT_EQ(&printer_preset(e.id), &p);
   }
   // The method's preset is the profile's defaults, which hosts take their parameters from.
@@ -94,7 +98,7 @@ TEST(PrinterPresets, ABrokenPresetsTextIsRefusedNamingThePresetAndTheKey) {
                   "portrait": false, "mirror_x": true, "mirror_y": false},
       "antialiasing": true,
       "job": {"model": "", "exposure_s": 2, "bottom_exposure_s": 20, "bottom_layers": 3, "faded_layers": 0,
-              "layer_move_s": 4}}]})";
+              "layer_move_s": 4, "elephant_foot_mm": 0.1, "elephant_foot_min_width_mm": 0.3}}]})";
   auto error = [&](const std::string& from, const std::string& to) {
     std::string text = good;
     const size_t at = text.find(from);
@@ -107,12 +111,16 @@ TEST(PrinterPresets, ABrokenPresetsTextIsRefusedNamingThePresetAndTheKey) {
   EXPECT_EQ(one[0].profile.width_px, 100);
   EXPECT_TRUE(one[0].profile.mirror_x);
   EXPECT_EQ(one[0].profile.layer_move_s, 4);
+  EXPECT_EQ(one[0].profile.elephant_foot_mm, 0.1);
+  EXPECT_EQ(one[0].profile.elephant_foot_min_width_mm, 0.3);
   EXPECT_EQ(error("\"exposure_s\": 2, ", ""), "the job of printer preset 'a' (p.json) has no \"exposure_s\"");
   EXPECT_EQ(error("\"id\": \"a\", ", ""), "printer preset 1 (p.json) has no \"id\"");
   EXPECT_EQ(error("\"portrait\": false", "\"portrait\": \"no\""),
             "\"portrait\" in the display of printer preset 'a' (p.json) is a string, not true or false");
   EXPECT_EQ(error("\"bottom_layers\": 3", "\"bottom_layers\": 2.5"),
             "\"bottom_layers\" in the job of printer preset 'a' (p.json) is 2.5, not a whole number");
+  EXPECT_EQ(error("\"elephant_foot_mm\": 0.1", "\"elephant_foot_mm\": -0.1"),
+            "printer preset 'a' (p.json): elephant foot compensation -0.100000 mm is not a finite number >= 0");
   EXPECT_EQ(error("\"width_px\": 100", "\"width_px\": 0"),
             "printer preset 'a' (p.json): display size 0 x 50 px is not within 1..65535 pixels per side");
   const std::string preset = good.substr(good.find("{\"id\""), good.rfind("]}") - good.find("{\"id\""));

@@ -7,6 +7,7 @@
 #include <memory>
 #include <mutex>
 
+#include "slicereuse/regions/elephant_foot.h"
 #include "slicereuse/slicing/layer_chunks.h"
 #include "slicereuse/slicing/layer_planes.h"
 #include "slicereuse/slicing/slice_layers.h"
@@ -41,15 +42,27 @@ struct DirectLayers {
   }
 };
 
+// The plate's layers: plate layer k is layer k - below of the slicing from z_start.
+struct PlateFrame {
+  double z_start = 0, thickness = 0;
+  size_t below = 0;
+
+  double plane(size_t k) const { return layer_plane(z_start, thickness, double(k) - double(below)); }
+  double bottom(size_t k) const { return z_start + (double(k) - double(below)) * thickness; }
+};
+
 // A member of the plate and how its layers are made: by its transfer (reusing, same family), or
-// sliced directly on its own planes (the plate's, up to its top).
+// sliced directly on its own planes (the plate's, up to its top); a support always directly.
 struct PlateMember {
   const Mesh* mesh = nullptr;
   std::unique_ptr<ExactTransfer> transfer;
   std::vector<double> planes;  // without a transfer
   DirectLayers direct;         // made where drawn: its layers sliced beforehand
+  size_t offset = 0;           // the plate layer of its layer 0
+  bool support = false;
 
   size_t layers() const { return transfer ? transfer->layers() : planes.size(); }
+  size_t end() const { return offset + layers(); }
   // Its points on each of its layers: the certificate's counts, or its faces each plane crosses.
   std::vector<uint64_t> layer_points() const {
     return transfer ? transfer->layer_points() : straddling_face_counts(*mesh, planes);
@@ -101,6 +114,19 @@ std::vector<double> own_planes(const Mesh& mesh, double z_start, double thicknes
   return z_start < top ? layer_planes(z_start, thickness, top) : std::vector<double>{};
 }
 
+// A support's planes: the plate's from its layer 0 (below z_start) up to the support's top.
+std::vector<double> support_planes(const Mesh& support, const PlateFrame& f) {
+  const double top = z_range(support).max;
+  std::vector<double> planes;
+  for (size_t k = 0; f.bottom(k) < top; ++k) {
+    if (k == kMaxLayers)
+      throw Error(format("a support reaching z = %g mm gives more than %zu layers of %g mm", top, kMaxLayers,
+                         f.thickness));
+    planes.push_back(f.plane(k));
+  }
+  return planes;
+}
+
 std::string member_name(const PlateJobOptions& o, size_t m) {
   return m < o.names.size() ? o.names[m] : format("member %zu", m + 1);
 }
@@ -119,14 +145,29 @@ std::vector<PlateMember> prepare_members(const std::vector<Mesh>& placed, const 
       lowest = std::min(lowest, z_range(m).min);
     }
   plate_frame(n, o, lowest, &st.z_start, &st.thickness);
-  std::vector<PlateMember> members(n);
+  if (!o.supports.empty() && o.supports.size() != n)
+    throw Error(format("a plate of %zu members was given %zu supports: one (or none) per member", n, o.supports.size()));
+  const PlateFrame frame{st.z_start, st.thickness, o.layers_below};
+  std::vector<const Mesh*> supports;
+  for (const Mesh* s : o.supports)
+    if (s) supports.push_back(s);
+  std::vector<PlateMember> members(n + supports.size());
   st.direct_reasons.assign(n, "");
   const bool with_ends = o.edge_ends && !o.edge_ends->empty();
   parallel_blocks(
-      n,
+      members.size(),
       [&](size_t m) {
         PlateMember& p = members[m];
+        if (m >= n) {
+          p.mesh = supports[m - n];
+          p.support = true;
+          validate_mesh(*p.mesh);
+          p.planes = support_planes(*p.mesh, frame);
+          if (o.encoding && !o.whole_stack) p.direct = layers_to_slice(p);
+          return;
+        }
         p.mesh = &placed[m];
+        p.offset = o.layers_below;
         if (o.encoding) {
           validate_mesh(placed[m]);
           const std::string difference = family_difference(*o.encoding, placed[m]);
@@ -149,27 +190,29 @@ std::vector<PlateMember> prepare_members(const std::vector<Mesh>& placed, const 
 
 // The plate's layers [a, b) as parts (export_masks.h), one per member that has any of them, each
 // by its transfer or sliced directly: the masks draw each member's layers where they are.
-std::vector<SlicePart> plate_range(const std::vector<PlateMember>& members, size_t a, size_t b, PlateJobStats& st,
-                                   const Progress& progress) {
+std::vector<SlicePart> plate_range(const std::vector<PlateMember>& members, const PlateFrame& f, size_t a, size_t b,
+                                   PlateJobStats& st, const Progress& progress) {
   const size_t n = members.size();
   std::vector<SlicePart> parts;
   for (size_t m = 0; m < n; ++m) {
     const Progress mp = sub_progress(progress, double(m) / double(n), double(m + 1) / double(n));
     const PlateMember& p = members[m];
-    const size_t e = std::min(b, p.layers());
-    if (a >= e) continue;
+    const size_t lo = std::max(a, p.offset), hi = std::min(b, p.end());
+    if (lo >= hi) continue;
+    const size_t ja = lo - p.offset, je = hi - p.offset;  // its own layers
     if (p.transfer) {
       TransferStats ts;
-      parts.push_back({p.transfer->layers(a, e, &ts, mp), 0});
+      parts.push_back({p.transfer->layers(ja, je, &ts, mp), lo - a});
       st.transferred_layers += ts.transferred_layers;
       st.resliced_layers += ts.resliced_layers;
     } else {
-      parts.push_back({slice_planes(*p.mesh, {p.planes.begin() + long(a), p.planes.begin() + long(e)}, mp, false), 0});
-      st.resliced_layers += e - a;
+      parts.push_back(
+          {slice_planes(*p.mesh, {p.planes.begin() + long(ja), p.planes.begin() + long(je)}, mp, false), lo - a});
+      (p.support ? st.support_layers : st.resliced_layers) += je - ja;
     }
     Slices& made = parts.back().slices;
-    made.z_start = st.z_start + double(a) * st.thickness;
-    made.thickness = st.thickness;
+    made.z_start = f.bottom(lo);
+    made.thickness = f.thickness;
     st.points += made.points();
   }
   return parts;
@@ -185,10 +228,9 @@ std::vector<SlicePart> plate_range(const std::vector<PlateMember>& members, size
 // checked and those failing sliced, once, in one pass.
 class MadeWhereDrawn {
  public:
-  MadeWhereDrawn(std::vector<PlateMember>& members, double z_start, double thickness, const Progress& progress)
+  MadeWhereDrawn(std::vector<PlateMember>& members, const PlateFrame& frame, const Progress& progress)
       : members_(members),
-        z_start_(z_start),
-        thickness_(thickness),
+        frame_(frame),
         late_(members.size()),
         late_once_(new std::once_flag[members.size()]) {
     const auto t = std::chrono::steady_clock::now();
@@ -207,35 +249,38 @@ class MadeWhereDrawn {
   // Layer k's parts, one per member that has it.
   void make(size_t k, std::vector<SlicePart>& parts) {
     const auto t = std::chrono::steady_clock::now();
-    size_t used = 0, points = 0, transferred = 0;
+    size_t used = 0, points = 0, transferred = 0, supports = 0;
     for (size_t m = 0; m < members_.size(); ++m) {
       const PlateMember& p = members_[m];
-      if (k >= p.layers()) continue;
+      if (k < p.offset || k >= p.end()) continue;
+      const size_t j = k - p.offset;  // its own layer
       if (parts.size() == used) parts.emplace_back();
       Slices& out = parts[used++].slices;
+      supports += p.support;
       const DirectLayers* d = &p.direct;
-      if (d->at[k] == kNotDirect) {
-        if (p.transfer->layer_into(k, out)) {
+      if (d->at[j] == kNotDirect) {
+        if (p.transfer->layer_into(j, out)) {
           ++transferred;
           points += out.points();
           continue;
         }
         std::call_once(late_once_[m], [&] { late_[m] = late_layers(p); });
         d = &late_[m];
-        if (d->at[k] == kNotDirect)
-          throw Error(format("internal error: layer %zu of plate member %zu failed its certificate once, not twice", k,
+        if (d->at[j] == kNotDirect)
+          throw Error(format("internal error: layer %zu of plate member %zu failed its certificate once, not twice", j,
                              m + 1));
       }
-      layers_into(d->slices, d->at[k], d->at[k] + 1, out, true);
+      layers_into(d->slices, d->at[j], d->at[j] + 1, out, true);
       // Sliced directly, the part's z_start and thickness are not the plate's.
-      out.z_start = z_start_ + double(k) * thickness_;
-      out.thickness = thickness_;
+      out.z_start = frame_.bottom(k);
+      out.thickness = frame_.thickness;
       points += out.points();
     }
     parts.resize(used);
     points_ += points;
     transferred_ += transferred;
-    resliced_ += used - transferred;
+    resliced_ += used - transferred - supports;
+    supports_ += supports;
     nanoseconds_ += uint64_t(1e9 * seconds_since(t));
   }
 
@@ -243,6 +288,7 @@ class MadeWhereDrawn {
     st.points = points_;
     st.transferred_layers = transferred_;
     st.resliced_layers = resliced_;
+    st.support_layers = supports_;
     st.slicing_seconds = direct_seconds_ + 1e-9 * double(nanoseconds_);
   }
 
@@ -260,11 +306,11 @@ class MadeWhereDrawn {
   }
 
   std::vector<PlateMember>& members_;
-  const double z_start_, thickness_;
+  const PlateFrame frame_;
   std::vector<DirectLayers> late_;
   std::unique_ptr<std::once_flag[]> late_once_;
   double direct_seconds_ = 0;
-  std::atomic<size_t> points_{0}, transferred_{0}, resliced_{0};
+  std::atomic<size_t> points_{0}, transferred_{0}, resliced_{0}, supports_{0};
   std::atomic<uint64_t> nanoseconds_{0};
 };
 
@@ -282,9 +328,34 @@ std::vector<size_t> plate_ranges(const std::vector<PlateMember>& members, size_t
   std::vector<uint64_t> points(L, 0);
   for (const PlateMember& p : members) {
     const std::vector<uint64_t> own = p.layer_points();
-    for (size_t k = 0; k < own.size(); ++k) points[k] += own[k];
+    for (size_t j = 0; j < own.size(); ++j) points[p.offset + j] += own[j];
   }
   return layer_chunks(points, budget, kPointBytes);
+}
+
+// The plate's layer 0 in parts (those with first 0) shrunk against elephant foot
+// (elephant_foot.h): their layer 0, all together, replaced by one part of the compensated
+// contours, the rest of their layers copied out after it. Nothing with no compensation.
+void compensate_first_layer(std::vector<SlicePart>& parts, const PrinterProfile& profile, const PlateFrame& f) {
+  if (!(profile.elephant_foot_mm > 0)) return;
+  std::vector<LayerPart> first;
+  for (const SlicePart& p : parts)
+    if (p.first == 0 && p.slices.layers() > 0) first.push_back({&p.slices, 0});
+  std::vector<SlicePart> out(1);
+  compensate_elephant_foot(LayerView(first.data(), first.size()), f.plane(0), profile.elephant_foot_mm,
+                           profile.elephant_foot_min_width_mm, out[0].slices);
+  out[0].slices.z_start = f.bottom(0);
+  out[0].slices.thickness = f.thickness;
+  for (SlicePart& p : parts) {
+    if (p.first > 0) {
+      out.push_back(std::move(p));
+    } else if (p.slices.layers() > 1) {
+      out.emplace_back();
+      layers_into(p.slices, 1, p.slices.layers(), out.back().slices, true);
+      out.back().first = 1;
+    }
+  }
+  parts = std::move(out);
 }
 
 }  // namespace
@@ -293,8 +364,9 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
                            const std::string& output_path, const Progress& progress) {
   PlateJobStats st;
   std::vector<PlateMember> members = prepare_members(placed, o, st);
+  const PlateFrame frame{st.z_start, st.thickness, o.layers_below};
   size_t L = 0;
-  for (const PlateMember& p : members) L = std::max(L, p.layers());
+  for (const PlateMember& p : members) L = std::max(L, p.end());
   if (L == 0) {
     double top = -INFINITY;
     for (const Mesh& m : placed) top = std::max(top, z_range(m).max);
@@ -314,10 +386,11 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
     }
     if (direct_points * kPointBytes <= budget) {
       const double share = direct_points > 0 ? 0.1 : 0;  // of the progress, for the direct slicing
-      MadeWhereDrawn made(members, st.z_start, st.thickness, sub_progress(progress, 0, share));
+      MadeWhereDrawn made(members, frame, sub_progress(progress, 0, share));
       st.ranges = 0;
       st.masks = export_masks(LayerMaker{L, st.thickness, [&](size_t k, std::vector<SlicePart>& parts) {
                                            made.make(k, parts);
+                                           if (k == 0) compensate_first_layer(parts, profile, frame);
                                          }},
                               profile, output_path, sub_progress(progress, share, 1));
       made.stats(st);
@@ -333,9 +406,11 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
 
   SliceChunks chunks{first, st.thickness, [&](size_t i, const Progress& range_progress) {
                        const auto t = std::chrono::steady_clock::now();
-                       std::vector<SlicePart> parts = plate_range(members, first[i], first[i + 1], st, range_progress);
+                       std::vector<SlicePart> parts =
+                           plate_range(members, frame, first[i], first[i + 1], st, range_progress);
                        st.slicing_seconds += seconds_since(t);
                        if (o.whole_stack) o.whole_stack(parts);
+                       if (first[i] == 0) compensate_first_layer(parts, profile, frame);
                        return parts;
                      }};
   st.masks = export_masks(chunks, profile, output_path, progress);

@@ -26,6 +26,10 @@ void validate_printer_profile(const PrinterProfile& p) {
                                       {"time between exposures", p.layer_move_s}})
     if (!(seconds >= 0) || !std::isfinite(seconds))
       throw Error(std::string(name) + " " + std::to_string(seconds) + " s is not a finite number >= 0");
+  for (const auto& [name, mm] : {std::pair<const char*, double>{"elephant foot compensation", p.elephant_foot_mm},
+                                 {"elephant foot min width", p.elephant_foot_min_width_mm}})
+    if (!(mm >= 0) || !std::isfinite(mm))
+      throw Error(std::string(name) + " " + std::to_string(mm) + " mm is not a finite number >= 0");
   if (p.bottom_layers < 0 || p.faded_layers < 0)
     throw Error("bottom layers (" + std::to_string(p.bottom_layers) + ") and faded layers (" +
                 std::to_string(p.faded_layers) + ") must not be negative");

@@ -47,6 +47,8 @@ PrinterProfile profile_of(const Fields& display, bool antialiasing, const Fields
   p.bottom_layers = job.whole("bottom_layers");
   p.faded_layers = job.whole("faded_layers");
   p.layer_move_s = job.number("layer_move_s");
+  p.elephant_foot_mm = job.number("elephant_foot_mm");
+  p.elephant_foot_min_width_mm = job.number("elephant_foot_min_width_mm");
   return p;
 }
 

@@ -25,7 +25,7 @@ std::vector<double> layer_planes(double z_start, double thickness, double zmax) 
   while (n > 0 && z_start + double(n - 1) * thickness >= zmax) --n;
   while (z_start + double(n) * thickness < zmax) ++n;
   std::vector<double> z(n);
-  for (size_t k = 0; k < n; ++k) z[k] = z_start + (double(k) + 0.5) * thickness;
+  for (size_t k = 0; k < n; ++k) z[k] = layer_plane(z_start, thickness, double(k));
   return z;
 }
 

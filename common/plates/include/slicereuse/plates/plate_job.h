@@ -13,11 +13,18 @@
 //     why; with options.strict it fails the job instead;
 //   direct (options.encoding null): each placed member sliced directly on the plate's planes,
 //     options.slicing's thickness from its z_start (NaN: the lowest vertex of all members).
-// The plate has the planes z_start + (k + 1/2) h up to its tallest member's top; each member's
-// layers are those its own direct slicing from the same z_start would have (a shorter member
-// simply ends). Layer k's contours are the members' layer k contours one after another: their
-// footprints lie apart (arrange_plates.h), so the nonzero rule fills exactly the union of
-// their own masks, and no anti-aliased pixel is shared when they are more than a pixel apart.
+// The plate has the planes z_start + (k - layers_below + 1/2) h up to its tallest member's (or
+// support's) top; each member's layers are those its own direct slicing from the same z_start
+// would have (a shorter member simply ends), member layer j being plate layer j + layers_below.
+// Layer k's contours are the members' layer k contours one after another: their footprints lie
+// apart (arrange_plates.h), so the nonzero rule fills exactly the union of their own masks, and
+// no anti-aliased pixel is shared when they are more than a pixel apart.
+// Supports (options.supports): a member's support structure (support_tree.h, placed as the
+// member is) is sliced directly on the plate's planes from layer 0 up to its top, with no
+// encoding, and its layers follow the members' in each layer: the nonzero rule fills the union
+// of part and support where they meet.
+// Elephant foot (profile.elephant_foot_mm > 0): the plate's layer 0, all its parts together, is
+// replaced by compensate_elephant_foot's contours (elephant_foot.h) in every way of making it.
 // Memory: reusing, each member's transfer is prepared once (ExactTransfer) and its layer k is
 // transferred where layer k's mask is drawn, on that thread (LayerMaker, export_masks.h), so the
 // plate holds a few layers of points plus those of the layers made directly beforehand (the
@@ -30,7 +37,8 @@
 // 256 MB, so that a plate fills little fresh memory. Every way gives the same masks.
 // Output: the print file of the profile (export_masks: PNG folder, .sl1, .sl1s, .goo), atomic, and
 // the figures. Throws Error for no members, an encoding without a layer thickness, a member of
-// another family with strict, or whatever transfer, slicing or export refuse.
+// another family with strict, supports not one per member, or whatever transfer, slicing or
+// export refuse.
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -62,8 +70,13 @@ struct PlateJobOptions {
   // The members' names for messages (a strict refusal); empty: "member 1", "member 2", ...
   std::vector<std::string> names;
   // When set, the plate is made in one range and this sees its parts (one per member with
-  // layers) before their masks are drawn: a print job's contour file.
+  // layers, then one per support) before their masks are drawn (and before the elephant-foot
+  // compensation): a print job's contour file.
   std::function<void(const std::vector<SlicePart>& parts)> whole_stack;
+  // Per member (placed like it), its support structure, or null; empty: none.
+  std::vector<const Mesh*> supports;
+  // Plate layers under z_start (support_layers_below, support_tree.h): only supports are there.
+  size_t layers_below = 0;
 };
 
 struct PlateJobStats {
@@ -71,6 +84,7 @@ struct PlateJobStats {
   size_t points = 0;              // all members' contour points
   size_t transferred_layers = 0;  // member layers, summed over members
   size_t resliced_layers = 0;     // member layers sliced directly (all of them without an encoding)
+  size_t support_layers = 0;      // supports' layers (sliced directly), summed over supports
   size_t ranges = 1;              // of layers made before their masks; 0: made where drawn
   double z_start = 0, thickness = 0;
   // Transfer or slicing, in all ranges; made where drawn, summed over the threads that made the

@@ -5,7 +5,7 @@
 // validate_printer_profile throws Error naming the bad field when a profile cannot be
 // rasterized or written: display size outside 1..kMaxDisplayPixels px per side, a pixel size
 // that is not a positive finite number, a non-finite offset, a gamma that is not a finite number
-// >= 0, or exposure settings that are negative or not finite. Exporters call it before creating
+// >= 0, exposure settings or elephant-foot figures that are negative or not finite. Exporters call it before creating
 // any output.
 //
 // The display is given as PrusaSlicer's printer settings give it: width_px x height_px pixels
@@ -49,6 +49,12 @@ struct PrinterProfile {
   int bottom_layers = 1;           // layers exposed bottom_exposure_s long
   int faded_layers = 10;           // layers after those whose exposure steps down (SL1 numFade)
   double layer_move_s = 5;         // time between two exposures (tilt, or lift and retract)
+
+  // The layer on the build plate spreads (elephant foot): its mask is shrunk by this much
+  // (elephant_foot.h; PrusaSlicer's elefant_foot_compensation), keeping features at least the
+  // min width wide (elefant_foot_min_width). 0: no compensation.
+  double elephant_foot_mm = 0;
+  double elephant_foot_min_width_mm = 0.2;
 };
 
 // The image a profile's masks have: its size in pixels, and how build-plate coordinates map to

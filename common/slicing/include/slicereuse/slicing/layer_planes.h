@@ -17,6 +17,10 @@ namespace slicereuse {
 // before the first contour point.
 constexpr size_t kMaxLayers = 10'000'000;
 
+// Plane k of a slicing from z_start, the one expression every plane comes from; k may be
+// negative (a build plate's layers below a part's z_start: plate_job.h).
+inline double layer_plane(double z_start, double thickness, double k) { return z_start + (k + 0.5) * thickness; }
+
 std::vector<double> layer_planes(double z_start, double thickness, double zmax);
 
 size_t first_plane_above(const std::vector<double>& layer_z, double z);
