@@ -198,8 +198,9 @@ TEST_F(SupportedPrintTest, APlateOfTwoSupportedMembersEachWay) {
 }
 
 TEST_F(SupportedPrintTest, WithoutSupportsTheCheckFindsIslands) {
-  // The sphere's member on the plate: its first layer is a speck of its widest. Raised as its
-  // supports would raise it, but without them, its first layer rests on nothing.
+  // The sphere's member on the plate: its first layer is a speck of its widest, and every layer
+  // rests on the one below. Raised as its supports would raise it, but without them, its first
+  // layer rests on nothing.
   const test::FamilyOptions o = family_of("sphere");
   const std::vector<Mesh> placed =
       placed_on_plate({test::make_family_member(test::make_family_base(o), o, 1)});
@@ -212,6 +213,7 @@ TEST_F(SupportedPrintTest, WithoutSupportsTheCheckFindsIslands) {
               "%.3f mm\n",
               standing.lit[0], widest, standing.islands, standing.max_distance_mm);
   EXPECT_LT(standing.lit[0] * 50, widest);
+  EXPECT_EQ(standing.islands, 0u);
   PlateJobOptions raised = on_plate;
   raised.layers_below = support_layers_below(SupportTreeOptions().object_elevation_mm, kThickness);
   export_plate(placed, raised, sl1s(false), path("raised.sl1s"));
