@@ -145,8 +145,7 @@ TEST_F(Sl1Archive, ProfileTellsPrusaSlicersImportTheDisplayAndThatNothingIsAdded
                            "display_mirror_y = 0\n", "layer_height = 0.1\n", "initial_layer_height = 0.1\n",
                            // ... and what a profile taken over with the model must say about these masks.
                            "supports_enable = 0\n", "pad_enable = 0\n", "hollowing_enable = 0\n",
-                           "elefant_foot_compensation = 0.2\n", "elefant_foot_min_width = 0.2\n", "printer_technology = SLA\n",
-                           "printer_model = SL1S\n",
+                           "elefant_foot_compensation = 0\n", "printer_technology = SLA\n", "printer_model = SL1S\n",
                            "thumbnails = 400x400,800x480\n"})
     EXPECT_NE(slicer.find(line), std::string::npos) << line;
 }

@@ -77,8 +77,8 @@ std::string prusaslicer_ini(const Sl1Job& j) {
   const std::string h = num(p.height_px * p.pixel_size_y_um / 1000);
   // Besides the display, the settings a PrusaSlicer profile would have to give these masks: no
   // supports, pad, hollowing or size corrections (they are in the part already), so that a model
-  // imported with its profile and sliced again comes out the same; the elephant-foot
-  // compensation the first mask has.
+  // imported with its profile and sliced again comes out the same (elephant-foot compensation
+  // too: a plate's first mask has it already, plate_job.h).
   return "absolute_correction = 0\n"
          "bed_shape = 0x0," + w + "x0," + w + "x" + h + ",0x" + h + "\n"
          "display_height = " + h + "\n"
@@ -88,8 +88,7 @@ std::string prusaslicer_ini(const Sl1Job& j) {
          "display_pixels_x = " + std::to_string(p.width_px) + "\n"
          "display_pixels_y = " + std::to_string(p.height_px) + "\n"
          "display_width = " + w + "\n"
-         "elefant_foot_compensation = " + num(p.elephant_foot_mm) + "\n"
-         "elefant_foot_min_width = " + num(p.elephant_foot_min_width_mm) + "\n"
+         "elefant_foot_compensation = 0\n"
          "exposure_time = " + num(p.exposure_s) + "\n"
          "faded_layers = " + std::to_string(p.faded_layers) + "\n"
          "gamma_correction = " + num(p.antialiasing ? p.gamma : 0) + "\n"
