@@ -64,13 +64,45 @@ def png_grey(data, name):
     return rows[:, 1:]
 
 
+def archive_ini(z, name):
+    """An archive's "key = value" file (config.ini, prusaslicer.ini) as a dict; a key without a
+    value ("key =") maps to ""."""
+    return dict(line.split(" = ", 1) if " = " in line else (line.rstrip(" ="), "")
+                for line in z.read(name).decode().splitlines())
+
+
 def read_archive(path):
     """(layer images in order, config.ini dict, prusaslicer.ini dict)."""
     with zipfile.ZipFile(path) as z:
         layers = sorted(n for n in z.namelist() if "/" not in n and re.search(r"\d{5}\.png$", n))
         images = [png_grey(z.read(n), f"{path.name}:{n}") for n in layers]
-        inis = []
-        for name in ("config.ini", "prusaslicer.ini"):
-            inis.append(dict(line.split(" = ", 1) if " = " in line else (line.rstrip(" ="), "")
-                             for line in z.read(name).decode().splitlines()))
-    return images, inis[0], inis[1]
+        return images, archive_ini(z, "config.ini"), archive_ini(z, "prusaslicer.ini")
+
+
+def archive_height(path):
+    """(layer count, layer height in mm) from an archive's config.ini: numSlow + numFast layers of
+    layerHeight. Raises ValueError in words when the file is no such archive."""
+    try:
+        with zipfile.ZipFile(path) as z:
+            config = archive_ini(z, "config.ini")
+    except (zipfile.BadZipFile, KeyError) as e:
+        raise ValueError(f"{path}: not an SL1/SL1S archive with a config.ini ({e})") from None
+    try:
+        return int(config["numSlow"]) + int(config["numFast"]), float(config["layerHeight"])
+    except (KeyError, ValueError) as e:
+        raise ValueError(f"{path}: config.ini lacks a readable numSlow, numFast or layerHeight ({e})") from None
+
+
+def stl_z_extent(path):
+    """(triangle count, lowest z, highest z) of a binary STL (what PrusaSlicer exports). Raises
+    ValueError in words when the file is no binary STL."""
+    data = Path(path).read_bytes()
+    count = struct.unpack_from("<I", data, 80)[0] if len(data) >= 84 else -1
+    if count < 0 or len(data) != 84 + 50 * count:
+        raise ValueError(f"{path}: not a binary STL ({len(data)} bytes, header says {count} triangles)")
+    if count == 0:
+        return 0, 0.0, 0.0
+    facets = np.frombuffer(data, np.dtype([("normal", "<3f4"), ("corners", "<3f4", (3,)), ("attr", "<u2")]),
+                           count, 84)
+    z = facets["corners"][:, :, 2]
+    return count, float(z.min()), float(z.max())
