@@ -33,7 +33,7 @@ from slicereuse_prusaslicer import archive_height
 try:
     print(*archive_height(sys.argv[1]))
 except ValueError as e:
-    sys.exit(str(e))' "$archive") || { echo "$me: FAILED: the archive's config.ini is unreadable" >&2; exit 1; }
+    sys.exit(f"prusaslicer import: FAILED: {e}")' "$archive") || exit 1
 rm -f "$out/imported.stl" "$out/prusaslicer_import.png" "$out/prusaslicer_import_failure.png"
 
 tmp=$(mktemp -d)
@@ -48,7 +48,7 @@ trap cleanup EXIT
 fail() {
   [ -n "${DISPLAY:-}" ] && import -window root "$out/prusaslicer_import_failure.png" 2>/dev/null || true
   echo "$me: FAILED: $*" >&2
-  [ -f "$tmp/ps.log" ] && grep -v '\[trace\]' "$tmp/ps.log" | grep -iE 'error|exception' | tail -n 5 >&2
+  [ -f "$tmp/ps.log" ] && grep -v -e '\[trace\]' -e DBus -e Dbus "$tmp/ps.log" | grep -iE 'error|exception' | tail -n 5 >&2
   exit 1
 }
 
@@ -80,14 +80,15 @@ if ! locale -a 2>/dev/null | grep -qix 'en_US.utf-\?8'; then
   locale_env+=(LOCPATH="$tmp/locale")
 fi
 
-# A datadir that skips the Configuration Wizard (an installed SL1S printer), the system-info and
-# update dialogs and the tips, with the main window at the screen's corner so the menu bar's place
-# is known.
+# A datadir that skips the Configuration Wizard (an installed SL1S printer), the system-info,
+# update and unsaved-project dialogs and the tips, with the main window at the screen's corner so
+# the menu bar's place is known.
 datadir=$tmp/datadir
 mkdir -p "$datadir/vendor"
 cp /usr/share/PrusaSlicer/profiles/PrusaResearch.ini "$datadir/vendor/"
 cat >"$datadir/PrusaSlicer.ini" <<'INI'
 default_action_on_close_application = discard
+default_action_on_dirty_project = 0
 notify_release = none
 preset_update = 0
 version_check = 0
@@ -170,22 +171,28 @@ xdotool type --delay 10 "$out/imported.stl"
 sleep 0.5
 xdotool key Return
 wait_window_gone '^Export STL file:$' 15 || fail "the STL file dialog did not take $out/imported.stl"
-for _ in $(seq 100); do
-  [ -s "$out/imported.stl" ] && break
-  sleep 0.2
+# PrusaSlicer writes the STL on its main thread: done when the size holds still for a second.
+size=-1
+deadline=$((SECONDS + 120))
+while [ $SECONDS -lt $deadline ]; do
+  now=$(stat -c %s "$out/imported.stl" 2>/dev/null || echo -1)
+  [ "$now" -gt 0 ] && [ "$now" = "$size" ] && break
+  size=$now
+  sleep 1
 done
 [ -s "$out/imported.stl" ] || fail "Export Plate as STL wrote no $out/imported.stl"
 
 # The picture for a human: click the empty canvas (deselects), Z zooms to the objects.
 xdotool mousemove --window "$main" 900 180 click 1
 xdotool key z
-sleep 2
+sleep 3
 import -window root "$out/prusaslicer_import.png"
 
 file_menu
 xdotool key q
 deadline=$((SECONDS + 15))
 while kill -0 "$slicer" 2>/dev/null && [ $SECONDS -lt $deadline ]; do sleep 0.2; done
+kill -0 "$slicer" 2>/dev/null && echo "$me: note: File > Quit did not end PrusaSlicer within 15 s; it is killed" >&2
 total_seconds=$((SECONDS - start))
 
 verdict=$("$root/scripts/python" -c '
