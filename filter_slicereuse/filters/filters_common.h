@@ -14,6 +14,7 @@
 #include "slicereuse/printer/printer_profile.h"
 #include "slicereuse/printfiles/export_masks.h"
 #include "slicereuse/slicing/slice_layers.h"
+#include "slicereuse/supports/member_supports.h"
 #include "slicereuse/transfer/encoding_cache.h"
 #include "slicereuse/util/format.h"
 #include "slicereuse/util/seconds_since.h"
@@ -29,6 +30,9 @@ FilterSpec cross_parameterize_filter();
 FilterSpec free_cached_memory_filter();
 FilterSpec plate_job_filter();
 FilterSpec arrange_plates_filter();
+FilterSpec generate_support_points_filter();
+FilterSpec transfer_support_points_filter();
+FilterSpec build_supports_filter();
 
 // The method's reference, closing every description.
 extern const char* const kReference;
@@ -77,6 +81,43 @@ ParamList<JobLayers> job_layer_params(const char* encoding_tooltip);
 // The plate job's options for p (no members' names, budget or encoding yet): slicing options,
 // strict, and a quarter of the available memory per range of layers.
 PlateJobOptions plate_job_options(const JobLayers& p);
+
+// The supports' parameters (filters_job_supports.cpp), declared once for the support filters and
+// the jobs. How support points are placed: PrusaSlicer's self-supporting distance, density (%)
+// and minimal distance; the options for a part raised (elevation > 0) or not.
+struct SupportPointParams {
+  double self_supporting_mm;
+  double density_percent;
+  double minimal_distance_mm;
+};
+ParamList<SupportPointParams> support_point_params();
+SupportPointOptions support_point_options(const SupportPointParams& p, double elevation_mm);
+// The support tree's (SupportTreeOptions' fields and defaults, PrusaSlicer's SL1S profile).
+ParamList<SupportTreeOptions> support_tree_params();
+
+// Whether and how a print or plate job supports its members: none, points generated on each
+// member, or a source's points (support_points_file) transferred onto each member; then each
+// member's tree (make_member_supports).
+enum class JobSupportsMode { None, Generate, Transfer };
+struct JobSupports {
+  JobSupportsMode mode;
+  std::string support_points_file;
+  SupportPointParams points;
+  SupportTreeOptions tree;
+};
+ParamList<JobSupports> job_support_params();
+// Each member's supports for a job whose options are o (members in their own frame, before
+// placement, in o's order; empty when mode is None), on the job's planes: the encoding's, or
+// o.slicing's thickness from its z_start. A NaN z_start (the lowest vertex) is set in o to the
+// lowest vertex of all members, so that every plate stands on the ground the supports were built
+// for; o.layers_below is set. The source's points are read once; a member of another mesh than
+// the file's is refused with the transfer's words, naming the member.
+std::vector<MemberSupports> job_member_supports(const std::vector<const Mesh*>& members, const JobSupports& s,
+                                                PlateJobOptions& o, const Progress& progress);
+// A member's support figures (support_points, kept, moved, added, dropped), each key followed by
+// suffix ("" or "_<member>").
+void add_support_figures(const MemberSupports& s, const std::string& suffix, Result& result);
+inline double support_seconds(const MemberSupports& s) { return s.points_seconds + s.tree_seconds; }
 
 // The slicing options of the layer_thickness and z_start parameters (z_start_option: at or
 // below kLowestVertexZStartAtOrBelow, the mesh's lowest vertex).

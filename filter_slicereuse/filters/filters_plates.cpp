@@ -2,7 +2,7 @@
 // (or placed as a placements file says), the placements file and each plate's layout picture
 // written, nothing sliced. "Make Plate Job": the same, then each plate's print file (or only one
 // plate's: what family.py's per-plate tasks run) by reuse of a source's encoding or by direct
-// slicing, its layout picture beside it. Both share plan_plates.
+// slicing, its layout picture beside it. Both share load_members and arrange_members.
 #include <map>
 
 #include "filter_params.h"
@@ -20,6 +20,7 @@ namespace {
 struct PlateJobParams {
   bool visible_only;
   JobLayers layers;
+  JobSupports supports;
   double spacing_mm;
   double rotation_step_deg;
   std::string placements_file;
@@ -65,7 +66,8 @@ ParamList<PlateJobParams> plate_job_params() {
   l.include(&PlateJobParams::layers,
             job_layer_params("Encoding file written by Slice Mesh with Encoding for a member of the family: every "
                              "member's layers are transferred from it (exact). Empty: every member is sliced "
-                             "directly."));
+                             "directly."))
+      .include(&PlateJobParams::supports, job_support_params());
   add_arrangement(l);
   add_placements_output(l, nullptr,
                         "Also write the plates' placements, members and area used here (JSON). Empty (the default): "
@@ -96,8 +98,8 @@ std::vector<std::string> unique_names(const std::vector<Host::NamedMesh>& meshes
 }
 
 // The members and where they go: the loaded meshes with faces (shown only, with visible_only),
-// named by unique_names, arranged or placed as the placements file says (plate > 0: only that
-// plate of it, whose members are the loaded meshes).
+// named by unique_names (load_members), arranged or placed as the placements file says (plate > 0:
+// only that plate of it, whose members are the loaded meshes) (arrange_members).
 struct PlatePlan {
   std::vector<Host::NamedMesh> loaded;
   std::vector<std::string> names;
@@ -108,7 +110,7 @@ struct PlatePlan {
 };
 
 template <class P>
-PlatePlan plan_plates(const P& p, size_t plate, const PrinterProfile& profile, Host& host, const Progress& progress) {
+PlatePlan load_members(const P& p, const PrinterProfile& profile, Host& host) {
   PlatePlan plan;
   plan.loaded = host.meshes_with_faces(p.visible_only);
   if (plan.loaded.empty())
@@ -117,15 +119,30 @@ PlatePlan plan_plates(const P& p, size_t plate, const PrinterProfile& profile, H
   plan.names = unique_names(plan.loaded);
   for (const Host::NamedMesh& m : plan.loaded) plan.members.push_back(&m.mesh);
   plan.platform = printer_platform(profile);
+  return plan;
+}
+
+// footprints: what each member takes on the plate (the member, or the member with its supports).
+template <class P>
+void arrange_members(PlatePlan& plan, const P& p, size_t plate, const std::vector<const Mesh*>& footprints,
+                     const Progress& progress) {
   const auto start = std::chrono::steady_clock::now();
   ArrangeOptions ao;
   ao.spacing_mm = p.spacing_mm;
   ao.rotation_step_deg = p.rotation_step_deg;
   plan.arrangement = p.placements_file.empty()
-                         ? arrange_plates(plan.members, plan.names, plan.platform, ao, progress)
+                         ? arrange_plates(footprints, plan.names, plan.platform, ao, progress)
                          : arrangement_of(read_placements_file(p.placements_file), plan.names, plate);
   plan.arrange_seconds = seconds_since(start);
-  return plan;
+}
+
+// A member and its supports as one mesh, whose footprint is their union's.
+Mesh with_supports(const Mesh& member, const Mesh& supports) {
+  Mesh both = member;
+  const uint32_t first = uint32_t(member.vertices());
+  both.V.insert(both.V.end(), supports.V.begin(), supports.V.end());
+  for (uint32_t v : supports.F) both.F.push_back(first + v);
+  return both;
 }
 
 // Plate k's members moved to their placements, and their names.
@@ -153,21 +170,32 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
   const size_t first = first_plate(p);
   keep_buffers_for_the_next_job();
   const Progress progress = host.progress();
-  const PlatePlan plan = plan_plates(p, size_t(p.plate), profile, host, sub_progress(progress, 0, 0.1));
-  const Arrangement& arrangement = plan.arrangement;
+  PlatePlan plan = load_members(p, profile, host);
   const std::vector<std::string>& names = plan.names;
   const std::vector<const Mesh*>& members = plan.members;
-  const double arrange_seconds = plan.arrange_seconds;
 
   PlateJobOptions jo = plate_job_options(p.layers);
+  jo.names = names;
   bool cached = false;
   std::shared_ptr<const CachedEncoding> entry;
-  const size_t plates = arrangement.members.size();
-  VertexOrder order;
   if (!p.layers.encoding_file.empty()) {
-    entry = encoding_cache().get(p.layers.encoding_file, members, &cached, sub_progress(progress, 0.1, 0.15));
+    entry = encoding_cache().get(p.layers.encoding_file, members, &cached, sub_progress(progress, 0, 0.05));
     jo.encoding = &entry->encoding;
     jo.edge_ends = &entry->edge_ends;
+  }
+  // Supports first: a member takes its supports' room on the plate.
+  const std::vector<MemberSupports> supports =
+      job_member_supports(members, p.supports, jo, sub_progress(progress, 0.05, 0.1));
+  std::vector<Mesh> supported;
+  for (size_t m = 0; m < supports.size(); ++m) supported.push_back(with_supports(*members[m], supports[m].tree.mesh));
+  std::vector<const Mesh*> footprints = members;
+  for (size_t m = 0; m < supported.size(); ++m) footprints[m] = &supported[m];
+  arrange_members(plan, p, size_t(p.plate), footprints, sub_progress(progress, 0.1, 0.15));
+  const Arrangement& arrangement = plan.arrangement;
+  const double arrange_seconds = plan.arrange_seconds;
+  const size_t plates = arrangement.members.size();
+  VertexOrder order;
+  if (entry) {
     // Each member's transfer reads its vertices in this order, made once for all the plates: it
     // pays for itself over several plates, and costs about what it gains on one, so a call that
     // makes one plate (family.py's tasks) goes without it.
@@ -190,6 +218,9 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
     const std::string layout = plate_layout_file_name(outputs.back());
     const double from = 0.15 + 0.85 * double(k) / double(plates), to = 0.15 + 0.85 * double(k + 1) / double(plates);
     jo.names = plate_names;
+    jo.supports.clear();
+    for (size_t m : supports.empty() ? std::vector<size_t>() : arrangement.members[k])
+      jo.supports.push_back(place_mesh(supports[m].tree.mesh, arrangement.placement[m]));
     const PlateJobStats st = export_plate(placed, jo, profile, outputs.back(), sub_progress(progress, from, to));
     write_plate_layout(layout, placed, plate_names, plan.platform);
     result[format("output_%zu", first + k)] = outputs.back();
@@ -234,6 +265,12 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
                  {"slicing_seconds", total.slicing_seconds},
                  {"seconds", seconds}});
   for (size_t k = 0; k < plates; ++k) result[format("area_used_%zu", first + k)] = arrangement.area_used[k];
+  double seconds_of_supports = 0;
+  for (size_t m = 0; m < supports.size(); ++m) {
+    add_support_figures(supports[m], "_" + names[m], result);
+    seconds_of_supports += support_seconds(supports[m]);
+  }
+  result["support_seconds"] = seconds_of_supports;
   return result;
 }
 
@@ -266,7 +303,8 @@ Result run_arrange(const ArrangeParams& p, Host& host) {
   const auto start = std::chrono::steady_clock::now();
   const PrinterProfile profile = p.printer.profile();
   log_printer(host, "Arrange on Plates", p.printer);
-  const PlatePlan plan = plan_plates(p, 0, profile, host, host.progress());
+  PlatePlan plan = load_members(p, profile, host);
+  arrange_members(plan, p, 0, plan.members, host.progress());
   const size_t plates = plan.arrangement.members.size();
   std::vector<std::string> outputs;
   for (size_t k = 0; k < plates; ++k) {
@@ -319,14 +357,18 @@ FilterSpec plate_job_filter() {
       "<p>Each plate's layer is the union of its members' layers at that height, each member transferred "
       "from the source's encoding onto its placed vertices (exact, as <i>Make Print Job</i>) or sliced "
       "directly; members of different heights simply end. Next to each print file, a top-view picture of "
-      "the plate with each member's outline and name (<i>_layout.png</i>).</p>") +
+      "the plate with each member's outline and name (<i>_layout.png</i>).</p>"
+      "<p>With <i>supports</i>, each member gets its supports (points generated on it, or a source's "
+      "transferred from a support-points file) before the arrangement, which keeps their footprint "
+      "apart too; they are sliced with the members, on the layers below them.</p>") +
       kReference;
   return typed_filter({FilterId::MakePlateJob, "Make Plate Job", "make_plate_job", description, Arity::None,
                        kLayerClass, false},
                       plate_job_params(), run_plate_job,
                       {"plates", "members", "layers", "points", "transferred_layers", "resliced_layers",
                        "direct_members", "encoding_cached", "arrange_seconds", "slicing_seconds", "seconds",
-                       "area_used_*", "output_*", "layout_*", "direct_reason_*", "sliced_directly_*"});
+                       "support_seconds", "area_used_*", "output_*", "layout_*", "direct_reason_*",
+                       "sliced_directly_*", "support_points_*", "kept_*", "moved_*", "added_*", "dropped_*"});
 }
 
 }  // namespace slicereuse::plugin

@@ -11,6 +11,7 @@ namespace {
 
 struct PrintJobParams {
   JobLayers layers;
+  JobSupports supports;
   std::string contour_file;
   std::string output_path;
   PrinterSettings printer;
@@ -22,6 +23,7 @@ ParamList<PrintJobParams> print_job_params() {
             job_layer_params("Encoding file written by Slice Mesh with Encoding for a member of the family: the "
                              "current mesh's layers are transferred from it (exact). Empty: slice the current mesh "
                              "directly."))
+      .include(&PrintJobParams::supports, job_support_params())
       .file(&PrintJobParams::contour_file, ParamType::FileSave, "contour_file", "Contour file", "*.ctr *.srb", nullptr,
             "Also write the layers' contour points here (text .ctr unless the name ends in .srb). Empty (the "
             "default): no contour file.");
@@ -52,13 +54,17 @@ Result run_print_job(const PrintJobParams& p, Host& host) {
     o.encoding = &entry->encoding;
     o.edge_ends = &entry->edge_ends;
   }
+  const double from = entry ? 0.2 : 0, supported = p.supports.mode == JobSupportsMode::None ? from : from + 0.2;
+  const std::vector<MemberSupports> supports =
+      job_member_supports({&member[0]}, p.supports, o, sub_progress(progress, from, supported));
+  if (!supports.empty()) o.supports = {supports[0].tree.mesh};
   // The contour file appears only with the masks: staged until they are written.
   StagedOutputs outputs;
   if (!p.contour_file.empty())
     o.whole_stack = [&](const std::vector<SlicePart>& parts) {
       write_contour_file(outputs.file(p.contour_file), parts.at(0).slices, format_for_name(p.contour_file));
     };
-  const PlateJobStats st = export_plate(member, o, profile, p.output_path, sub_progress(progress, entry ? 0.2 : 0, 1));
+  const PlateJobStats st = export_plate(member, o, profile, p.output_path, sub_progress(progress, supported, 1));
   outputs.commit();
 
   const double seconds = seconds_since(start);
@@ -73,6 +79,16 @@ Result run_print_job(const PrintJobParams& p, Host& host) {
                   st.points, p.output_path.c_str(), seconds, entry ? "transfer" : "slicing", st.slicing_seconds,
                   entry ? (cached ? ", encoding in memory" : ", encoding read") : "", masks_seconds));
   if (!why.empty()) host.log("Make Print Job: sliced directly, not by reuse: " + why);
+  const MemberSupports none;
+  const MemberSupports& sup = supports.empty() ? none : supports[0];
+  if (!supports.empty())
+    host.log(format("Make Print Job: %zu support points (%s), %zu pillars, %zu layers below the part, %.3f s",
+                    sup.points.size(),
+                    sup.transferred ? format("%zu kept, %zu moved, %zu added, %zu dropped", sup.transfer.kept,
+                                             sup.transfer.moved, sup.transfer.added, sup.transfer.dropped)
+                                          .c_str()
+                                    : "generated",
+                    sup.tree.pillars, sup.layers_below, support_seconds(sup)));
   log_display_warning(host, "Make Print Job", st.masks, profile);
   Result result = {{"layers", int64_t(st.layers)},
                    {"points", int64_t(st.points)},
@@ -85,7 +101,9 @@ Result run_print_job(const PrintJobParams& p, Host& host) {
                    {"output_path", p.output_path},
                    {"slicing_seconds", st.slicing_seconds},
                    {"masks_seconds", masks_seconds},
+                   {"support_seconds", support_seconds(sup)},
                    {"seconds", seconds}};
+  add_support_figures(sup, "", result);
   add_display_figures(st.masks, result);
   return result;
 }
@@ -110,13 +128,18 @@ FilterSpec print_job_filter() {
       "<p>When directly sliced contours would take more than a quarter of the memory "
       "still available (a large part at a very fine layer), the mesh is sliced and "
       "its masks made a range of layers at a time, so memory stays bounded; the log "
-      "says how many ranges.</p>") +
+      "says how many ranges.</p>"
+      "<p>With <i>supports</i>, the mesh gets support points (generated on it, or a source's "
+      "transferred from a support-points file, certified and completed) and the supports built "
+      "from them (as <i>Build Supports</i>); they are sliced with the mesh, on the layers below "
+      "it.</p>") +
       kReference;
   return typed_filter({FilterId::MakePrintJob, "Make Print Job", "make_print_job", description,
                        Arity::CurrentMesh, kLayerClass, true},
                       print_job_params(), run_print_job,
                       with_display_keys({"layers", "points", "transferred_layers", "resliced_layers", "encoding_cached",
-                                         "layer_ranges", "reused", "direct_reason", "output_path", "slicing_seconds",
+                                         "layer_ranges", "reused", "direct_reason", "output_path", "support_points", "kept",
+                                         "moved", "added", "dropped", "slicing_seconds", "support_seconds",
                                          "masks_seconds", "seconds"}));
 }
 

@@ -35,7 +35,8 @@ struct ParamSpec {
 };
 
 enum class FilterId { SliceWithEncoding, TransferSlicing, ExportMasks, CompareMasks, MakePrintJob,
-                      CrossParameterize, FreeCachedMemory, MakePlateJob, ArrangePlates };
+                      CrossParameterize, FreeCachedMemory, MakePlateJob, ArrangePlates, GenerateSupportPoints,
+                      TransferSupportPoints, BuildSupports };
 
 // Which meshes a filter works on (MeshLab's arity): none (files only), the current mesh, or the
 // meshes its Mesh parameters name.
@@ -82,6 +83,7 @@ class Host {
  public:
   virtual ~Host() = default;
   virtual Mesh current_mesh() = 0;                   // throws Error if there is none
+  virtual std::string current_mesh_name() = 0;       // its layer name; throws Error if there is none
   virtual Mesh mesh_at(int ref) = 0;                 // a Mesh parameter's value; Error if none
   // The loaded meshes that have faces, in the document's order, each with its layer name and
   // whether it is shown (the eye of MeshLab's layer dialog; every mesh pymeshlab and
@@ -97,6 +99,12 @@ class Host {
   // Adds a new layer showing polylines: points xyz (3n), segments as point index pairs.
   virtual void add_polyline_layer(const std::string& name, const std::vector<double>& xyz,
                                   const std::vector<uint32_t>& segments) = 0;
+  // Adds a new layer of points (no faces): xyz and unit normals, 3n each. The user may select
+  // and delete points there with the host's own tools.
+  virtual void add_point_layer(const std::string& name, const std::vector<double>& xyz,
+                               const std::vector<double>& normals) = 0;
+  // Adds a new layer holding a triangle mesh.
+  virtual void add_mesh_layer(const std::string& name, const Mesh& mesh) = 0;
   // Colours the vertices of a Mesh parameter's mesh: rgba holds 4 bytes per vertex, in the order
   // of mesh_at's vertices; Error if the count differs.
   virtual void set_vertex_colors(int ref, const std::vector<uint8_t>& rgba) = 0;

@@ -197,6 +197,11 @@ class DocumentHost : public Host {
     return out;
   }
 
+  std::string current_mesh_name() override {
+    if (md_.mm() == nullptr) throw Error("there is no current mesh: open a mesh first");
+    return md_.mm()->label().toStdString();
+  }
+
   Slices current_contour_layer() override {
     if (md_.mm() == nullptr) throw Error("there is no current layer: open a contour file first");
     return slices_of_contour_layer(md_.mm()->cm);
@@ -206,6 +211,15 @@ class DocumentHost : public Host {
   void add_polyline_layer(const std::string& name, const std::vector<double>& xyz,
                           const std::vector<uint32_t>& segments) override {
     Api::add_layer(md_, to_qstring(name), [&](CMeshO& m) { fill_polyline_mesh(m, xyz, segments); });
+  }
+
+  void add_point_layer(const std::string& name, const std::vector<double>& xyz,
+                       const std::vector<double>& normals) override {
+    Api::add_layer(md_, to_qstring(name), [&](CMeshO& m) { fill_point_mesh(m, xyz, normals); });
+  }
+
+  void add_mesh_layer(const std::string& name, const Mesh& mesh) override {
+    Api::add_layer(md_, to_qstring(name), [&](CMeshO& m) { fill_triangle_mesh(m, mesh); });
   }
 
   // Marks the colours as present (MM_VERTCOLOR) so that the GUI draws them; the filter's

@@ -9,12 +9,15 @@
 // set_vertex_colors_vcg: colours the live vertices, in mesh_from_vcg's order, from rgba (4 bytes
 //   per vertex); Error if the counts differ.
 // fill_polyline_mesh: turns points xyz (3n) and segments (point index pairs) into an edge mesh.
+// fill_point_mesh: points xyz (3n) with their normals (3n) as a mesh of vertices only.
+// fill_triangle_mesh: a slicereuse::Mesh as a vcg mesh, with per-vertex normals for shading.
 #include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
 
 #include <vcg/complex/algorithms/update/bounding.h>
+#include <vcg/complex/algorithms/update/normal.h>
 #include <vcg/complex/complex.h>
 
 #include "slicereuse/mesh/mesh.h"
@@ -93,6 +96,37 @@ void fill_polyline_mesh(MeshT& m, const std::vector<double>& xyz, const std::vec
       e->V(1) = &m.vert[first + segments[s + 1]];
     }
   }
+  vcg::tri::UpdateBounding<MeshT>::Box(m);
+}
+
+template <class MeshT>
+void fill_point_mesh(MeshT& m, const std::vector<double>& xyz, const std::vector<double>& normals) {
+  using Coord = typename MeshT::CoordType;
+  using Scalar = typename MeshT::ScalarType;
+  const size_t n = xyz.size() / 3;
+  if (n == 0) return;
+  auto v = vcg::tri::Allocator<MeshT>::AddVertices(m, n);
+  for (size_t i = 0; i < n; ++i, ++v) {
+    v->P() = Coord(Scalar(xyz[3 * i]), Scalar(xyz[3 * i + 1]), Scalar(xyz[3 * i + 2]));
+    v->N() = Coord(Scalar(normals[3 * i]), Scalar(normals[3 * i + 1]), Scalar(normals[3 * i + 2]));
+  }
+  vcg::tri::UpdateBounding<MeshT>::Box(m);
+}
+
+template <class MeshT>
+void fill_triangle_mesh(MeshT& m, const Mesh& mesh) {
+  using Coord = typename MeshT::CoordType;
+  using Scalar = typename MeshT::ScalarType;
+  if (mesh.vertices() == 0) return;
+  auto v = vcg::tri::Allocator<MeshT>::AddVertices(m, mesh.vertices());
+  for (size_t i = 0; i < mesh.vertices(); ++i, ++v)
+    v->P() = Coord(Scalar(mesh.V[3 * i]), Scalar(mesh.V[3 * i + 1]), Scalar(mesh.V[3 * i + 2]));
+  if (mesh.faces() > 0) {
+    auto f = vcg::tri::Allocator<MeshT>::AddFaces(m, mesh.faces());
+    for (size_t i = 0; i < mesh.faces(); ++i, ++f)
+      for (int j = 0; j < 3; ++j) f->V(j) = &m.vert[mesh.F[3 * i + size_t(j)]];
+  }
+  vcg::tri::UpdateNormal<MeshT>::PerVertexNormalizedPerFace(m);
   vcg::tri::UpdateBounding<MeshT>::Box(m);
 }
 

@@ -45,6 +45,7 @@ class FakeHost : public Host {
     if (meshes.empty()) throw Error("there is no current mesh: open a mesh first");
     return meshes.at(size_t(current));
   }
+  std::string current_mesh_name() override { return "mesh" + std::to_string(current); }
   Mesh mesh_at(int ref) override {
     if (ref < 0 || size_t(ref) >= meshes.size()) throw Error("there is no mesh with index " + std::to_string(ref));
     return meshes[size_t(ref)];
@@ -60,6 +61,17 @@ class FakeHost : public Host {
   Slices current_contour_layer() override { throw Error("the layer is not a contour layer"); }
   void add_polyline_layer(const std::string& name, const std::vector<double>&, const std::vector<uint32_t>&) override {
     added_layers.push_back(name);
+  }
+  // Each added point or mesh layer by name.
+  std::map<std::string, std::vector<double>> point_layers;
+  std::map<std::string, Mesh> mesh_layers;
+  void add_point_layer(const std::string& name, const std::vector<double>& xyz, const std::vector<double>&) override {
+    added_layers.push_back(name);
+    point_layers[name] = xyz;
+  }
+  void add_mesh_layer(const std::string& name, const Mesh& mesh) override {
+    added_layers.push_back(name);
+    mesh_layers[name] = mesh;
   }
   void set_vertex_colors(int ref, const std::vector<uint8_t>& rgba) override { colors[ref] = rgba; }
   void log(const std::string& line) override { lines.push_back(line); }
@@ -106,7 +118,7 @@ TEST(Filters, NamesAreUniqueAndEveryParameterIsDeclaredOnce) {
     std::set<std::string> params;
     for (const ParamSpec& p : f.params) EXPECT_TRUE(params.insert(p.name).second) << f.name << ": " << p.name;
   }
-  EXPECT_EQ(filter_specs().size(), 9u);
+  EXPECT_EQ(filter_specs().size(), 12u);
   EXPECT_EQ(find_filter_spec(-1), nullptr);
 }
 
