@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "error_of.h"
+#include "fake_host.h"
 #include "filter_api.h"
 #include "mask_stack.h"
 #include "shapes.h"
@@ -30,81 +31,6 @@ namespace {
 using test::error_of;
 using test::make_sphere;
 using test::shuffle_mesh;
-
-// A document of meshes as MeshLab would hold them: mesh_at(i) is the i-th, the current one is
-// `current`; what the filters add or colour is recorded.
-class FakeHost : public Host {
- public:
-  std::vector<Mesh> meshes;
-  int current = 0;
-  std::vector<std::string> lines;
-  std::vector<std::string> added_layers;
-  std::map<int, std::vector<uint8_t>> colors;
-
-  Mesh current_mesh() override {
-    if (meshes.empty()) throw Error("there is no current mesh: open a mesh first");
-    return meshes.at(size_t(current));
-  }
-  std::string current_mesh_name() override { return "mesh" + std::to_string(current); }
-  Mesh mesh_at(int ref) override {
-    if (ref < 0 || size_t(ref) >= meshes.size()) throw Error("there is no mesh with index " + std::to_string(ref));
-    return meshes[size_t(ref)];
-  }
-  // Mesh i is named "mesh<i>" and shown unless hidden[i].
-  std::set<size_t> hidden;
-  std::vector<NamedMesh> meshes_with_faces(bool visible_only) override {
-    std::vector<NamedMesh> out;
-    for (size_t i = 0; i < meshes.size(); ++i)
-      if (meshes[i].faces() > 0 && !(visible_only && hidden.count(i))) out.push_back({"mesh" + std::to_string(i), meshes[i]});
-    return out;
-  }
-  Slices current_contour_layer() override { throw Error("the layer is not a contour layer"); }
-  void add_polyline_layer(const std::string& name, const std::vector<double>&, const std::vector<uint32_t>&) override {
-    added_layers.push_back(name);
-  }
-  // Each added point or mesh layer by name.
-  std::map<std::string, std::vector<double>> point_layers;
-  std::map<std::string, Mesh> mesh_layers;
-  void add_point_layer(const std::string& name, const std::vector<double>& xyz, const std::vector<double>&) override {
-    added_layers.push_back(name);
-    point_layers[name] = xyz;
-  }
-  void add_mesh_layer(const std::string& name, const Mesh& mesh) override {
-    added_layers.push_back(name);
-    mesh_layers[name] = mesh;
-  }
-  void set_vertex_colors(int ref, const std::vector<uint8_t>& rgba) override { colors[ref] = rgba; }
-  void log(const std::string& line) override { lines.push_back(line); }
-  Progress progress() override { return {}; }
-};
-
-const FilterSpec& spec_named(const std::string& python_name) {
-  for (const FilterSpec& f : filter_specs())
-    if (f.python_name == python_name) return f;
-  throw Error("no filter " + python_name);
-}
-
-// The values a host reads from a dialog left at its defaults, with `changes` applied.
-ParamValues defaults(const FilterSpec& f, const std::map<std::string, std::string>& texts = {},
-                     const std::map<std::string, double>& numbers = {}) {
-  ParamValues v;
-  for (const ParamSpec& p : f.params) {
-    const bool text = p.type == ParamType::String || p.type == ParamType::FileOpen || p.type == ParamType::FileSave;
-    if (text) v.texts[p.name] = p.default_text;
-    else v.numbers[p.name] = p.default_number;
-  }
-  for (const auto& [name, value] : texts) v.texts.at(name) = value;
-  for (const auto& [name, value] : numbers) v.numbers.at(name) = value;
-  return v;
-}
-
-std::set<std::string> keys_of(const Result& r) {
-  std::set<std::string> keys;
-  for (const auto& entry : r) keys.insert(entry.first);
-  return keys;
-}
-
-int64_t count(const Result& r, const std::string& key) { return std::get<int64_t>(r.at(key)); }
 
 TEST(Filters, NamesAreUniqueAndEveryParameterIsDeclaredOnce) {
   std::set<int> ids;
@@ -280,8 +206,10 @@ TEST_F(FiltersThroughAFakeHost, EveryFilterRunsAndReturnsEveryFigureItLogs) {
   const Result job = job_spec.run(job_values, host);
   std::set<std::string> job_keys = display;
   job_keys.insert({"layers", "points", "transferred_layers", "resliced_layers", "encoding_cached", "layer_ranges",
-                   "reused", "direct_reason", "output_path", "slicing_seconds", "masks_seconds", "seconds"});
+                   "reused", "direct_reason", "output_path", "support_points", "kept", "moved", "added", "dropped",
+                   "slicing_seconds", "support_seconds", "masks_seconds", "seconds"});
   EXPECT_EQ(keys_of(job), job_keys);
+  for (const char* none : {"support_points", "kept", "moved", "added", "dropped"}) EXPECT_EQ(count(job, none), 0);
   EXPECT_EQ(count(job, "transferred_layers"), int64_t(direct.layers()));
   EXPECT_EQ(count(job, "reused"), 1);
   EXPECT_EQ(std::get<std::string>(job.at("direct_reason")), "");
@@ -348,8 +276,8 @@ TEST_F(FiltersThroughAFakeHost, MakePlateJobPutsTheShownMeshesOnPlatesAndReadsIt
       host);
   EXPECT_EQ(keys_of(plate), (std::set<std::string>{"plates", "members", "layers", "points", "transferred_layers",
                                                    "resliced_layers", "direct_members", "encoding_cached",
-                                                   "arrange_seconds", "slicing_seconds", "seconds", "area_used_1",
-                                                   "output_1", "layout_1"}));
+                                                   "arrange_seconds", "slicing_seconds", "support_seconds", "seconds",
+                                                   "area_used_1", "output_1", "layout_1"}));
   EXPECT_EQ(std::get<std::string>(plate.at("output_1")), path("plate_1.sl1"));
   EXPECT_EQ(std::get<std::string>(plate.at("layout_1")), path("plate_1_layout.png"));
   EXPECT_EQ(count(plate, "direct_members"), 0);
