@@ -4,7 +4,7 @@
                                       [--format EXT] [--direct] [--verify] [--keep-contours]
                                       [--plates [--spacing MM] [--placements FILE]]
                                       [--workers N | --scheduler tcp://HOST:PORT [--send-encoding]]
-                                      [--resume] [--strict]
+                                      [--resume] [--strict] [--supports]
                                       MESH0 MESH1 ...
 
 Default: slices MESH0 once with encoding, then for each member MESH1 ...: loads it, transfers
@@ -17,6 +17,11 @@ slices each member directly and compares the masks (min_similarity 1 and max_gre
 mean identical).
 A member whose slicing cannot be reused (another connectivity, no map) is sliced directly, its
 entry's "method" "direct" and "direct_reason" saying why; --strict fails it instead, with the reason.
+--supports: every member is printed on supports (PrusaSlicer's SL1S defaults: raised 5 mm, on a
+pad): MESH0's support points are generated once into DIR/<MESH0 stem>_supports.srp and every
+member's job transfers them (certified on the member, completed where it needs more); with
+--direct every member generates its own. Each member's entry (on --plates, each plate member's)
+gains "support_points", "kept", "moved", "added", "dropped", and "support_seconds".
 Prints one JSON object: {"source": MESH0, "seconds": total, "source_seconds", "engine",
 "failed", "targets": [{"mesh", "layers", "points", "resliced_layers", "seconds", "output",
 "method", "worker"[, "min_similarity", "max_grey_difference"][, "resumed"]}
@@ -93,6 +98,9 @@ def main():
                          "(for workers elsewhere, when the shared folder is slow)")
     ap.add_argument("--strict", action="store_true",
                     help="fail a member whose slicing cannot be reused instead of slicing it directly")
+    ap.add_argument("--supports", action="store_true",
+                    help="print every member on supports: MESH0's points transferred to every member "
+                         "(--direct: generated on each)")
     ap.add_argument("--resume", action="store_true",
                     help="skip members whose outputs an earlier run made complete and valid")
     ap.add_argument("meshes", nargs="+", metavar="MESH", help="the sliced mesh, then its family members")
@@ -132,12 +140,13 @@ def main():
         if args.plates:
             result = sr.plates(args.meshes[0], args.meshes[1:], args.layer_thickness, args.out, profile=profile,
                                progress=bar, direct=args.direct, verify=args.verify, spacing_mm=args.spacing,
-                               placements=args.placements, extension=extension, strict=args.strict, **engine)
+                               placements=args.placements, extension=extension, strict=args.strict,
+                               supports=args.supports, **engine)
         else:
             result = sr.family(args.meshes[0], args.meshes[1:], args.layer_thickness, args.out,
                                profile=profile, binary=not args.text, extension=extension, progress=bar,
                                direct=args.direct, verify=args.verify, keep_contours=args.keep_contours,
-                               strict=args.strict, **engine)
+                               strict=args.strict, supports=args.supports, **engine)
     except Exception as e:  # pymeshlab.PyMeshLabException, OSError, RuntimeError, ValueError
         if sys.stderr.isatty():
             sys.stderr.write("\n")

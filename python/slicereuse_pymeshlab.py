@@ -82,9 +82,18 @@ class EncodingJob(batch.Job):
 
 
 @dataclass
+class SupportPointsJob(batch.Job):
+    """The source's support points generated once (generate_support_points, on the planes its
+    encoding has), into outputs[0]."""
+    mesh: str
+    layer_thickness: float
+
+
+@dataclass
 class MemberJob(batch.Job):
     """One member's print job (family()): target made into output by make_print_job; contours
-    and check ("" none) its contour file and its direct slicing, compared."""
+    and check ("" none) its contour file and its direct slicing, compared; supports as
+    _support_parameters says."""
     target: str
     output: str
     contours: str
@@ -93,6 +102,7 @@ class MemberJob(batch.Job):
     profile: dict
     details: bool
     strict: bool
+    supports: str
 
 
 @dataclass
@@ -104,6 +114,9 @@ class ArrangeJob(batch.Job):
     spacing_mm: float
     profile: dict
     output: str
+    layer_thickness: float
+    z_start: float
+    supports: str
 
 
 @dataclass
@@ -120,6 +133,7 @@ class PlateJob(batch.Job):
     strict: bool
     plate_output: str
     check_output: str
+    supports: str
 
 
 def _encode_source(source, out, layer_thickness, epoch, resume, binary=True):
@@ -140,9 +154,75 @@ def _encode_source(source, out, layer_thickness, epoch, resume, binary=True):
     return encoding
 
 
+# supports for family() and plates(): none, generated on every member, or the source's points
+# (the file _generate_source_points writes) transferred to every member.
+NO_SUPPORTS, GENERATE_SUPPORTS = "", "generate"
+
+
+def _support_parameters(supports):
+    """make_print_job's and make_plate_job's supports parameters for supports: NO_SUPPORTS,
+    GENERATE_SUPPORTS, or the absolute path of the source's support-points file (transfer)."""
+    mode = 0 if supports == NO_SUPPORTS else 1 if supports == GENERATE_SUPPORTS else 2
+    return {"supports": mode, "support_points_file": supports if mode == 2 else ""}
+
+
+# A member's support figures in the filters' results (per member on a plate: "<key>_<name>").
+SUPPORT_KEYS = ("support_points", "kept", "moved", "added", "dropped")
+
+
+def _generate_source_points(source, out, layer_thickness, epoch, resume):
+    """Generates the source's support points once, as a batch job, into out/<source stem>_supports.srp
+    (kept with resume when an earlier run made it from the same source and thickness), on the
+    planes of its encoding (its lowest vertex, layer_thickness). Returns the file's path."""
+    points = Path(out) / (Path(source).stem + "_supports.srp")
+    job = SupportPointsJob(name=points.name, out=str(out), outputs=[str(points)], epoch=epoch,
+                           base={"mesh": str(source)}, mesh=str(source), layer_thickness=layer_thickness,
+                           key=batch.key_of(source=batch.file_identity(source), layer_thickness=layer_thickness))
+    if not (resume and batch.valid_record(job)):
+        made = batch.attempt(_make_source_points, job, "", batch.IN_PROCESS)
+        if "error" in made:
+            raise RuntimeError(f"support points of {source}: {made['error']}")
+    return points
+
+
+def _make_source_points(job, _shared):
+    with _meshset() as ms:
+        _load_mesh(ms, job.mesh)
+        r = ms.apply_filter("generate_support_points", layer_thickness=job.layer_thickness,
+                            support_points_file=job.outputs[0])
+    return {"support_points": r["points"]}
+
+
+# The filters' z_start for "the lowest vertex" (of the mesh, or of all members).
+LOWEST_VERTEX = -1e30
+
+
+def _lowest_vertex(path):
+    """The lowest vertex's z of the mesh at path: where its slicing (and encoding) starts."""
+    with _meshset() as ms:
+        _load_mesh(ms, path)
+        return ms.current_mesh().bounding_box().min()[2]
+
+
+def _supports_identity(supports):
+    """supports (as _job_supports gives it) for a job's key: the points file's identity."""
+    return supports if supports in (NO_SUPPORTS, GENERATE_SUPPORTS) else batch.file_identity(supports)
+
+
+def _job_supports(supports, direct, out, source, layer_thickness, epoch, resume):
+    """What every member's job does for supports: NO_SUPPORTS without supports; with --direct,
+    GENERATE_SUPPORTS on every member; by reuse, the source's points generated once, whose path
+    every member's job transfers from."""
+    if not supports:
+        return NO_SUPPORTS
+    if direct:
+        return GENERATE_SUPPORTS
+    return str(_generate_source_points(source, out, layer_thickness, epoch, resume))
+
+
 def family(source, targets, layer_thickness, out, profile=None, binary=True, progress=None,
            direct=False, verify=False, keep_contours=False, details=False, extension=None,
-           workers=0, scheduler=None, resume=False, send_encoding=False, strict=False):
+           workers=0, scheduler=None, resume=False, send_encoding=False, strict=False, supports=False):
     """The production pipeline: one print job per family member, out/<member stem><extension>
     (".sl1", ".sl1s", ".goo", or "" for a folder of PNG images; None: the printer's own,
     printer_extension(profile's printer)).
@@ -161,6 +241,12 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     A member whose slicing cannot be reused (another connectivity, no map) is sliced directly,
     its entry's "method" "direct" and "direct_reason" why; strict=True fails it instead, with
     the reason.
+    supports=True: every member is printed on supports: by reuse, the source's support points
+    are generated once (out/<source stem>_supports.srp) and every member's job transfers them
+    (certified, completed where the member needs more); with direct=True, every member's job
+    generates its own. Each entry then says "support_points", "kept", "moved", "added",
+    "dropped" (as transfer_support_points; all but support_points 0 when generated) and
+    "support_seconds" (the member's points and tree, inside its seconds).
 
     Where the members are made (slicereuse_batch.py): workers=0 (the default) in this process;
     workers=N an embedded Dask LocalCluster of N worker processes (None: one per two cores, slicereuse_batch.default_workers);
@@ -205,11 +291,12 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
         step += 1
         if progress:
             progress(step, steps, f"sliced {Path(source).name}")
+    member_supports = _job_supports(supports, direct, out, source, layer_thickness, epoch, resume)
     source_seconds = time.perf_counter() - start
 
     parameters = dict(encoding=batch.file_identity(encoding) if encoding else None,
                       layer_thickness=layer_thickness, profile=profile, verify=verify, details=details,
-                      strict=strict)
+                      strict=strict, supports=_supports_identity(member_supports))
     jobs = []
     for target, stem in zip(targets, stems):
         output = out / f"{stem}{extension}"
@@ -221,7 +308,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
                               key=batch.key_of(target=batch.file_identity(target), **parameters),
                               target=str(Path(target).resolve()), output=str(output), contours=str(contours or ""),
                               check=str(check or ""), layer_thickness=layer_thickness, profile=profile,
-                              details=details, strict=strict))
+                              details=details, strict=strict, supports=member_supports))
     with batch.engine(workers, scheduler, setup=load) as engine:
         targets_out = _run_jobs(engine, jobs, _make_member, encoding, send_encoding, resume, progress, step, steps)
         engine.finish(_free_cached_memory)
@@ -318,19 +405,24 @@ def _make_member(job, encoding):
         t0, c0 = time.perf_counter(), time.process_time()
         _load_mesh(ms, job.target)
         # z_start is left at the filter's default: the mesh's lowest vertex.
+        supports = _support_parameters(job.supports)
         r = ms.apply_filter("make_print_job", encoding_file=encoding, layer_thickness=job.layer_thickness,
-                            contour_file=job.contours, output_path=job.output, strict=job.strict, **job.profile)
+                            contour_file=job.contours, output_path=job.output, strict=job.strict, **supports,
+                            **job.profile)
         entry = {"layers": r["layers"], "points": r["points"], "resliced_layers": r["resliced_layers"],
                  "seconds": time.perf_counter() - t0, "output": job.output,
                  "method": "reuse" if r["reused"] else "direct"}
+        if job.supports:
+            entry.update({k: r[k] for k in SUPPORT_KEYS}, support_seconds=r["support_seconds"])
         if encoding and not r["reused"]:
             entry["direct_reason"] = NOT_OF_THE_FAMILY
         if job.details:
             entry.update(slicing_seconds=r["slicing_seconds"], masks_seconds=r["masks_seconds"],
                          cpu_seconds=time.process_time() - c0)
         if job.check:
+            # The same supports (the same points), so that only the layers' making differs.
             ms.apply_filter("make_print_job", encoding_file="", layer_thickness=job.layer_thickness,
-                            contour_file="", output_path=job.check, **job.profile)
+                            contour_file="", output_path=job.check, **supports, **job.profile)
             c = ms.apply_filter("compare_mask_stacks", stack_a=job.output, stack_b=job.check, report_file="")
             entry.update(min_similarity=c["min_similarity"], max_grey_difference=c["max_grey_difference"])
     return entry
@@ -346,7 +438,7 @@ def _free_cached_memory():
 
 def plates(source, targets, layer_thickness, out, profile=None, progress=None, direct=False, verify=False,
            spacing_mm=2.0, placements=None, extension=None, workers=0, scheduler=None, resume=False,
-           strict=False):
+           strict=False, supports=False):
     """The lab's job: the targets arranged on build plates of the printer, one print file per
     plate, out/plate_<k><extension> (".sl1", ".sl1s", ".goo", or "" for folders of PNG images;
     None: the printer's own, printer_extension(profile's printer)), its top view
@@ -363,6 +455,11 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
     scheduler, resume and strict as for family(). verify=True: also makes each plate by direct
     slicing into out/direct/, under the plate's file name, and compares (min_similarity 1 and
     max_grey_difference 0 mean identical); not counted in a plate's seconds.
+    supports=True: every member on supports, as for family() (the source's points generated once
+    and transferred, or with direct=True generated on every member); each plate job makes its
+    members' supports before placing them (placements then keep the supports' footprints apart),
+    and each member of a plate's entry says "support_points", "kept", "moved", "added",
+    "dropped"; the plate's entry "support_seconds".
     Returns {"source", "members", "seconds", "arrange_seconds", "engine", "failed", "plates":
     [{"output", "layout", "members", "area_used", "layers", "points", "seconds", "worker"[,
     "min_similarity", "max_grey_difference"][, "resumed"]} or {"output", "layout", "members",
@@ -384,16 +481,22 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
         (out / "direct").mkdir(exist_ok=True)
     epoch = batch.batch_epoch()
     encoding = "" if direct else _encode_source(source, out, layer_thickness, epoch, resume)
+    member_supports = _job_supports(supports, direct, out, source, layer_thickness, epoch, resume)
     start = time.perf_counter()
 
     summary = out / "plates.json"
     placements = str(Path(placements).resolve()) if placements else ""
+    # With supports, the arrangement makes them on the plates' planes for the members' footprints:
+    # by reuse the encoding's (from the source's lowest vertex), directly the lowest of all members.
+    z_start = _lowest_vertex(source) if member_supports and encoding else LOWEST_VERTEX
     arrange = ArrangeJob(name=summary.name, out=str(out), outputs=[str(summary)], epoch=epoch,
                          base={"members": len(targets)}, targets=list(by_name.values()), placements=placements,
                          spacing_mm=spacing_mm, profile=profile, output=str(out / f"plate{extension}"),
+                         layer_thickness=layer_thickness, z_start=z_start, supports=member_supports,
                          key=batch.key_of(targets=[batch.file_identity(t) for t in targets], spacing_mm=spacing_mm,
                                           placements=batch.file_identity(placements) if placements else None,
-                                          profile=profile, extension=extension))
+                                          profile=profile, extension=extension, layer_thickness=layer_thickness,
+                                          supports=_supports_identity(member_supports)))
     with batch.engine(workers, scheduler, setup=load) as engine:
         # Arranged on the engine, where the plates are made: the process that arranges keeps the
         # members it loaded, and its plates' tasks use them instead of loading them again.
@@ -410,7 +513,7 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
 
         parameters = dict(placements=batch.file_identity(summary), encoding=batch.file_identity(encoding)
                           if encoding else None, layer_thickness=layer_thickness, profile=profile, verify=verify,
-                          strict=strict)
+                          strict=strict, supports=_supports_identity(member_supports))
         jobs = []
         for k, plate in enumerate(layout["plates"], 1):
             output = plate["output"]
@@ -426,7 +529,8 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
                                  paths=[by_name[m] for m in members], layer_thickness=layer_thickness,
                                  z_start=arranged["z_start"], profile=profile, strict=strict,
                                  plate_output=arrange.output,
-                                 check_output=str(out / "direct" / f"plate{extension}") if verify else ""))
+                                 check_output=str(out / "direct" / f"plate{extension}") if verify else "",
+                                 supports=member_supports))
         plates_out = _run_jobs(engine, jobs, _make_plate, encoding, False, resume, progress, 1, steps)
         engine.finish(_free_cached_memory)
     return {"source": str(source), "members": arranged["members"], "seconds": time.perf_counter() - start,
@@ -448,7 +552,9 @@ def _arrange(job, _shared):
             ids[t] = _load_mesh(ms, t)
             lowest = min(lowest, ms.current_mesh().bounding_box().min()[2])
         r = ms.apply_filter("arrange_on_plates", spacing_mm=job.spacing_mm, placements_file=job.placements,
-                            placements_output=job.outputs[0], output_path=job.output, **job.profile)
+                            placements_output=job.outputs[0], output_path=job.output,
+                            layer_thickness=job.layer_thickness, z_start=job.z_start,
+                            **_support_parameters(job.supports), **job.profile)
     _arranged = {"ms": ms, "ids": ids, "identity": {t: batch.file_identity(t) for t in ids}}
     return {"members": r["members"], "arrange_seconds": r["arrange_seconds"], "z_start": lowest}
 
@@ -461,10 +567,13 @@ NOT_OF_THE_FAMILY = ("its faces are not those of the source's mesh (another conn
 
 
 def _plate_member(member, encoding, result):
-    """A plate member's summary entry: its name and method, and why when sliced for want of reuse."""
+    """A plate member's summary entry: its name and method, and why when sliced for want of reuse;
+    its support figures when it has supports."""
+    name = member["name"]
+    member = dict(member, **{k: result[f"{k}_{name}"] for k in SUPPORT_KEYS if f"{k}_{name}" in result})
     if not encoding:
         return dict(member, method="direct")
-    if result.get(f"sliced_directly_{member['name']}"):
+    if result.get(f"sliced_directly_{name}"):
         return dict(member, method="direct", direct_reason=NOT_OF_THE_FAMILY)
     return dict(member, method="reuse")
 
@@ -482,11 +591,14 @@ def _make_plate(job, encoding):
             for path in job.paths:
                 _load_mesh(ms, path)
         common = dict(layer_thickness=job.layer_thickness, z_start=job.z_start, placements_file=job.summary,
-                      plate=job.plate, placements_output="", visible_only=True, strict=job.strict, **job.profile)
+                      plate=job.plate, placements_output="", visible_only=True, strict=job.strict,
+                      **_support_parameters(job.supports), **job.profile)
         r = ms.apply_filter("make_plate_job", encoding_file=encoding, output_path=job.plate_output, **common)
         members = [_plate_member(m, encoding, r) for m in job.base["members"]]
         entry = {"members": members, "layers": r["layers"], "points": r["points"],
                  "seconds": time.perf_counter() - t0}
+        if job.supports:
+            entry["support_seconds"] = r["support_seconds"]
         if job.check_output:
             ms.apply_filter("make_plate_job", encoding_file="", output_path=job.check_output, **common)
             c = ms.apply_filter("compare_mask_stacks", stack_a=job.outputs[0], stack_b=job.outputs[1],

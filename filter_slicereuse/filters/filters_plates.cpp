@@ -145,6 +145,25 @@ Mesh with_supports(const Mesh& member, const Mesh& supports) {
   return both;
 }
 
+// The members' supports (job_member_supports, on o's planes) and what each member takes on the
+// plate: itself, or itself with its supports.
+struct SupportedMembers {
+  std::vector<MemberSupports> supports;
+  std::vector<Mesh> with_supports;
+  std::vector<const Mesh*> footprints;
+};
+
+SupportedMembers support_members(const PlatePlan& plan, const JobSupports& s, PlateJobOptions& o,
+                                 const Progress& progress) {
+  SupportedMembers out;
+  out.supports = job_member_supports(plan.members, s, o, progress);
+  for (size_t m = 0; m < out.supports.size(); ++m)
+    out.with_supports.push_back(with_supports(*plan.members[m], out.supports[m].tree.mesh));
+  out.footprints = plan.members;
+  for (size_t m = 0; m < out.with_supports.size(); ++m) out.footprints[m] = &out.with_supports[m];
+  return out;
+}
+
 // Plate k's members moved to their placements, and their names.
 std::vector<Mesh> placed_members(const PlatePlan& plan, size_t k, std::vector<std::string>* names) {
   std::vector<Mesh> placed;
@@ -184,13 +203,9 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
     jo.edge_ends = &entry->edge_ends;
   }
   // Supports first: a member takes its supports' room on the plate.
-  const std::vector<MemberSupports> supports =
-      job_member_supports(members, p.supports, jo, sub_progress(progress, 0.05, 0.1));
-  std::vector<Mesh> supported;
-  for (size_t m = 0; m < supports.size(); ++m) supported.push_back(with_supports(*members[m], supports[m].tree.mesh));
-  std::vector<const Mesh*> footprints = members;
-  for (size_t m = 0; m < supported.size(); ++m) footprints[m] = &supported[m];
-  arrange_members(plan, p, size_t(p.plate), footprints, sub_progress(progress, 0.1, 0.15));
+  const SupportedMembers supported = support_members(plan, p.supports, jo, sub_progress(progress, 0.05, 0.1));
+  const std::vector<MemberSupports>& supports = supported.supports;
+  arrange_members(plan, p, size_t(p.plate), supported.footprints, sub_progress(progress, 0.1, 0.15));
   const Arrangement& arrangement = plan.arrangement;
   const double arrange_seconds = plan.arrange_seconds;
   const size_t plates = arrangement.members.size();
@@ -276,6 +291,9 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
 
 struct ArrangeParams {
   bool visible_only;
+  double layer_thickness;
+  double z_start;
+  JobSupports supports;
   double spacing_mm;
   double rotation_step_deg;
   std::string placements_file;
@@ -287,6 +305,12 @@ struct ArrangeParams {
 ParamList<ArrangeParams> arrange_params() {
   ParamList<ArrangeParams> l;
   add_visible_only(l);
+  l.number(&ArrangeParams::layer_thickness, "layer_thickness", "Layer thickness (mm)", 0.1, Range::above(0, "mm"),
+           "With supports: the layers the plate job will slice, which the supports are built for, in mm.")
+      .number(&ArrangeParams::z_start, "z_start", "Start height (mm)", kLowestVertexZStart, Range::any(),
+              "With supports: the plate job's first layer's bottom, in mm (the source's lowest vertex when it "
+              "transfers an encoding); at or below -1e29 (the default): the lowest vertex of all members.")
+      .include(&ArrangeParams::supports, job_support_params());
   add_arrangement(l);
   add_placements_output(l, "choose the placements file to write (.json)",
                         "The plates' placements, members and area used (JSON), for Make Plate Job's placements_file.");
@@ -304,7 +328,12 @@ Result run_arrange(const ArrangeParams& p, Host& host) {
   const PrinterProfile profile = p.printer.profile();
   log_printer(host, "Arrange on Plates", p.printer);
   PlatePlan plan = load_members(p, profile, host);
-  arrange_members(plan, p, 0, plan.members, host.progress());
+  const Progress progress = host.progress();
+  PlateJobOptions o;
+  o.slicing = slice_options(p.layer_thickness, p.z_start);
+  o.names = plan.names;
+  const SupportedMembers supported = support_members(plan, p.supports, o, sub_progress(progress, 0, 0.5));
+  arrange_members(plan, p, 0, supported.footprints, sub_progress(progress, 0.5, 1));
   const size_t plates = plan.arrangement.members.size();
   std::vector<std::string> outputs;
   for (size_t k = 0; k < plates; ++k) {
@@ -339,7 +368,10 @@ FilterSpec arrange_plates_filter() {
       "edges, turned about z where that packs more; members that do not fit go to the next plate.</p>"
       "<p>Writes the placements file, to look at or edit and to give to <i>Make Plate Job</i> (every plate, "
       "or one plate per run on many machines), and a top-view picture of each plate with each member's "
-      "outline and name beside the print file it names (<i>_layout.png</i>).</p>") +
+      "outline and name beside the print file it names (<i>_layout.png</i>).</p>"
+      "<p>With <i>supports</i>, each member's footprint includes its supports, made as <i>Make Plate Job</i> "
+      "makes them with the same parameters, so that the plate job placing the members by this file keeps "
+      "their supports apart too.</p>") +
       kReference;
   return typed_filter({FilterId::ArrangePlates, "Arrange on Plates", "arrange_on_plates", description, Arity::None,
                        kLayerClass, false},
