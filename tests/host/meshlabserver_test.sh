@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Host tests: runs Debian's meshlabserver 2020.09 (through scripts/meshlabserver) with the
 # example filter scripts on a generated family and checks what it wrote.
-#   meshlabserver_test.sh CASE     CASE: slice | transfer | masks | print_job | errors | contours | crossparam
+#   meshlabserver_test.sh CASE     CASE: slice | transfer | masks | print_job | errors | contours | crossparam |
+#                                        supports
 # Environment (set by tests/host/CMakeLists.txt): MESHLABSERVER, SLICEREUSE_BUILD, GEN_FAMILY,
 # HOST_CHECK, EXAMPLES, WORK (a scratch folder, emptied first).
 set -euo pipefail
@@ -335,6 +336,35 @@ crossparam)
   must_fail log_genus.txt "cross-parameterization: the source has genus 0, the target 1" \
     -i "$m0" -i handle/member_001.ply -s "$EXAMPLES/crossparam.mlx"
   no_outputs
+  ;;
+supports)
+  # The three support examples on a sphere family (raised, its lower half overhangs): points
+  # generated on member 0, transferred to member 1 (kept + moved + dropped = the source's),
+  # its supports built from its file; member 1's print job on the transferred supports stands
+  # 50 layers (5 mm at 0.1 mm) higher. A points file for another mesh is refused in words.
+  "$GEN_FAMILY" --shape sphere --faces 4000 --members 2 --height 6 --seed 7 --out sph >/dev/null
+  ok log_gen.txt -i sph/member_000.ply -s "$EXAMPLES/generate_supports.mlx"
+  points=$(result log_gen.txt points)
+  above "$points" 0 || fail "no support points: $(grep slicereuse-result log_gen.txt)"
+  [ -f out/source.srp ] || fail "no out/source.srp"
+  ok log_tr.txt -i sph/member_001.ply -s "$EXAMPLES/transfer_supports.mlx"
+  [ "$(result log_tr.txt transferred)" = "$points" ] || fail "transfer: $(grep slicereuse-result log_tr.txt)"
+  [ $(( $(result log_tr.txt kept) + $(result log_tr.txt moved) + $(result log_tr.txt dropped) )) = "$points" ] ||
+    fail "kept + moved + dropped is not the source's: $(grep slicereuse-result log_tr.txt)"
+  ok log_build.txt -i sph/member_001.ply -s "$EXAMPLES/build_supports.mlx"
+  [ "$(result log_build.txt layers_below)" = 50 ] || fail "build: $(grep slicereuse-result log_build.txt)"
+  [ "$(result log_build.txt points)" = "$(result log_tr.txt points)" ] || fail "build: not the member's points"
+  edit print_job.mlx job.mlx 's#name="encoding_file" value="out/slice.enc"#name="encoding_file" value=""#' \
+    's#name="supports" value="0"#name="supports" value="2"#' \
+    's#name="support_points_file" value=""#name="support_points_file" value="out/source.srp"#' \
+    's#out/print_job\.sl1#out/supported.sl1#'
+  ok log_job.txt -i sph/member_001.ply -s job.mlx
+  [ "$(result log_job.txt support_points)" = "$(result log_tr.txt points)" ] || fail "job: $(grep slicereuse-result log_job.txt)"
+  [ -f out/supported.sl1 ] || fail "no out/supported.sl1"
+  must_fail log_other.txt "the support points are for a mesh of" -i "$m0" -s "$EXAMPLES/build_supports.mlx"
+  edit transfer_supports.mlx other.mlx 's#out/member\.srp#out/other.srp#'
+  run log_other_tr.txt -i "$m0" -s other.mlx || true
+  [ ! -e out/other.srp ] || fail "a points file was written for another mesh"
   ;;
 *) fail "unknown case $case_name" ;;
 esac
