@@ -83,10 +83,10 @@ ParamList<JobLayers> job_layer_params(const char* encoding_tooltip);
 PlateJobOptions plate_job_options(const JobLayers& p);
 
 // The supports' parameters (filters_job_supports.cpp), declared once for the support filters and
-// the jobs. How support points are placed: PrusaSlicer's self-supporting distance, density (%)
-// and minimal distance; the options for a part raised (elevation > 0) or not.
+// the jobs. How support points are placed: PrusaSlicer's critical angle, density (%) and minimal
+// distance; the options for a part raised (elevation > 0) or not.
 struct SupportPointParams {
-  double self_supporting_mm;
+  double critical_angle_deg;
   double density_percent;
   double minimal_distance_mm;
 };

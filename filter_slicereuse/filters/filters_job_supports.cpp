@@ -13,23 +13,24 @@ namespace slicereuse::plugin {
 ParamList<SupportPointParams> support_point_params() {
   const SupportPointOptions d;
   ParamList<SupportPointParams> l;
-  l.number(&SupportPointParams::self_supporting_mm, "self_supporting", "Self-supporting distance (mm)",
-           d.self_supporting_mm, Range::at_least(0, "mm"),
-           "How far a layer may reach beyond the layer below without support, in mm; farther is an overhang that "
+  l.number(&SupportPointParams::critical_angle_deg, "critical_angle", "Critical angle (degrees)",
+           d.critical_angle_deg, Range::between(0, 90, "degrees"),
+           "PrusaSlicer's support_critical_angle: a surface flatter than this, from the horizontal, overhangs and "
            "gets support points.")
       .number(&SupportPointParams::density_percent, "density", "Support points density (%)",
               100 * d.density_relative, Range::above(0, "%"),
-              "PrusaSlicer's support_points_density_relative: 100 (the default) places a point within the minimal "
-              "distance of every overhang; 200 places them closer (by the square root).")
+              "PrusaSlicer's support_points_density_relative: at 100 (the default) one point holds 10 mm2 of "
+              "overhanging surface; 200 places twice as many.")
       .number(&SupportPointParams::minimal_distance_mm, "minimal_distance", "Minimal points distance (mm)",
               d.minimal_distance_mm, Range::above(0, "mm"),
-              "PrusaSlicer's support_points_minimal_distance: no two points of a layer closer than this, in mm.");
+              "PrusaSlicer's support_points_minimal_distance, in mm: on a member, a point added this near a dropped "
+              "one counts as that point moved.");
   return l;
 }
 
 SupportPointOptions support_point_options(const SupportPointParams& p, double elevation_mm) {
   SupportPointOptions o;
-  o.self_supporting_mm = p.self_supporting_mm;
+  o.critical_angle_deg = p.critical_angle_deg;
   o.density_relative = p.density_percent / 100;
   o.minimal_distance_mm = p.minimal_distance_mm;
   o.raised = elevation_mm > 0;

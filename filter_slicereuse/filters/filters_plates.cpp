@@ -233,9 +233,11 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
     const std::string layout = plate_layout_file_name(outputs.back());
     const double from = 0.15 + 0.85 * double(k) / double(plates), to = 0.15 + 0.85 * double(k + 1) / double(plates);
     jo.names = plate_names;
-    jo.supports.clear();
+    std::vector<Mesh> placed_supports;
     for (size_t m : supports.empty() ? std::vector<size_t>() : arrangement.members[k])
-      jo.supports.push_back(place_mesh(supports[m].tree.mesh, arrangement.placement[m]));
+      placed_supports.push_back(place_mesh(supports[m].tree.mesh, arrangement.placement[m]));
+    jo.supports.clear();
+    for (const Mesh& s : placed_supports) jo.supports.push_back(&s);
     const PlateJobStats st = export_plate(placed, jo, profile, outputs.back(), sub_progress(progress, from, to));
     write_plate_layout(layout, placed, plate_names, plan.platform);
     result[format("output_%zu", first + k)] = outputs.back();

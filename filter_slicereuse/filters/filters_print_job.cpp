@@ -57,7 +57,7 @@ Result run_print_job(const PrintJobParams& p, Host& host) {
   const double from = entry ? 0.2 : 0, supported = p.supports.mode == JobSupportsMode::None ? from : from + 0.2;
   const std::vector<MemberSupports> supports =
       job_member_supports({&member[0]}, p.supports, o, sub_progress(progress, from, supported));
-  if (!supports.empty()) o.supports = {supports[0].tree.mesh};
+  if (!supports.empty()) o.supports = {&supports[0].tree.mesh};
   // The contour file appears only with the masks: staged until they are written.
   StagedOutputs outputs;
   if (!p.contour_file.empty())

@@ -22,11 +22,11 @@ using test::make_sphere;
 
 class SupportFilters : public test::TempFolderTest {
  protected:
-  // Mesh 0: a sphere (raised, its first layer is an island; its lower half overhangs), mesh 1:
+  // Mesh 0: a sphere of radius 5 mm (raised, its first layer is an island; its lower half overhangs), mesh 1:
   // the same faces stretched in x, mesh 2: the sphere's faces renumbered.
   void SetUp() override {
     test::TempFolderTest::SetUp();
-    host.meshes.push_back(make_sphere(1, 24, 32));
+    host.meshes.push_back(make_sphere(5, 24, 32));
     Mesh moved = host.meshes[0];
     for (size_t i = 0; i < moved.V.size(); i += 3) moved.V[i] = 1.1 * moved.V[i] + 0.05 * moved.V[i + 2];
     host.meshes.push_back(moved);
@@ -66,7 +66,7 @@ TEST_F(SupportFilters, PointsAreGeneratedTransferredAndBuiltIntoSupports) {
             (std::set<std::string>{"points", "pillars", "on_part", "layers_below", "ground_z", "seconds"}));
   EXPECT_EQ(count(from_file, "points"), int64_t(member.size()));
   EXPECT_EQ(count(from_file, "layers_below"), 50);  // 5 mm in layers of 0.1 mm
-  EXPECT_NEAR(std::get<double>(from_file.at("ground_z")), -1 - 5.0, 1e-9);
+  EXPECT_NEAR(std::get<double>(from_file.at("ground_z")), -5 - 5.0, 1e-9);
   const Mesh supports = host.mesh_layers.at("mesh1 supports");
   EXPECT_GT(supports.faces(), 0u);
   Mesh layer;
@@ -76,7 +76,11 @@ TEST_F(SupportFilters, PointsAreGeneratedTransferredAndBuiltIntoSupports) {
   const Result from_layer = build.run(defaults(build, {}, {{"points_layer", 3}}), host);
   EXPECT_EQ(count(from_layer, "points"), int64_t(member.size()));
   EXPECT_EQ(count(from_layer, "pillars"), count(from_file, "pillars"));
-  EXPECT_EQ(host.mesh_layers.at("mesh1 supports").V, supports.V);
+  // The layer's positions located back on the surface: the same points, to rounding.
+  const Mesh again = host.mesh_layers.at("mesh1 supports");
+  ASSERT_EQ(again.V.size(), supports.V.size());
+  EXPECT_EQ(again.F, supports.F);
+  for (size_t i = 0; i < again.V.size(); ++i) EXPECT_NEAR(again.V[i], supports.V[i], 1e-9) << i;
 }
 
 // The job (supports 2: transfer) transfers the source's points to the member, builds its supports and stands it on them:
