@@ -142,6 +142,10 @@ def test_a_points_file_for_another_mesh_is_refused_and_nothing_is_written(pymesh
     ms.load_new_mesh(str(other))
     raises_filter_error(pymeshlab, ms, "build_supports", "the support points are for a mesh of",
                         support_points_file=str(tmp_path / "source.srp"))
-    raises_filter_error(pymeshlab, ms, "make_print_job", "the current mesh's supports: ", supports=2,
+    raises_filter_error(pymeshlab, ms, "transfer_support_points", "the support points are for a mesh of",
+                        support_points_file=str(tmp_path / "source.srp"),
+                        member_points_file=str(tmp_path / "member.srp"))
+    raises_filter_error(pymeshlab, ms, "make_print_job",
+                        "the current mesh's supports: the support points are for a mesh of", supports=2,
                         support_points_file=str(tmp_path / "source.srp"), output_path=str(tmp_path / "m.sl1s"))
     assert sorted(p.name for p in tmp_path.iterdir()) == ["source.srp"]
