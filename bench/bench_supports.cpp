@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
   const SlicedBase sliced = sliced_base(args);
   const SupportPointOptions points_options;
   const SupportTreeOptions tree_options;
-  const double ground = support_ground_z(sliced.source.z_start, args.thickness, tree_options.object_elevation_mm);
+  const double ground = support_ground_z(sliced.source.z_start, args.thickness, tree_options);
   SupportPoints source_points;
   const double generate = median_seconds(args.runs, [&] {
     source_points = generate_support_points(sliced.base, sliced.source, points_options);

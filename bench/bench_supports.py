@@ -60,6 +60,7 @@ def main():
     a = ap.parse_args()
     if shutil.which("prusa-slicer") is None:
         raise SystemExit("prusa-slicer is not installed (scripts/setup installs it)")
+    pymeshlab = sr.load()
     shutil.rmtree(a.out, ignore_errors=True)
     a.out.mkdir(parents=True)
     subprocess.run([str(ROOT / "build/2020/tools/gen_family"), "--shape", a.shape, "--faces", str(a.faces),
@@ -78,9 +79,9 @@ def main():
     ps = {}
     for mesh in members:
         stl = Path(mesh).with_suffix(".stl")
-        with sr._meshset() as ms:
-            sr._load_mesh(ms, mesh)
-            ms.save_current_mesh(str(stl))
+        ms = pymeshlab.MeshSet()
+        ms.load_new_mesh(mesh)
+        ms.save_current_mesh(str(stl))
         row = {}
         for kind in ("supported", "unsupported"):
             out = a.out / f"ps_{kind}_{stl.stem}.sl1s"
@@ -90,10 +91,10 @@ def main():
         ps[mesh] = row
 
     # Ours: the source's points alone (the filter, as family.py runs it), then the batches.
-    with sr._meshset() as ms:
-        sr._load_mesh(ms, source)
-        generate = median_seconds(a.runs, lambda: ms.apply_filter(
-            "generate_support_points", layer_thickness=a.thickness, support_points_file=str(a.out / "src.srp")))
+    ms = pymeshlab.MeshSet()
+    ms.load_new_mesh(source)
+    generate = median_seconds(a.runs, lambda: ms.apply_filter(
+        "generate_support_points", layer_thickness=a.thickness, support_points_file=str(a.out / "src.srp")))
     profile = {"printer": PRESET}
     runs = {"reuse": [], "direct": []}
     for _ in range(a.runs):

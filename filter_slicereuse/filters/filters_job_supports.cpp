@@ -98,7 +98,7 @@ std::vector<MemberSupports> job_member_supports(const std::vector<const Mesh*>& 
     for (const Mesh* m : members) z_start = std::min(z_start, z_range(*m).min);
     o.slicing.z_start = z_start;
   }
-  o.layers_below = support_layers_below(s.tree.object_elevation_mm, thickness);
+  o.layers_below = support_layers_below(s.tree, thickness);
   MemberSupportOptions mo;
   mo.points = support_point_options(s.points, s.tree.object_elevation_mm);
   mo.tree = s.tree;

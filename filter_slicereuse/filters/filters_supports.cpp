@@ -177,9 +177,9 @@ Result run_build(const BuildParams& p, Host& host) {
   }
   const SliceOptions slicing = slice_options(p.layer_thickness, p.z_start);
   const double z_start = std::isnan(slicing.z_start) ? z_range(part).min : slicing.z_start;
-  const size_t below = support_layers_below(p.tree.object_elevation_mm, p.layer_thickness);
+  const size_t below = support_layers_below(p.tree, p.layer_thickness);
   const SupportTree tree = build_support_tree(
-      part, points, support_ground_z(z_start, p.layer_thickness, p.tree.object_elevation_mm), p.tree);
+      part, points, support_ground_z(z_start, p.layer_thickness, p.tree), p.tree);
   host.add_mesh_layer(host.current_mesh_name() + " supports", tree.mesh);
   const double seconds = seconds_since(start);
   host.log(format("Build Supports: %zu points, %zu pillars to the %s, %zu ending on the part, ground at z %g mm "

@@ -341,7 +341,7 @@ supports)
   # The three support examples on a sphere family (raised, its lower half overhangs): points
   # generated on member 0, transferred to member 1 (kept + moved + dropped = the source's),
   # its supports built from its file; member 1's print job on the transferred supports stands
-  # 50 layers (5 mm at 0.1 mm) higher. A points file for another mesh is refused in words.
+  # 60 layers (5 mm and the pad's 1 mm at 0.1 mm) higher. A points file for another mesh is refused in words.
   "$GEN_FAMILY" --shape sphere --faces 4000 --members 2 --height 6 --seed 7 --out sph >/dev/null
   ok log_gen.txt -i sph/member_000.ply -s "$EXAMPLES/generate_supports.mlx"
   points=$(result log_gen.txt points)
@@ -352,7 +352,7 @@ supports)
   [ $(( $(result log_tr.txt kept) + $(result log_tr.txt moved) + $(result log_tr.txt dropped) )) = "$points" ] ||
     fail "kept + moved + dropped is not the source's: $(grep slicereuse-result log_tr.txt)"
   ok log_build.txt -i sph/member_001.ply -s "$EXAMPLES/build_supports.mlx"
-  [ "$(result log_build.txt layers_below)" = 50 ] || fail "build: $(grep slicereuse-result log_build.txt)"
+  [ "$(result log_build.txt layers_below)" = 60 ] || fail "build: $(grep slicereuse-result log_build.txt)"
   [ "$(result log_build.txt points)" = "$(result log_tr.txt points)" ] || fail "build: not the member's points"
   edit print_job.mlx job.mlx 's#name="encoding_file" value="out/slice.enc"#name="encoding_file" value=""#' \
     's#name="supports" value="0"#name="supports" value="2"#' \

@@ -65,8 +65,8 @@ TEST_F(SupportFilters, PointsAreGeneratedTransferredAndBuiltIntoSupports) {
   EXPECT_EQ(keys_of(from_file),
             (std::set<std::string>{"points", "pillars", "on_part", "layers_below", "ground_z", "seconds"}));
   EXPECT_EQ(count(from_file, "points"), int64_t(member.size()));
-  EXPECT_EQ(count(from_file, "layers_below"), 50);  // 5 mm in layers of 0.1 mm
-  EXPECT_NEAR(std::get<double>(from_file.at("ground_z")), -5 - 5.0, 1e-9);
+  EXPECT_EQ(count(from_file, "layers_below"), 60);  // 5 mm and the pad's 1 mm in layers of 0.1 mm
+  EXPECT_NEAR(std::get<double>(from_file.at("ground_z")), -5 - 6.0, 1e-9);
   const Mesh supports = host.mesh_layers.at("mesh1 supports");
   EXPECT_GT(supports.faces(), 0u);
   Mesh layer;
@@ -84,7 +84,7 @@ TEST_F(SupportFilters, PointsAreGeneratedTransferredAndBuiltIntoSupports) {
 }
 
 // The job (supports 2: transfer) transfers the source's points to the member, builds its supports and stands it on them:
-// 50 layers of supports below the member's own.
+// 60 layers of supports and pad below the member's own.
 TEST_F(SupportFilters, MakePrintJobTakesTheSourcesPointsAndPrintsTheMemberOnItsSupports) {
   const FilterSpec& generate = spec_named("generate_support_points");
   generate.run(defaults(generate, {{"support_points_file", path("source.srp")}}), host);
@@ -95,7 +95,7 @@ TEST_F(SupportFilters, MakePrintJobTakesTheSourcesPointsAndPrintsTheMemberOnItsS
                            host);
   SliceOptions options;
   options.thickness = 0.1;
-  EXPECT_EQ(count(r, "layers"), int64_t(slice_layers(host.meshes[1], options).layers()) + 50);
+  EXPECT_EQ(count(r, "layers"), int64_t(slice_layers(host.meshes[1], options).layers()) + 60);
   EXPECT_GT(count(r, "support_points"), 0);
   EXPECT_EQ(count(r, "kept") + count(r, "moved") + count(r, "added"), count(r, "support_points"));
   EXPECT_TRUE(std::filesystem::exists(path("m.sl1")));

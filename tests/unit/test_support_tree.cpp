@@ -195,9 +195,10 @@ TEST(SupportTree, OnePointOverFlatGroundIsHeadPillarBaseAndPad) {
   check_sections(part, tree);
 }
 
-TEST(SupportTree, PadIsTheHullOfTheBasesGrownByTheBrim) {
-  // Three pillars on a line (the hull's middle corner drops out): the pad's section just above
-  // the ground is a 16-gon of radius base + brim - 0.025 mm (walls at 45 degrees) stretched 4 mm.
+TEST(SupportTree, PadIsTheHullOfTheBasesSlopingInToThePlate) {
+  // Three pillars on a line (the hull's middle corner drops out): the pad's top is the hull of the
+  // bases (no brim, raised); its walls slope in at 45 degrees over its 1 mm, so its section just
+  // above the ground is a 16-gon of radius base - 1 + 0.025 mm stretched 4 mm.
   const Mesh part = test::make_box(0, 0, 0, 6, 4, 2);
   SupportPoints pts = points_on(part, {face_near(part, 1, 2, 0), face_near(part, 1, 2, 0), face_near(part, 1, 2, 0)});
   for (size_t i = 0; i < 3; ++i) {
@@ -209,7 +210,7 @@ TEST(SupportTree, PadIsTheHullOfTheBasesGrownByTheBrim) {
   EXPECT_EQ(tree.pillars, 3u);
   expect_closed_outward_shells(tree, 10);
   const Slices s = slice_planes(tree.mesh, {-6 + kLayer / 2}, {}, false);
-  const double r = 1.5 + 1.6 - kLayer / 2;
+  const double r = 1.5 - 1 + kLayer / 2;
   // Within the rounding of the section's points to 1 nm along its 27 mm outline.
   EXPECT_NEAR(region_area_mm2(region_of(s, 0)), 8 * r * r * std::sin(M_PI / 8) + 4 * 2 * r, 3e-5);
   check_sections(part, tree);
@@ -277,7 +278,7 @@ TEST(SupportTree, SphereAndHandleEnterThePartOnlyAtHeads) {
     const Mesh part = test::make_family_base(shape(name));
     const SupportPoints pts = points_on(part, downward_faces(part, 1.5));
     ASSERT_GT(pts.size(), 10u);
-    const double ground_z = support_ground_z(0, kLayer, 5);
+    const double ground_z = support_ground_z(0, kLayer, SupportTreeOptions{});
     const SupportTree tree = build_support_tree(part, pts, ground_z, SupportTreeOptions{});
     EXPECT_EQ(tree.pillars + tree.on_part, pts.size());
     if (std::string(name) == "handle") EXPECT_GT(tree.on_part, 0u);
@@ -291,16 +292,25 @@ TEST(SupportTree, SphereAndHandleEnterThePartOnlyAtHeads) {
   }
 }
 
+// The part stands elevation above the pad's top (PrusaSlicer's support_object_elevation).
 TEST(SupportTree, LayersBelow) {
-  EXPECT_EQ(support_layers_below(5, 0.05), 100u);
-  EXPECT_EQ(support_layers_below(0, 0.05), 0u);
-  EXPECT_EQ(support_layers_below(5.02, 0.05), 100u);
-  EXPECT_EQ(support_layers_below(5.03, 0.05), 101u);
-  EXPECT_DOUBLE_EQ(support_ground_z(1, 0.05, 5), -4);
-  EXPECT_ERROR(support_layers_below(-1, 0.05), "the object's elevation is -1 mm");
-  EXPECT_ERROR(support_layers_below(NAN, 0.05), "the object's elevation is nan mm");
-  EXPECT_ERROR(support_layers_below(5, 0), "the layer thickness is 0 mm");
-  EXPECT_ERROR(support_layers_below(1e9, 1e-3), "more than 10000000");
+  auto raised = [](double elevation, bool pad = false) {
+    SupportTreeOptions o;
+    o.object_elevation_mm = elevation;
+    o.pad_enable = pad;
+    return o;
+  };
+  EXPECT_EQ(support_layers_below(raised(5), 0.05), 100u);
+  EXPECT_EQ(support_layers_below(raised(5, true), 0.05), 120u);  // and the pad's 1 mm
+  EXPECT_EQ(support_layers_below(raised(0), 0.05), 0u);
+  EXPECT_EQ(support_layers_below(raised(5.02), 0.05), 100u);
+  EXPECT_EQ(support_layers_below(raised(5.03), 0.05), 101u);
+  EXPECT_DOUBLE_EQ(support_ground_z(1, 0.05, raised(5)), -4);
+  EXPECT_DOUBLE_EQ(support_ground_z(1, 0.05, raised(5, true)), -5);
+  EXPECT_ERROR(support_layers_below(raised(-1), 0.05), "the object's elevation is -1 mm");
+  EXPECT_ERROR(support_layers_below(raised(NAN), 0.05), "the object's elevation is nan mm");
+  EXPECT_ERROR(support_layers_below(raised(5), 0), "the layer thickness is 0 mm");
+  EXPECT_ERROR(support_layers_below(raised(1e9), 1e-3), "more than 10000000");
 }
 
 TEST(SupportTree, BadInputInWords) {
@@ -322,7 +332,7 @@ TEST(SupportTree, BadInputInWords) {
                "the support option head_width_mm is -1 mm; it must be a finite, positive number");
   SupportTreeOptions steep;
   steep.pad_wall_slope_deg = 10;
-  EXPECT_ERROR(build_support_tree(part, pts, -5, steep), "the pad would have no top");
+  EXPECT_ERROR(build_support_tree(part, pts, -5, steep), "the pad would have no bottom");
   SupportPoints nan_point = pts;
   nan_point.xyz[2] = NAN;
   EXPECT_ERROR(build_support_tree(part, nan_point, -5, {}), "support point 1 has a position or normal that is not a finite number");

@@ -215,7 +215,7 @@ TEST_F(SupportedPrintTest, WithoutSupportsTheCheckFindsIslands) {
   EXPECT_LT(standing.lit[0] * 50, widest);
   EXPECT_EQ(standing.islands, 0u);
   PlateJobOptions raised = on_plate;
-  raised.layers_below = support_layers_below(SupportTreeOptions().object_elevation_mm, kThickness);
+  raised.layers_below = support_layers_below(SupportTreeOptions(), kThickness);
   export_plate(placed, raised, sl1s(false), path("raised.sl1s"));
   const test::StackSupport c = test::check_stack_support(path("raised.sl1s"), sl1s(false));
   std::printf("sphere raised, unsupported: %zu islands (first on layer %zu)\n", c.islands, c.first_island_layer);

@@ -24,8 +24,8 @@ MemberSupports make_member_supports(const Mesh& part, const Slices& part_slicing
   s.points_seconds = seconds_since(t);
   report_progress(progress, 0.9, "building the support tree");
   t = std::chrono::steady_clock::now();
-  s.layers_below = support_layers_below(options.tree.object_elevation_mm, thickness);
-  s.tree = build_support_tree(part, s.points, support_ground_z(z_start, thickness, options.tree.object_elevation_mm),
+  s.layers_below = support_layers_below(options.tree, thickness);
+  s.tree = build_support_tree(part, s.points, support_ground_z(z_start, thickness, options.tree),
                               options.tree);
   s.tree_seconds = seconds_since(t);
   return s;

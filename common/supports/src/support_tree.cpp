@@ -46,7 +46,7 @@ void check_options(const SupportTreeOptions& o, double ground_z) {
   const double inset = o.pad_wall_thickness_mm / std::tan(o.pad_wall_slope_deg * M_PI / 180);
   if (inset >= o.base_diameter_mm / 2 + o.pad_brim_mm)
     throw Error(format("the pad's walls, %g mm high at %g degrees, slope in by %g mm, more than the base's radius "
-                       "and brim (%g mm): the pad would have no top",
+                       "and brim (%g mm): the pad would have no bottom",
                        o.pad_wall_thickness_mm, o.pad_wall_slope_deg, inset, o.base_diameter_mm / 2 + o.pad_brim_mm));
 }
 
@@ -116,19 +116,21 @@ SupportTree build_support_tree(const Mesh& part, const SupportPoints& points, do
   if (o.pad_enable && !on_floor.empty()) {
     const double r_pad = r_base + o.pad_brim_mm;
     const double inset = o.pad_wall_thickness_mm / std::tan(o.pad_wall_slope_deg * M_PI / 180);
-    append_pad(m, on_floor, r_pad, r_pad - inset, ground_z, floor);
+    append_pad(m, on_floor, r_pad - inset, r_pad, ground_z, floor);
   }
   return tree;
 }
 
-size_t support_layers_below(double elevation_mm, double thickness) {
+size_t support_layers_below(const SupportTreeOptions& o, double thickness) {
+  const double elevation_mm = o.object_elevation_mm;
   if (!(std::isfinite(thickness) && thickness > 0))
     throw Error(format("the layer thickness is %g mm; it must be a finite, positive number", thickness));
   if (!(std::isfinite(elevation_mm) && elevation_mm >= 0))
     throw Error(format("the object's elevation is %g mm; it must be a finite, non-negative number", elevation_mm));
-  const double layers = std::round(elevation_mm / thickness);
+  const double below = elevation_mm + (o.pad_enable ? o.pad_wall_thickness_mm : 0);
+  const double layers = std::round(below / thickness);
   if (layers > double(kMaxLayers))
-    throw Error(format("an elevation of %g mm is %.0f layers of %g mm, more than %zu", elevation_mm, layers, thickness,
+    throw Error(format("an elevation of %g mm is %.0f layers of %g mm, more than %zu", below, layers, thickness,
                        kMaxLayers));
   return size_t(layers);
 }

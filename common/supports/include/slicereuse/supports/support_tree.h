@@ -15,8 +15,9 @@
 //     head's width, the head itself ends in it.
 // Every cone and cylinder is a 16-gon (support_shapes.h), the pad a loft between two outlines;
 // each shell closed, its faces counter-clockwise seen from outside.
-// pad (pad_enable): under everything that reaches ground_z, the convex hull of the bases grown
-//   by pad_brim_mm, pad_wall_thickness_mm thick, its walls sloping at pad_wall_slope_deg.
+// pad (pad_enable): under everything that reaches ground_z, pad_wall_thickness_mm thick, its top
+//   the convex hull of the bases grown by pad_brim_mm, its walls sloping in towards the plate at
+//   pad_wall_slope_deg (its bottom smaller by thickness / tan(slope)), as PrusaSlicer's pad.
 // head_zones: where the structure may enter the part (each head, and each foot on the part), as
 // vertical cones: the only places the part's and the supports' sections may overlap.
 // No points: no structure (an empty mesh, ground_z set); no pillar reaching the ground: no pad.
@@ -44,7 +45,9 @@ struct SupportTreeOptions {  // PrusaSlicer 2.5's SL1S print profile (sla_print:
   bool pad_enable = true;
   double pad_wall_thickness_mm = 1;
   double pad_wall_slope_deg = 45;
-  double pad_brim_mm = 1.6;
+  // PrusaSlicer's pad_brim_size (1.6) is for a part sunk into its pad (zero elevation); raised,
+  // its pad ends at the bases.
+  double pad_brim_mm = 0;
   double max_height_mm = 150;
 };
 
@@ -66,17 +69,18 @@ struct SupportTree {
 SupportTree build_support_tree(const Mesh& part, const SupportPoints& points, double ground_z,
                                const SupportTreeOptions& options);
 
-// Where the structure stands for a part sliced from z_start in layers of thickness: elevation
-// rounded to whole layers below z_start (0 when the part stands on the plate), so the part's
-// layers keep their planes and the job gains round(elevation / thickness) layers below it.
+// Where the structure stands for a part sliced from z_start in layers of thickness: the part
+// object_elevation_mm above the pad's top (PrusaSlicer's support_object_elevation), so the pad's
+// bottom lies elevation plus pad thickness below z_start, rounded to whole layers: the part's
+// layers keep their planes and the job gains that many layers below it.
 // Elevation 0 (the part on the plate, or sunk into the pad) is out of scope for the structure:
 // then ground_z = z_start, the pad would fill the part's own lowest layers and every point
 // under its top is refused; a part on the plate is printed without supports.
 // Throws Error for a thickness that is not positive, an elevation that is negative or not
 // finite, or more than kMaxLayers layers.
-size_t support_layers_below(double elevation_mm, double thickness);
-inline double support_ground_z(double z_start, double thickness, double elevation_mm) {
-  return z_start - double(support_layers_below(elevation_mm, thickness)) * thickness;
+size_t support_layers_below(const SupportTreeOptions& options, double thickness);
+inline double support_ground_z(double z_start, double thickness, const SupportTreeOptions& options) {
+  return z_start - double(support_layers_below(options, thickness)) * thickness;
 }
 
 }  // namespace slicereuse
