@@ -4,6 +4,8 @@
 // building its tree. Prints median seconds and the points kept, moved, added, dropped.
 // Usage: bench_supports [--shape ear] [--faces 200000] [--height 8.8] [--thickness 0.05]
 //                       [--runs 3] [--members 4]
+//        bench_supports --family DIR [--thickness 0.05] [--runs 3] [--members 4]
+// --family: the members gen_family wrote into DIR (member_000.ply the source), e.g. tilted.
 #include <chrono>
 #include <cstdio>
 
@@ -12,6 +14,8 @@
 #include "slicereuse/supports/generate_support_points.h"
 #include "slicereuse/supports/support_tree.h"
 #include "slicereuse/supports/transfer_support_points.h"
+#include "slicereuse/transfer/transfer_contours.h"
+#include "shapes.h"
 
 using namespace slicereuse;
 
@@ -38,11 +42,17 @@ int main(int argc, char** argv) {
   args.thickness = 0.05;
   args.runs = 3;
   args.members = 4;
+  std::string family_dir;
   {
-    // Defaults above; the command line overrides them.
-    const BenchArgs given = parse_bench_args(argc, argv);
-    for (int i = 1; i + 1 < argc; i += 2) {
-      const std::string k = argv[i];
+    // Defaults above; the command line overrides them (--family aside, bench_args' options).
+    std::vector<char*> rest{argv[0]};
+    for (int i = 1; i < argc; ++i) {
+      if (std::string(argv[i]) == "--family" && i + 1 < argc) family_dir = argv[++i];
+      else rest.push_back(argv[i]);
+    }
+    const BenchArgs given = parse_bench_args(int(rest.size()), rest.data());
+    for (size_t i = 1; i + 1 < rest.size(); i += 2) {
+      const std::string k = rest[i];
       if (k == "--shape") args.family.shape = given.family.shape;
       if (k == "--faces") args.family.faces = given.family.faces;
       if (k == "--height") args.family.height = given.family.height;
@@ -51,7 +61,23 @@ int main(int argc, char** argv) {
       if (k == "--members") args.members = given.members;
     }
   }
-  const SlicedBase sliced = sliced_base(args);
+  auto member_of = [&](const Mesh& base, int i) {
+    if (family_dir.empty()) return test::make_family_member(base, args.family, i);
+    char name[32];
+    std::snprintf(name, sizeof name, "/member_%03d.ply", i);
+    return test::read_ply(family_dir + name);
+  };
+  SlicedBase sliced;
+  if (family_dir.empty()) {
+    sliced = sliced_base(args);
+  } else {
+    SliceOptions o;
+    o.thickness = args.thickness;
+    sliced.base = member_of({}, 0);
+    sliced.source = slice_layers(sliced.base, o);
+    std::printf("family %s, %zu faces, %zu layers, threads %d, median of %d runs\n", family_dir.c_str(),
+                sliced.base.faces(), sliced.source.layers(), omp_get_max_threads(), args.runs);
+  }
   const SupportPointOptions points_options;
   const SupportTreeOptions tree_options;
   const double ground = support_ground_z(sliced.source.z_start, args.thickness, tree_options);
@@ -65,14 +91,16 @@ int main(int argc, char** argv) {
   });
   std::printf("source: %zu points in %.3f s; tree (%zu pillars, %zu on the part, %zu faces) in %.3f s\n",
               source_points.size(), generate, tree.pillars, tree.on_part, tree.mesh.faces(), build);
-  std::printf("%-6s %7s %9s %9s %9s %5s %5s %5s %5s\n", "member", "slice", "transfer", "tree", "generate", "kept",
-              "moved", "added", "drop");
+  std::printf("%-6s %7s %9s %9s %9s %9s %5s %5s %5s %5s\n", "member", "slice", "contours", "transfer", "tree",
+              "generate", "kept", "moved", "added", "drop");
   SliceOptions slice_options;
   slice_options.thickness = args.thickness;
   for (int i = 1; i < args.members; ++i) {
-    const Mesh member = test::make_family_member(sliced.base, args.family, i);
+    const Mesh member = member_of(sliced.base, i);
     Slices slicing;
     const double slice = median_seconds(args.runs, [&] { slicing = slice_layers(member, slice_options); });
+    // What a job's supports analyse: the member's contours transferred from the source's encoding.
+    const double contours = median_seconds(args.runs, [&] { slicing = transfer_contours(sliced.source, member, TransferOptions()); });
     SupportTransferStats stats;
     SupportPoints points;
     const double transfer = median_seconds(args.runs, [&] {
@@ -82,8 +110,8 @@ int main(int argc, char** argv) {
       tree = build_support_tree(member, points, ground, tree_options);
     });
     const double own = median_seconds(args.runs, [&] { generate_support_points(member, slicing, points_options); });
-    std::printf("%-6d %7.3f %9.3f %9.3f %9.3f %5zu %5zu %5zu %5zu\n", i, slice, transfer, member_tree, own, stats.kept,
-                stats.moved, stats.added, stats.dropped);
+    std::printf("%-6d %7.3f %9.3f %9.3f %9.3f %9.3f %5zu %5zu %5zu %5zu\n", i, slice, contours, transfer, member_tree,
+                own, stats.kept, stats.moved, stats.added, stats.dropped);
   }
   return 0;
 }

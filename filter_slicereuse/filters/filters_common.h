@@ -42,11 +42,18 @@ extern const char* const kReference;
 // and anti-aliasing given apply to every printer. profile() refuses a preset given with display
 // or exposure values other than their defaults (Error naming them).
 inline const char* const kCustomPrinter = "custom";
+// elephant_foot: the first layer's elephant-foot compensation in mm, or kPrintersElephantFoot for
+// the printer's own (its preset's, 0 for custom).
+constexpr double kPrintersElephantFoot = -1;
 struct PrinterSettings {
   size_t printer = 0;
   PrinterProfile given;
+  double elephant_foot = kPrintersElephantFoot;
   PrinterProfile profile() const;
   std::string name() const;  // the preset's id, or "custom"
+
+ private:
+  PrinterProfile profile_before_elephant_foot() const;
 };
 // Its parameters ("printer", then the custom values bound to PrinterProfile, whose defaults they
 // are), a log line saying which printer and image the masks are made for, the warning for a part

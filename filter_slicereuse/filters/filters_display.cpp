@@ -65,6 +65,12 @@ ParamList<PrinterProfile> custom_printer_params() {
 }  // namespace
 
 PrinterProfile PrinterSettings::profile() const {
+  PrinterProfile p = profile_before_elephant_foot();
+  if (elephant_foot != kPrintersElephantFoot) p.elephant_foot_mm = elephant_foot;
+  return p;
+}
+
+PrinterProfile PrinterSettings::profile_before_elephant_foot() const {
   const std::vector<PrinterPreset>& presets = printer_presets();
   if (printer >= presets.size()) return given;
   // A custom value given with a preset would be silently replaced by the preset's: refused.
@@ -109,7 +115,13 @@ ParamList<PrinterSettings> printer_params() {
   ParamList<PrinterSettings> l;
   l.choice(&PrinterSettings::printer, "printer", "Printer", printer_choices(), printer_presets().size(),
            tooltip.c_str())
-      .include(&PrinterSettings::given, custom_printer_params());
+      .include(&PrinterSettings::given, custom_printer_params())
+      .number(&PrinterSettings::elephant_foot, "elephant_foot", "Elephant-foot compensation (mm)",
+              kPrintersElephantFoot, Range::at_least(kPrintersElephantFoot, "mm"),
+              "How much the first layer (on the plate, or the pad's bottom) shrinks against elephant-foot spread, "
+              "in mm (PrusaSlicer's elefant_foot_compensation; features narrower than the printer's "
+              "elefant_foot_min_width keep their width). -1 (the default): the printer's own, 0.2 mm on the SL1S "
+              "SPEED as PrusaSlicer's profile, 0 on the others (every printer).");
   return l;
 }
 

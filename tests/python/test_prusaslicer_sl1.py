@@ -114,7 +114,7 @@ def test_our_archive_is_prusaslicers_pixel_for_pixel_within_2_levels(pymeshlab, 
     ms.load_new_mesh(str(folder / "part.stl"))
     ms.apply_filter("make_print_job", encoding_file="", layer_thickness=LAYER_HEIGHT, output_path=str(ours),
                     printer=preset, offset_x_mm=float(offset[0]), offset_y_mm=float(offset[1]),
-                    antialiasing=True, gamma=1.0)
+                    antialiasing=True, gamma=1.0, elephant_foot=0.0)
 
     their_layers, their_config, their_profile = read_archive(theirs)
     our_layers, our_config, our_profile = read_archive(ours)

@@ -368,6 +368,44 @@ TEST_F(FiltersThroughAFakeHost, MakePlateJobPutsTheShownMeshesOnPlatesAndReadsIt
             std::string::npos);
 }
 
+// Elephant-foot compensation (elephant_foot, -1: the printer's own) shrinks the first mask only,
+// the same in Make Print Job and in Export Mask Images of the same layers.
+TEST_F(FiltersThroughAFakeHost, ElephantFootShrinksTheFirstMaskInEveryPrintFile) {
+  FakeHost host;
+  host.meshes.push_back(make_sphere(3, 48, 64));
+  const FilterSpec& slice = spec_named("slice_mesh_with_encoding");
+  slice.run(defaults(slice, {{"contour_file", path("s.ctr")}, {"encoding_file", ""}}, {{"layer_thickness", 0.5}}),
+            host);
+  const FilterSpec& job = spec_named("make_print_job");
+  const FilterSpec& masks = spec_named("export_mask_images");
+  auto lit = [&](const std::string& folder) {
+    std::vector<size_t> counts;
+    MaskStack stack(folder);
+    std::vector<uint8_t> bytes;
+    MaskImage image;
+    for (size_t k = 0; k < stack.layers(); ++k) {
+      stack.read(k, bytes);
+      decode_mask_png(bytes.data(), bytes.size(), "layer", image);
+      counts.push_back(size_t(std::count(image.pixels.begin(), image.pixels.end(), 255)));
+    }
+    return counts;
+  };
+  for (const double foot : {0.0, 0.3}) {
+    const std::string tag = foot > 0 ? "foot" : "none";
+    job.run(defaults(job, {{"output_path", path("job_" + tag)}}, {{"layer_thickness", 0.5}, {"elephant_foot", foot}}),
+            host);
+    masks.run(defaults(masks, {{"contour_file", path("s.ctr")}, {"output_path", path("masks_" + tag)}},
+                       {{"elephant_foot", foot}}),
+              host);
+  }
+  const std::vector<size_t> none = lit(path("job_none")), foot = lit(path("job_foot"));
+  ASSERT_EQ(none.size(), 12u);
+  EXPECT_EQ(lit(path("masks_none")), none);
+  EXPECT_EQ(lit(path("masks_foot")), foot);
+  EXPECT_LT(foot[0], none[0]);
+  for (size_t k = 1; k < none.size(); ++k) EXPECT_EQ(foot[k], none[k]) << k;
+}
+
 // docs/formats.md's "Filter result line" table names every key each filter's spec declares (a
 // per-plate or per-member key by its prefix, e.g. `area_used_1` for "area_used_*").
 TEST(Filters, TheFormatsDocumentNamesEveryResultKey) {

@@ -7,7 +7,7 @@
 #include <memory>
 #include <mutex>
 
-#include "slicereuse/regions/elephant_foot.h"
+#include "slicereuse/plates/first_layer.h"
 #include "slicereuse/slicing/layer_chunks.h"
 #include "slicereuse/slicing/layer_planes.h"
 #include "slicereuse/slicing/slice_layers.h"
@@ -333,31 +333,6 @@ std::vector<size_t> plate_ranges(const std::vector<PlateMember>& members, size_t
   return layer_chunks(points, budget, kPointBytes);
 }
 
-// The plate's layer 0 in parts (those with first 0) shrunk against elephant foot
-// (elephant_foot.h): their layer 0, all together, replaced by one part of the compensated
-// contours, the rest of their layers copied out after it. Nothing with no compensation.
-void compensate_first_layer(std::vector<SlicePart>& parts, const PrinterProfile& profile, const PlateFrame& f) {
-  if (!(profile.elephant_foot_mm > 0)) return;
-  std::vector<LayerPart> first;
-  for (const SlicePart& p : parts)
-    if (p.first == 0 && p.slices.layers() > 0) first.push_back({&p.slices, 0});
-  std::vector<SlicePart> out(1);
-  compensate_elephant_foot(LayerView(first.data(), first.size()), f.plane(0), profile.elephant_foot_mm,
-                           profile.elephant_foot_min_width_mm, out[0].slices);
-  out[0].slices.z_start = f.bottom(0);
-  out[0].slices.thickness = f.thickness;
-  for (SlicePart& p : parts) {
-    if (p.first > 0) {
-      out.push_back(std::move(p));
-    } else if (p.slices.layers() > 1) {
-      out.emplace_back();
-      layers_into(p.slices, 1, p.slices.layers(), out.back().slices, true);
-      out.back().first = 1;
-    }
-  }
-  parts = std::move(out);
-}
-
 }  // namespace
 
 PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOptions& o, const PrinterProfile& profile,
@@ -390,7 +365,7 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
       st.ranges = 0;
       st.masks = export_masks(LayerMaker{L, st.thickness, [&](size_t k, std::vector<SlicePart>& parts) {
                                            made.make(k, parts);
-                                           if (k == 0) compensate_first_layer(parts, profile, frame);
+                                           if (k == 0) compensate_first_layer(parts, profile, frame.plane(0), frame.bottom(0), frame.thickness);
                                          }},
                               profile, output_path, sub_progress(progress, share, 1));
       made.stats(st);
@@ -410,7 +385,7 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
                            plate_range(members, frame, first[i], first[i + 1], st, range_progress);
                        st.slicing_seconds += seconds_since(t);
                        if (o.whole_stack) o.whole_stack(parts);
-                       if (first[i] == 0) compensate_first_layer(parts, profile, frame);
+                       if (first[i] == 0) compensate_first_layer(parts, profile, frame.plane(0), frame.bottom(0), frame.thickness);
                        return parts;
                      }};
   st.masks = export_masks(chunks, profile, output_path, progress);
