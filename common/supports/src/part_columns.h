@@ -1,8 +1,9 @@
 #pragma once
-// PartColumns: a part's faces (or only its downward-facing ones, unit normal z < 0) in a uniform
-// x-y grid over their bounding boxes (about one face per cell), so that a vertical ray tests
-// only the faces whose boxes cover its column. Built once per support tree or generation of
-// support points; queries are const and thread safe.
+// PartColumns: a part's faces (or only its downward-facing ones, unit normal z < 0; and only
+// those reaching below z_below, when given: rays from points below that height meet no other)
+// in a uniform x-y grid over their bounding boxes (about one face per cell), so that a vertical
+// ray tests only the faces whose boxes cover its column. Built once per support tree or
+// generation of support points; queries are const and thread safe.
 // for_each_hit(x, y, hit) calls hit(face, l, z) for each face of the column, in face order,
 // whose projection holds (x, y) (edges included): l its area coordinates there (corner order,
 // summing to 1), z the face's height there. highest_hit: the highest such z in (z_floor, z_from)
@@ -17,7 +18,7 @@ namespace slicereuse {
 
 class PartColumns {
  public:
-  explicit PartColumns(const Mesh& part, bool downward_only = false);
+  explicit PartColumns(const Mesh& part, bool downward_only = false, double z_below = INFINITY);
   double highest_hit(double x, double y, double z_from, double z_floor) const;
   template <class Hit>
   void for_each_hit(double x, double y, Hit&& hit) const;

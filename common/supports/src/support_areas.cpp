@@ -18,16 +18,6 @@ namespace {
 // head's or a pixel's size, and it divides the polygon work several times.
 constexpr double kAreaToleranceMm = 0.005;
 
-// Layer k's region, from its contours simplified.
-ClipperLib::Paths simplified_region(const Slices& slicing, size_t k) {
-  ClipperLib::Clipper clipper;
-  clipper.AddPaths(simplify_paths(layer_paths(LayerView(slicing, k)), kAreaToleranceMm * kRegionScale),
-                   ClipperLib::ptSubject, true);
-  ClipperLib::Paths region;
-  clipper.Execute(ClipperLib::ctUnion, region, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-  return region;
-}
-
 // The outer loops of a PolyTree, each with its holes, at every depth (an outer loop inside a
 // hole is a part of its own).
 void collect_parts(const ClipperLib::PolyNode& node, std::vector<ClipperLib::Paths>& parts) {
@@ -41,14 +31,23 @@ void collect_parts(const ClipperLib::PolyNode& node, std::vector<ClipperLib::Pat
   }
 }
 
-std::vector<ClipperLib::Paths> parts_of(const ClipperLib::Paths& region) {
+// Layer k's region, from its contours simplified: its loops, and its parts (outer loop with its
+// holes), from one union.
+struct LayerRegion {
+  ClipperLib::Paths loops;
+  std::vector<ClipperLib::Paths> parts;
+};
+
+LayerRegion simplified_region(const Slices& slicing, size_t k) {
   ClipperLib::Clipper clipper;
-  clipper.AddPaths(region, ClipperLib::ptSubject, true);
+  clipper.AddPaths(simplify_paths(layer_paths(LayerView(slicing, k)), kAreaToleranceMm * kRegionScale),
+                   ClipperLib::ptSubject, true);
   ClipperLib::PolyTree tree;
   clipper.Execute(ClipperLib::ctUnion, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-  std::vector<ClipperLib::Paths> parts;
-  collect_parts(tree, parts);
-  return parts;
+  LayerRegion r;
+  collect_parts(tree, r.parts);
+  for (const ClipperLib::Paths& part : r.parts) r.loops.insert(r.loops.end(), part.begin(), part.end());
+  return r;
 }
 
 ClipperLib::IntRect bounds(const ClipperLib::Paths& paths) {
@@ -86,18 +85,18 @@ std::vector<ClipperLib::Paths> beyond(const ClipperLib::Paths& region, const Cli
   return parts;
 }
 
-LayerAreas areas_of(const ClipperLib::Paths* below, const ClipperLib::Paths& region, double thickness,
+LayerAreas areas_of(const LayerRegion* below, const LayerRegion& region, double thickness,
                     const SupportPointOptions& o) {
   LayerAreas out;
   if (!below) {
-    if (o.raised) out.islands = parts_of(region);
+    if (o.raised) out.islands = region.parts;
     return out;
   }
-  const ClipperLib::IntRect below_bounds = bounds(*below);
-  for (ClipperLib::Paths& part : parts_of(region))
-    if (!overlaps(part, *below, below_bounds)) out.islands.push_back(std::move(part));
-  out.overhangs = beyond(region, *below, o.self_supporting_mm(thickness));
-  if (!out.overhangs.empty()) out.far = beyond(region, *below, o.far_reach_mm);
+  const ClipperLib::IntRect below_bounds = bounds(below->loops);
+  for (const ClipperLib::Paths& part : region.parts)
+    if (!overlaps(part, below->loops, below_bounds)) out.islands.push_back(part);
+  out.overhangs = beyond(region.loops, below->loops, o.self_supporting_mm(thickness));
+  if (!out.overhangs.empty()) out.far = beyond(region.loops, below->loops, o.far_reach_mm);
   return out;
 }
 
@@ -143,7 +142,7 @@ void check_support_input(const Mesh& mesh, const Slices& slicing, const SupportP
 std::vector<LayerAreas> support_areas(const Slices& slicing, const SupportPointOptions& options,
                                       const Progress& progress) {
   const size_t n = slicing.layers();
-  std::vector<ClipperLib::Paths> regions(n);
+  std::vector<LayerRegion> regions(n);
   parallel_blocks(n, [&](size_t k) { regions[k] = simplified_region(slicing, k); },
                   sub_progress(progress, 0, 0.5), "support regions");
   std::vector<LayerAreas> areas(n);

@@ -79,7 +79,11 @@ SupportPoints support_points_for_areas(const Mesh& mesh, const Slices& slicing, 
     for (const PlanePoint& p : plane[k]) held.add(p.x, p.y, z);
     if (k % 64 == 0 || k + 1 == n) report_progress(cover_progress, double(k + 1) / double(n), "support points");
   }
-  const PartColumns down(mesh, true);
+  // The rays meet faces below the highest layer with points only (none without points).
+  double z_below = -INFINITY;
+  for (size_t k = 0; k < n; ++k)
+    if (!plane[k].empty()) z_below = layer_span(slicing, k).hi;
+  const PartColumns down(mesh, true, z_below);
   std::vector<LayerPoints> layers(n);
   parallel_blocks(
       n,

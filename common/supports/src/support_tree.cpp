@@ -72,7 +72,10 @@ SupportTree build_support_tree(const Mesh& part, const SupportPoints& points, do
                          i + 1, height, ground_z, o.max_height_mm));
   }
   validate_mesh(part);
-  const PartColumns columns(part);
+  // The ways down start at the points: faces wholly above the highest one are never met.
+  double highest = -INFINITY;
+  for (size_t i = 0; i < points.size(); ++i) highest = std::max(highest, points.xyz[3 * i + 2]);
+  const PartColumns columns(part, false, highest);
   const double r_front = o.head_front_diameter_mm / 2, r_pillar = o.pillar_diameter_mm / 2;
   const double r_base = o.base_diameter_mm / 2, pen = o.head_penetration_mm;
   std::vector<std::array<double, 2>> on_floor;
