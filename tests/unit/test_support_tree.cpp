@@ -272,6 +272,20 @@ TEST(SupportTree, HeadReachingThePartBelowEndsInIt) {
   check_sections(part, tree);
 }
 
+// Under a wall thinner than twice the penetration (a shell's), the head goes halfway into it and
+// does not come out of its other side; under a thick one, the full penetration.
+TEST(SupportTree, HeadsStayInsideThinWalls) {
+  const Mesh thin = test::make_box(0, 0, 4, 10, 10, 4.4);
+  const SupportTree in_thin = build_support_tree(thin, points_on(thin, {face_near(thin, 5, 5, 4)}), -5, {});
+  ASSERT_EQ(in_thin.head_zones.size(), 1u);
+  EXPECT_NEAR(in_thin.head_zones[0].z_top, 4.2, 1e-12);
+  const Mesh thick = test::make_box(0, 0, 4, 10, 10, 6);
+  const SupportTree in_thick = build_support_tree(thick, points_on(thick, {face_near(thick, 5, 5, 4)}), -5, {});
+  ASSERT_EQ(in_thick.head_zones.size(), 1u);
+  EXPECT_NEAR(in_thick.head_zones[0].z_top, 4.5, 1e-12);
+  check_sections(thin, in_thin);
+}
+
 TEST(SupportTree, SphereAndHandleEnterThePartOnlyAtHeads) {
   for (const char* name : {"sphere", "handle"}) {
     SCOPED_TRACE(name);

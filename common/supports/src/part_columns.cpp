@@ -66,4 +66,12 @@ double PartColumns::highest_hit(double x, double y, double z_from, double z_floo
   return best;
 }
 
+double PartColumns::lowest_hit_above(double x, double y, double z_from) const {
+  double best = std::numeric_limits<double>::quiet_NaN();
+  for_each_hit(x, y, [&](uint32_t, const double*, double z) {
+    if (z > z_from && !(z >= best)) best = z;
+  });
+  return best;
+}
+
 }  // namespace slicereuse

@@ -7,7 +7,8 @@
 // for_each_hit(x, y, hit) calls hit(face, l, z) for each face of the column, in face order,
 // whose projection holds (x, y) (edges included): l its area coordinates there (corner order,
 // summing to 1), z the face's height there. highest_hit: the highest such z in (z_floor, z_from)
-// (faces seen edge-on from above never count); NaN when there is none.
+// (faces seen edge-on from above never count); NaN when there is none. lowest_hit_above: the
+// lowest such z above z_from; NaN when there is none.
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -20,6 +21,7 @@ class PartColumns {
  public:
   explicit PartColumns(const Mesh& part, bool downward_only = false, double z_below = INFINITY);
   double highest_hit(double x, double y, double z_from, double z_floor) const;
+  double lowest_hit_above(double x, double y, double z_from) const;
   template <class Hit>
   void for_each_hit(double x, double y, Hit&& hit) const;
 

@@ -21,6 +21,8 @@ constexpr double kRimClearanceMm = 0.15;
 // A foot's cone starts this far above the highest hit under its pillar, so that the pillar's
 // cylinder stays clear of the part and only the foot enters it.
 constexpr double kFootRiseMm = 1;
+// The point's own face lies at its height: the wall above it starts higher than this.
+constexpr double kWallEpsilonMm = 1e-6;
 
 void check_option(const char* name, double value, bool zero_allowed) {
   if (!std::isfinite(value) || value < 0 || (value == 0 && !zero_allowed))
@@ -72,10 +74,11 @@ SupportTree build_support_tree(const Mesh& part, const SupportPoints& points, do
                          i + 1, height, ground_z, o.max_height_mm));
   }
   validate_mesh(part);
-  // The ways down start at the points: faces wholly above the highest one are never met.
+  // The ways down start at the points, and the heads reach at most the penetration above them:
+  // faces wholly above that are never met.
   double highest = -INFINITY;
   for (size_t i = 0; i < points.size(); ++i) highest = std::max(highest, points.xyz[3 * i + 2]);
-  const PartColumns columns(part, false, highest);
+  const PartColumns columns(part, false, highest + o.head_penetration_mm);
   const double r_front = o.head_front_diameter_mm / 2, r_pillar = o.pillar_diameter_mm / 2;
   const double r_base = o.base_diameter_mm / 2, pen = o.head_penetration_mm;
   std::vector<std::array<double, 2>> on_floor;
@@ -86,7 +89,11 @@ SupportTree build_support_tree(const Mesh& part, const SupportPoints& points, do
   };
   for (size_t i = 0; i < points.size(); ++i) {
     const double x = points.xyz[3 * i], y = points.xyz[3 * i + 1], z = points.xyz[3 * i + 2];
-    const double z_top = z + pen, z_head_bottom = z - o.head_width_mm;
+    // Into a wall thinner than twice the penetration, the head goes halfway: it must not come
+    // out of the part's other side.
+    const double wall_top = columns.lowest_hit_above(x, y, z + kWallEpsilonMm);
+    const double z_top = z + (std::isnan(wall_top) ? pen : std::min(pen, (wall_top - z) / 2));
+    const double z_head_bottom = z - o.head_width_mm;
     // The head's radius at height h: r_front at its top, the pillar's at its full width below.
     auto head_r = [&](double h) { return r_pillar + (r_front - r_pillar) * (h - z_head_bottom) / (z_top - z_head_bottom); };
     const WayDown way = find_way_down(columns, x, y, z, z_head_bottom, floor, r_pillar + kRimClearanceMm);
