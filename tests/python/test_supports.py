@@ -81,6 +81,16 @@ def assert_every_layer_rests_on_the_one_below(path):
                               "from the layer below"
 
 
+def assert_the_printer_takes_it(path):
+    """What the SL1S firmware's loader checks: config.ini's printerModel, its layer count
+    (numFast + numSlow) equal to the layers in the archive, and every image the display's size
+    (portrait: 1620 x 2560)."""
+    images, config, _ = read_archive(path)
+    assert config["printerModel"] == "SL1S", config
+    assert int(config["numFast"]) + int(config["numSlow"]) == len(images), config
+    assert all(image.shape == (2560, 1620) for image in images), {image.shape for image in images}
+
+
 def points_in_file(path):
     """The point count a support-points file's header gives."""
     for line in path.read_text().splitlines():
@@ -116,6 +126,7 @@ def test_family_supports_print_every_member_on_supports(make_family, tmp_path, s
         assert SUPPORT_KEYS <= set(entry) and entry["support_seconds"] >= 0, entry
         assert_support_figures(entry, None if direct else points_in_file(source_points))
         assert_every_layer_rests_on_the_one_below(Path(entry["output"]))
+        assert_the_printer_takes_it(Path(entry["output"]))
 
 
 @pytest.mark.parametrize("shape", SHAPES)
@@ -130,6 +141,7 @@ def test_family_supports_on_plates(make_family, tmp_path, shape):
         for member in plate["members"]:
             assert_support_figures(member, source_points)
         assert_every_layer_rests_on_the_one_below(Path(plate["output"]))
+        assert_the_printer_takes_it(Path(plate["output"]))
 
 
 def test_a_points_file_for_another_mesh_is_refused_and_nothing_is_written(pymeshlab, make_family, tmp_path):
