@@ -365,7 +365,9 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
       st.ranges = 0;
       st.masks = export_masks(LayerMaker{L, st.thickness, [&](size_t k, std::vector<SlicePart>& parts) {
                                            made.make(k, parts);
-                                           if (k == 0) compensate_first_layer(parts, profile, frame.plane(0), frame.bottom(0), frame.thickness);
+                                           if (k == 0)
+                                             compensate_first_layer(parts, profile, frame.plane(0), frame.bottom(0),
+                                                                    frame.thickness);
                                          }},
                               profile, output_path, sub_progress(progress, share, 1));
       made.stats(st);
@@ -385,7 +387,8 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
                            plate_range(members, frame, first[i], first[i + 1], st, range_progress);
                        st.slicing_seconds += seconds_since(t);
                        if (o.whole_stack) o.whole_stack(parts);
-                       if (first[i] == 0) compensate_first_layer(parts, profile, frame.plane(0), frame.bottom(0), frame.thickness);
+                       if (first[i] == 0)
+                         compensate_first_layer(parts, profile, frame.plane(0), frame.bottom(0), frame.thickness);
                        return parts;
                      }};
   st.masks = export_masks(chunks, profile, output_path, progress);
