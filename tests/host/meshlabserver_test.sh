@@ -361,6 +361,13 @@ supports)
   ok log_job.txt -i sph/member_001.ply -s job.mlx
   [ "$(result log_job.txt support_points)" = "$(result log_tr.txt points)" ] || fail "job: $(grep slicereuse-result log_job.txt)"
   [ -f out/supported.sl1 ] || fail "no out/supported.sl1"
+  # The point layer edited with MeshLab's own selection and delete filters: the supports are
+  # built from the points left, as many as were generated minus those deleted.
+  ok log_edit.txt -i sph/member_000.ply -s "$EXAMPLES/edit_supports.mlx"
+  deleted=$(sed -n 's/^LOG: [0-9]* Deleted \([0-9]*\) vertices, 0 faces\.$/\1/p' log_edit.txt | head -n 1)
+  above "$deleted" 0 || fail "edit: no point deleted: $(grep -E 'Deleted|slicereuse-result' log_edit.txt)"
+  [ "$(result log_edit.txt points)" = $(( points - deleted )) ] ||
+    fail "edit: the supports are not built from the points left: $(grep -E 'Deleted|slicereuse-result' log_edit.txt)"
   must_fail log_other.txt "the support points are for a mesh of" -i "$m0" -s "$EXAMPLES/build_supports.mlx"
   edit transfer_supports.mlx other.mlx 's#out/member\.srp#out/other.srp#'
   must_fail log_other_tr.txt "the support points are for a mesh of" -i "$m0" -s other.mlx
