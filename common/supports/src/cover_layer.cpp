@@ -61,33 +61,8 @@ std::array<double, 2> centroid(const ClipperLib::Paths& part) {
   return {cx / (3 * a), cy / (3 * a)};
 }
 
-// Cell keys of the x-y hashes below.
+// A cell's key in HeldSurface's hash.
 long long cell_key(long long i, long long j) { return i * 0x9E3779B1LL + j; }
-
-// The points of the layer taken so far, hashed in cells of the reach, for "is any within reach
-// of (x, y)".
-class Taken {
- public:
-  explicit Taken(double reach) : reach_(reach) {}
-  bool covers(double x, double y) const {
-    const long long cx = cell(x), cy = cell(y);
-    for (long long i = cx - 1; i <= cx + 1; ++i)
-      for (long long j = cy - 1; j <= cy + 1; ++j) {
-        const auto it = cells_.find(key(i, j));
-        if (it == cells_.end()) continue;
-        for (const std::array<double, 2>& p : it->second)
-          if ((p[0] - x) * (p[0] - x) + (p[1] - y) * (p[1] - y) <= reach_ * reach_) return true;
-      }
-    return false;
-  }
-  void add(double x, double y) { cells_[key(cell(x), cell(y))].push_back({x, y}); }
-
- private:
-  long long cell(double v) const { return (long long)std::floor(v / reach_); }
-  static long long key(long long i, long long j) { return cell_key(i, j); }
-  double reach_;
-  std::unordered_map<long long, std::vector<std::array<double, 2>>> cells_;
-};
 
 }  // namespace
 
@@ -114,11 +89,13 @@ std::vector<PlanePoint> cover_layer(const LayerAreas& areas, const std::vector<s
   const double g = reach.head / 2;
   const double margin = g * std::sqrt(0.5) + g / 8;
   const double support_reach = reach.support - margin;
-  Taken taken(reach.head - margin);
-  for (const std::array<double, 2>& p : existing) taken.add(p[0], p[1]);
+  // This layer's points: held in its plane (dz 0) within the head reach.
+  const double head_reach = reach.head - margin;
+  HeldSurface taken(head_reach);
+  for (const std::array<double, 2>& p : existing) taken.add(p[0], p[1], z);
   std::vector<PlanePoint> out;
   auto take = [&](const std::array<double, 2>& p, SupportKind kind) {
-    taken.add(p[0], p[1]);
+    taken.add(p[0], p[1], z);
     out.push_back({p[0], p[1], uint8_t(kind)});
   };
   auto cover = [&](const std::vector<ClipperLib::Paths>& parts, SupportKind kind, bool held_counts) {
@@ -138,7 +115,7 @@ std::vector<PlanePoint> cover_layer(const LayerAreas& areas, const std::vector<s
       }
       for (const std::vector<std::array<double, 2>>* list : {&c.lattice, &c.boundary})
         for (const std::array<double, 2>& p : *list)
-          if (!taken.covers(p[0], p[1]) && !(held_counts && held.holds(p[0], p[1], z, support_reach))) take(p, kind);
+          if (!taken.holds(p[0], p[1], z, head_reach) && !(held_counts && held.holds(p[0], p[1], z, support_reach))) take(p, kind);
     }
   };
   cover(areas.islands, SupportKind::Island, false);

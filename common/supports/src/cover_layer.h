@@ -28,8 +28,9 @@ struct PlanePoint {
   uint8_t kind;  // SupportKind
 };
 
-// The points of the layers covered so far, in space, hashed in x-y cells of the radius:
-// whether one at or below z lies within radius of (x, y, z).
+// Points in space, hashed in x-y cells of the radius: whether one at or below z lies within reach
+// (at most the radius) of (x, y, z). The layers covered so far, and a layer's own points in its
+// plane.
 class HeldSurface {
  public:
   explicit HeldSurface(double radius) : radius_(radius) {}
