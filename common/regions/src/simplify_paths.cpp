@@ -4,19 +4,14 @@
 #include <utility>
 #include <vector>
 
+#include "slicereuse/regions/segment_distance.h"
+
 namespace slicereuse {
 namespace {
 
-// Squared distance from p to the segment ab, in Clipper units squared (doubles: the products of
-// coordinates of up to 1e9 units would overflow 64-bit integers).
+// Squared distance from p to the segment ab, in Clipper units squared.
 double distance2(const ClipperLib::IntPoint& p, const ClipperLib::IntPoint& a, const ClipperLib::IntPoint& b) {
-  const double dx = double(b.X - a.X), dy = double(b.Y - a.Y);
-  const double px = double(p.X - a.X), py = double(p.Y - a.Y);
-  const double len2 = dx * dx + dy * dy;
-  double t = len2 > 0 ? (px * dx + py * dy) / len2 : 0;
-  t = t < 0 ? 0 : (t > 1 ? 1 : t);
-  const double ex = px - t * dx, ey = py - t * dy;
-  return ex * ex + ey * ey;
+  return segment_distance2(double(p.X), double(p.Y), double(a.X), double(a.Y), double(b.X), double(b.Y));
 }
 
 // Marks the vertices of loop[first..last] (indices modulo n) that Douglas-Peucker keeps.

@@ -6,6 +6,7 @@
 
 #include "slicereuse/mesh/fingerprint.h"
 #include "slicereuse/regions/layer_region.h"
+#include "slicereuse/regions/segment_distance.h"
 #include "slicereuse/regions/simplify_paths.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
@@ -100,22 +101,18 @@ LayerAreas areas_of(const LayerRegion* below, const LayerRegion& region, double 
   return out;
 }
 
-double segment_distance2(double x, double y, const ClipperLib::IntPoint& a, const ClipperLib::IntPoint& b) {
-  const double ax = double(a.X) / kRegionScale, ay = double(a.Y) / kRegionScale;
-  const double dx = double(b.X) / kRegionScale - ax, dy = double(b.Y) / kRegionScale - ay;
-  const double len2 = dx * dx + dy * dy;
-  const double s = len2 > 0 ? std::clamp(((x - ax) * dx + (y - ay) * dy) / len2, 0.0, 1.0) : 0.0;
-  const double ex = ax + s * dx - x, ey = ay + s * dy - y;
-  return ex * ex + ey * ey;
-}
+// A Clipper coordinate in mm.
+double mm_of(ClipperLib::cInt v) { return double(v) / kRegionScale; }
 
 double distance_to_parts(const std::vector<ClipperLib::Paths>& parts, double x, double y) {
   double best = std::numeric_limits<double>::infinity();
   for (const ClipperLib::Paths& part : parts) {
     if (part_contains(part, x, y)) return 0;
     for (const ClipperLib::Path& loop : part)
-      for (size_t i = 0; i < loop.size(); ++i)
-        best = std::min(best, segment_distance2(x, y, loop[i], loop[(i + 1) % loop.size()]));
+      for (size_t i = 0; i < loop.size(); ++i) {
+        const ClipperLib::IntPoint &a = loop[i], &b = loop[(i + 1) % loop.size()];
+        best = std::min(best, segment_distance2(x, y, mm_of(a.X), mm_of(a.Y), mm_of(b.X), mm_of(b.Y)));
+      }
   }
   return std::sqrt(best);
 }
