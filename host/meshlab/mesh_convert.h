@@ -79,15 +79,24 @@ void set_vertex_colors_vcg(MeshT& m, const std::vector<uint8_t>& rgba) {
     }
 }
 
+// Appends the points of xyz (3 numbers each) as vertices of m; returns the first of them.
 template <class MeshT>
-void fill_polyline_mesh(MeshT& m, const std::vector<double>& xyz, const std::vector<uint32_t>& segments) {
+typename MeshT::VertexIterator append_vertices(MeshT& m, const std::vector<double>& xyz) {
   using Coord = typename MeshT::CoordType;
   using Scalar = typename MeshT::ScalarType;
   const size_t n = xyz.size() / 3;
-  if (n == 0) return;
-  auto v = vcg::tri::Allocator<MeshT>::AddVertices(m, n);
+  const auto first = vcg::tri::Allocator<MeshT>::AddVertices(m, n);
+  auto v = first;
   for (size_t i = 0; i < n; ++i, ++v)
     v->P() = Coord(Scalar(xyz[3 * i]), Scalar(xyz[3 * i + 1]), Scalar(xyz[3 * i + 2]));
+  return first;
+}
+
+template <class MeshT>
+void fill_polyline_mesh(MeshT& m, const std::vector<double>& xyz, const std::vector<uint32_t>& segments) {
+  const size_t n = xyz.size() / 3;
+  if (n == 0) return;
+  append_vertices(m, xyz);
   if (!segments.empty()) {
     auto e = vcg::tri::Allocator<MeshT>::AddEdges(m, segments.size() / 2);
     const size_t first = m.vert.size() - n;
@@ -105,22 +114,16 @@ void fill_point_mesh(MeshT& m, const std::vector<double>& xyz, const std::vector
   using Scalar = typename MeshT::ScalarType;
   const size_t n = xyz.size() / 3;
   if (n == 0) return;
-  auto v = vcg::tri::Allocator<MeshT>::AddVertices(m, n);
-  for (size_t i = 0; i < n; ++i, ++v) {
-    v->P() = Coord(Scalar(xyz[3 * i]), Scalar(xyz[3 * i + 1]), Scalar(xyz[3 * i + 2]));
+  auto v = append_vertices(m, xyz);
+  for (size_t i = 0; i < n; ++i, ++v)
     v->N() = Coord(Scalar(normals[3 * i]), Scalar(normals[3 * i + 1]), Scalar(normals[3 * i + 2]));
-  }
   vcg::tri::UpdateBounding<MeshT>::Box(m);
 }
 
 template <class MeshT>
 void fill_triangle_mesh(MeshT& m, const Mesh& mesh) {
-  using Coord = typename MeshT::CoordType;
-  using Scalar = typename MeshT::ScalarType;
   if (mesh.vertices() == 0) return;
-  auto v = vcg::tri::Allocator<MeshT>::AddVertices(m, mesh.vertices());
-  for (size_t i = 0; i < mesh.vertices(); ++i, ++v)
-    v->P() = Coord(Scalar(mesh.V[3 * i]), Scalar(mesh.V[3 * i + 1]), Scalar(mesh.V[3 * i + 2]));
+  append_vertices(m, mesh.V);
   if (mesh.faces() > 0) {
     auto f = vcg::tri::Allocator<MeshT>::AddFaces(m, mesh.faces());
     for (size_t i = 0; i < mesh.faces(); ++i, ++f)
