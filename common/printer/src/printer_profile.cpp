@@ -23,13 +23,31 @@ void validate_printer_profile(const PrinterProfile& p) {
                 " is not a finite number >= 0 (0: binary threshold, 1: linear coverage)");
   for (const auto& [name, seconds] : {std::pair<const char*, double>{"exposure time", p.exposure_s},
                                       {"bottom exposure time", p.bottom_exposure_s},
-                                      {"time between exposures", p.layer_move_s}})
+                                      {"time between exposures", p.layer_move_s},
+                                      {"bottom light-off delay", p.bottom_light_off_s},
+                                      {"light-off delay", p.light_off_s}})
     if (!(seconds >= 0) || !std::isfinite(seconds))
       throw Error(std::string(name) + " " + std::to_string(seconds) + " s is not a finite number >= 0");
   for (const auto& [name, mm] : {std::pair<const char*, double>{"elephant foot compensation", p.elephant_foot_mm},
                                  {"elephant foot min width", p.elephant_foot_min_width_mm}})
     if (!(mm >= 0) || !std::isfinite(mm))
       throw Error(std::string(name) + " " + std::to_string(mm) + " mm is not a finite number >= 0");
+  for (const auto& [name, mm] : {std::pair<const char*, double>{"bottom lift height", p.bottom_lift_mm},
+                                 {"lift height", p.lift_mm}})
+    if (!(mm >= 0) || !std::isfinite(mm))
+      throw Error(std::string(name) + " " + std::to_string(mm) + " mm is not a finite number >= 0");
+  for (const auto& [name, speed] :
+       {std::pair<const char*, double>{"bottom lift speed", p.bottom_lift_speed_mm_min},
+        {"lift speed", p.lift_speed_mm_min},
+        {"bottom retract speed", p.bottom_retract_speed_mm_min},
+        {"retract speed", p.retract_speed_mm_min}})
+    if (!(speed > 0) || !std::isfinite(speed))
+      throw Error(std::string(name) + " " + std::to_string(speed) + " mm/min is not a finite number > 0");
+  if (p.grey_levels != 16 && p.grey_levels != 128 && p.grey_levels != 256)
+    throw Error("grey levels " + std::to_string(p.grey_levels) +
+                " is not 256, 128 (Chitubox .ctb) or 16 (Anycubic Photon Workshop)");
+  if (p.file_version < 0)
+    throw Error("print file version " + std::to_string(p.file_version) + " is negative (0: the newest written)");
   if (p.bottom_layers < 0 || p.faded_layers < 0)
     throw Error("bottom layers (" + std::to_string(p.bottom_layers) + ") and faded layers (" +
                 std::to_string(p.faded_layers) + ") must not be negative");

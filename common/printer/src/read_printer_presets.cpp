@@ -30,6 +30,18 @@ struct Fields {
   }
 };
 
+// A lift-and-retract printer's moves (printer_profile.h), when the preset gives them.
+void read_lift(const Fields& lift, PrinterProfile& p) {
+  p.bottom_lift_mm = lift.number("bottom_height_mm");
+  p.lift_mm = lift.number("height_mm");
+  p.bottom_lift_speed_mm_min = lift.number("bottom_speed_mm_min");
+  p.lift_speed_mm_min = lift.number("speed_mm_min");
+  p.bottom_retract_speed_mm_min = lift.number("bottom_retract_speed_mm_min");
+  p.retract_speed_mm_min = lift.number("retract_speed_mm_min");
+  p.bottom_light_off_s = lift.number("bottom_light_off_s");
+  p.light_off_s = lift.number("light_off_s");
+}
+
 PrinterProfile profile_of(const Fields& display, bool antialiasing, const Fields& job) {
   PrinterProfile p;
   p.width_px = display.whole("width_px");
@@ -49,6 +61,9 @@ PrinterProfile profile_of(const Fields& display, bool antialiasing, const Fields
   p.layer_move_s = job.number("layer_move_s");
   p.elephant_foot_mm = job.number("elephant_foot_mm");
   p.elephant_foot_min_width_mm = job.number("elephant_foot_min_width_mm");
+  if (display.object.find("grey_levels")) p.grey_levels = display.whole("grey_levels");
+  if (job.object.find("file_version")) p.file_version = job.whole("file_version");
+  if (const JsonValue* lift = job.object.find("lift")) read_lift({*lift, "the lift of " + job.where}, p);
   return p;
 }
 

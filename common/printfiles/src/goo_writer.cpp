@@ -45,17 +45,28 @@ struct BigEndian {
 // Grams of resin per mm^3 for the header's weight: 1.1 g/ml, a typical standard resin.
 constexpr double kResinGramsPerMm3 = 1.1e-3;
 
-// The wait after each retract that makes a layer's moves take the profile's layer_move_s.
-double wait_after_retract_s(const PrinterProfile& p) {
-  const double moves_s = 60 * (kGooLiftMm / kGooLiftMmPerMin + kGooRetractMm / kGooRetractMmPerMin);
-  return std::max(0.0, p.layer_move_s - moves_s);
+// A layer's moves (printer_profile.h's lift), of the bottom layers or of the others.
+struct LayerMoves {
+  double lift_mm, lift_speed, retract_speed, light_off_s;
+};
+
+LayerMoves layer_moves(const PrinterProfile& p, bool bottom) {
+  return bottom ? LayerMoves{p.bottom_lift_mm, p.bottom_lift_speed_mm_min, p.bottom_retract_speed_mm_min,
+                             p.bottom_light_off_s}
+                : LayerMoves{p.lift_mm, p.lift_speed_mm_min, p.retract_speed_mm_min, p.light_off_s};
+}
+
+// The wait after each retract: the light-off delay, plus what makes the moves take the profile's
+// layer_move_s when they take less.
+double wait_after_retract_s(const PrinterProfile& p, const LayerMoves& m) {
+  const double moves_s = 60 * (m.lift_mm / m.lift_speed + m.lift_mm / m.retract_speed);
+  return std::max(0.0, p.layer_move_s - moves_s) + m.light_off_s;
 }
 
 // Lift, second lift, retract, second retract: distance and speed each. The second stages are
 // not used (0 mm), at the first stages' speeds so that no reader divides by a zero speed.
-void moves(BigEndian& w) {
-  for (double v : {kGooLiftMm, kGooLiftMmPerMin, 0.0, kGooLiftMmPerMin, kGooRetractMm, kGooRetractMmPerMin, 0.0,
-                   kGooRetractMmPerMin})
+void moves(BigEndian& w, const LayerMoves& m) {
+  for (double v : {m.lift_mm, m.lift_speed, 0.0, m.lift_speed, m.lift_mm, m.retract_speed, 0.0, m.retract_speed})
     w.f32(v);
 }
 
@@ -74,7 +85,8 @@ unsigned antialiasing_level(const PrinterProfile& p) { return p.antialiasing && 
 std::vector<uint8_t> header(const GooJob& job, const GooSummary& s, std::time_t now) {
   const PrinterProfile& p = job.profile;
   const MaskImageLayout m = mask_image_layout(p);
-  const double wait_s = wait_after_retract_s(p), volume_mm3 = s.volume_ml * 1000;
+  const LayerMoves bottom = layer_moves(p, true), other = layer_moves(p, false);
+  const double volume_mm3 = s.volume_ml * 1000;
   std::vector<uint8_t> out;
   out.reserve(kGooHeaderSize);
   BigEndian w{out};
@@ -104,14 +116,14 @@ std::vector<uint8_t> header(const GooJob& job, const GooSummary& s, std::time_t 
   w.u8(1);  // delay mode: the waits below ("static time"), not a turn-off time
   w.f32(0);  // turn-off time
   // Bottom, then other layers: waits before the lift, after it, after the retract.
-  for (double v : {0.0, 0.0, wait_s, 0.0, 0.0, wait_s}) w.f32(v);
+  for (double v : {0.0, 0.0, wait_after_retract_s(p, bottom), 0.0, 0.0, wait_after_retract_s(p, other)}) w.f32(v);
   w.f32(p.bottom_exposure_s);
   w.u32(uint32_t(p.bottom_layers));
   // Bottom, then other layers: lift, retract (distance, speed); then their second stages.
-  for (int i = 0; i < 2; ++i) w.f32(kGooLiftMm), w.f32(kGooLiftMmPerMin);
-  for (int i = 0; i < 2; ++i) w.f32(kGooRetractMm), w.f32(kGooRetractMmPerMin);
-  for (int i = 0; i < 2; ++i) w.f32(0), w.f32(kGooLiftMmPerMin);
-  for (int i = 0; i < 2; ++i) w.f32(0), w.f32(kGooRetractMmPerMin);
+  for (const LayerMoves* m : {&bottom, &other}) w.f32(m->lift_mm), w.f32(m->lift_speed);
+  for (const LayerMoves* m : {&bottom, &other}) w.f32(m->lift_mm), w.f32(m->retract_speed);
+  for (const LayerMoves* m : {&bottom, &other}) w.f32(0), w.f32(m->lift_speed);
+  for (const LayerMoves* m : {&bottom, &other}) w.f32(0), w.f32(m->retract_speed);
   w.u16(255);  // bottom light PWM
   w.u16(255);  // light PWM
   w.u8(1);     // advance mode: each layer's definition holds, so the faded layers' exposures too
@@ -203,8 +215,9 @@ void encode_goo_layer(const GooJob& job, size_t k, const MaskRuns& runs, std::ve
   w.f32(double(k + 1) * job.layer_height_mm);                  // the platform's height
   w.f32(layer_exposure_s(p, k));
   w.f32(0);  // turn-off time
-  for (double v : {0.0, 0.0, wait_after_retract_s(p)}) w.f32(v);
-  moves(w);
+  const LayerMoves m = layer_moves(p, k < size_t(p.bottom_layers));
+  for (double v : {0.0, 0.0, wait_after_retract_s(p, m)}) w.f32(v);
+  moves(w, m);
   w.u16(255);  // light PWM
   w.bytes(kGooDelimiter, 2);
   const size_t size_at = out.size();

@@ -2,8 +2,8 @@
 // write_goo: an Elegoo .goo print file (goo_format.h; docs/formats.md lists every field):
 //   header   the profile's display (resolution, size in mm, mirrors), the job (layer height,
 //            exposure, bottom exposure and layers, transition layers = the profile's faded
-//            layers, print time: print_estimate.h), the resin volume, the two previews, and
-//            fixed lift and retract moves (typical Elegoo values, below)
+//            layers, print time: print_estimate.h, lift and retract moves), the resin volume and
+//            the two previews
 //   layers   record k as encode_goo_layer makes it, from layer_record(k)
 //   ending   kGooEnding
 // layer_record(k) is called on this thread for k = 0, 1, ..., L-1 in that order while the file
@@ -41,12 +41,9 @@ struct GooSummary {
   std::vector<uint16_t> small_preview, big_preview;  // RGB565, 116 x 116 and 290 x 290
 };
 
-// Every layer's lift and retract, the same for bottom layers, which the profile does not give:
-// typical Elegoo values (5 mm up at 65 mm/min, down at 150 mm/min, as open-source .goo tools
-// write them by default), one stage. The profile's layer_move_s, when longer than these moves
-// take (6.6 s), is made up by a wait after the retract.
-inline constexpr double kGooLiftMm = 5, kGooLiftMmPerMin = 65, kGooRetractMm = 5, kGooRetractMmPerMin = 150;
-
+// Each layer's lift and retract are the profile's (the bottom layers' own), one stage; the wait
+// after the retract is the light-off delay plus what makes the moves take the profile's
+// layer_move_s when they take less.
 using GooLayerRecord = std::function<const std::vector<uint8_t>&(size_t k)>;
 
 void write_goo(const std::string& path, const GooJob& job, const GooLayerRecord& layer_record,

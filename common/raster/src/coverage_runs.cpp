@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "pixel_map.h"
+#include "slicereuse/printer/grey_levels.h"
 #include "slicereuse/png/png_rows.h"
 #include "slicereuse/util/buffer.h"
 
@@ -277,13 +278,16 @@ void add_rc(const Point* e, const Strip& st) {
 
 // Grey level round(255 * f^gamma) of coverage f = min(|x| / kFull, 1), by thresholds: level L
 // starts at the least x with 255 * f^gamma >= L - 1/2, and a table over x's top bits gives the
-// level to start counting from, instead of a pow per pixel.
+// level to start counting from, instead of a pow per pixel. Then the nearest level the printer's
+// file holds (grey_levels.h), by a table.
 class CoverageLevels {
  public:
-  void set_gamma(double gamma) {
-    if (gamma == gamma_) return;
+  void set(double gamma, int grey_levels) {
+    if (gamma == gamma_ && grey_levels == grey_levels_) return;
     gamma_ = gamma;
+    grey_levels_ = grey_levels;
     linear_ = gamma == 1;
+    for (int level = 0; level < 256; ++level) held_[level] = representable_grey_level(uint8_t(level), grey_levels);
     threshold_[0] = 0;
     for (int level = 1; level < 256; ++level) {
       const double f = std::pow((level - 0.5) / 255, 1 / gamma);
@@ -300,21 +304,23 @@ class CoverageLevels {
   uint8_t operator()(int64_t x) const {
     const int64_t a = int64_t(std::min(x < 0 ? 0 - uint64_t(x) : uint64_t(x), uint64_t(kFull)));
     // The thresholds' own values at gamma 1, without looking them up.
-    if (linear_) return uint8_t((255 * uint64_t(a) + uint64_t(kFull / 2)) / uint64_t(kFull));
+    if (linear_) return held_[(255 * uint64_t(a) + uint64_t(kFull / 2)) / uint64_t(kFull)];
     int level = first_[a >> kCoarseShift];
     // One step without a branch covers every coarse step up to gamma 16 and most for any gamma;
     // only very small coverages at gamma < 1 count further.
     level += int(threshold_[level + 1] <= a);
     while (threshold_[level + 1] <= a) ++level;
-    return uint8_t(level);
+    return held_[level];
   }
 
  private:
   static constexpr int kCoarseShift = 21;  // 4096 coarse steps of coverage
   double gamma_ = 0;                       // 0: not set (gamma 0 is binary, never here)
+  int grey_levels_ = 0;
   bool linear_ = false;
   int64_t threshold_[257];
   uint8_t first_[(kFull >> kCoarseShift) + 1];
+  uint8_t held_[256];  // level -> the nearest level the file holds
 };
 
 struct Scratch {
@@ -490,7 +496,7 @@ size_t rasterize_coverage(const LayerView& layer, const PrinterProfile& p, Sink&
   const int32_t stride = (W + 64) / 64 * 64;
   const int shift = strip_shift(stride), rows = 1 << shift;
   const size_t strips = size_t((H + rows - 1) >> shift);
-  w.levels.set_gamma(p.gamma);
+  w.levels.set(p.gamma, p.grey_levels);
   const size_t open = add_edges(layer, pixel_map(image, false), W, H, shift, strips, w);
   // The sweep leaves every sum and bit zero again, so they are cleared only when their size
   // changes or a former call stopped half-way (an exception).

@@ -5,8 +5,9 @@
 // validate_printer_profile throws Error naming the bad field when a profile cannot be
 // rasterized or written: display size outside 1..kMaxDisplayPixels px per side, a pixel size
 // that is not a positive finite number, a non-finite offset, a gamma that is not a finite number
-// >= 0, exposure settings or elephant-foot figures that are negative or not finite. Exporters call it before creating
-// any output.
+// >= 0, exposure settings, lift moves or elephant-foot figures that are negative or not finite,
+// a lift speed of 0, grey levels other than 16, 128 or 256, a negative file version. Exporters
+// call it before creating any output.
 //
 // The display is given as PrusaSlicer's printer settings give it: width_px x height_px pixels
 // (display_pixels_x/y) of pixel_size_x_um x pixel_size_y_um along the build plate's x and y.
@@ -41,6 +42,12 @@ struct PrinterProfile {
   // values bend the curve as PrusaSlicer's AGG rasterizer does (agg::gamma_power). Not used when
   // antialiasing is off.
   double gamma = 1;
+  // How many grey levels an anti-aliased mask may have: 256, or as few as the printer's own file
+  // holds, with the levels its readers decode them to (grey_levels.h): 128 (Chitubox .ctb: 0 and
+  // the odd levels 3..255), 16 (Anycubic Photon Workshop: the multiples of 17). Each pixel gets
+  // the representable level nearest its 256-level value, so the PNG folder of such a printer
+  // equals what its file decodes to.
+  int grey_levels = 256;
 
   // What the print file carries for the printer besides the images.
   std::string printer_model;       // .sl1 printerModel (SL1, SL1S); empty for other printers
@@ -49,6 +56,18 @@ struct PrinterProfile {
   int bottom_layers = 1;           // layers exposed bottom_exposure_s long
   int faded_layers = 10;           // layers after those whose exposure steps down (SL1 numFade)
   double layer_move_s = 5;         // time between two exposures (tilt, or lift and retract)
+
+  // Lift-and-retract printers (.goo, .ctb, Anycubic files): after each exposure the platform
+  // rises lift_mm at lift_speed and comes back at retract_speed (the bottom layers' own figures
+  // first), then the light stays off light_off_s before the next exposure. Defaults: typical
+  // Elegoo values. Tilting printers (Prusa) do not use them.
+  double bottom_lift_mm = 5, lift_mm = 5;
+  double bottom_lift_speed_mm_min = 65, lift_speed_mm_min = 65;
+  double bottom_retract_speed_mm_min = 150, retract_speed_mm_min = 150;
+  double bottom_light_off_s = 0, light_off_s = 0;
+  // The print file's version where its format has several the printer may take (.ctb: 3 or 4);
+  // 0: the newest written.
+  int file_version = 0;
 
   // The layer on the build plate spreads (elephant foot): its mask is shrunk by this much
   // (elephant_foot.h; PrusaSlicer's elefant_foot_compensation), keeping features at least the
