@@ -372,8 +372,8 @@ void export_goo(Stack& stack, const PrinterProfile& p, const std::string& path, 
                           encode_goo_layer(job, k, runs, record);
                         });
   write_goo(path, job, std::ref(encoder), [&] {
-    return GooSummary{summary.used_material_ml(stack.thickness()), goo_preview(top_view.finish(), kGooSmallPreview),
-                      goo_preview(top_view.finish(), kGooBigPreview)};
+    return GooSummary{summary.used_material_ml(stack.thickness()), rgb565_preview(top_view.finish(), kGooSmallPreview, kGooSmallPreview),
+                      rgb565_preview(top_view.finish(), kGooBigPreview, kGooBigPreview)};
   });
 }
 

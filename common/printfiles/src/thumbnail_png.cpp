@@ -84,14 +84,15 @@ void thumbnail_png(const HeightMap& view, int width, int height, std::vector<uin
   encode_rgba_png(rgba.data(), width, height, out);
 }
 
-std::vector<uint16_t> goo_preview(const HeightMap& view, int n) {
-  std::vector<uint16_t> out(size_t(n) * size_t(n), 0);
+std::vector<uint16_t> rgb565_preview(const HeightMap& view, int width, int height) {
+  std::vector<uint16_t> out(size_t(width) * size_t(height), 0);
   if (view.cols == 0 || view.rows == 0) return out;
-  const double cells_per_pixel = double(std::max(view.cols, view.rows)) / n;
-  const std::vector<int> x = sample_cells(n, cells_per_pixel, 0.5 * view.cols, 0, view.cols - 1);
-  const std::vector<int> y = sample_cells(n, cells_per_pixel, 0.5 * view.rows, 0, view.rows - 1);
-  for (int py = 0; py < n; ++py)
-    for (int px = 0; px < n; ++px) {
+  // The display's cells per preview pixel, the same along both sides: the whole display fits.
+  const double cells_per_pixel = std::max(double(view.cols) / width, double(view.rows) / height);
+  const std::vector<int> x = sample_cells(width, cells_per_pixel, 0.5 * view.cols, 0, view.cols - 1);
+  const std::vector<int> y = sample_cells(height, cells_per_pixel, 0.5 * view.rows, 0, view.rows - 1);
+  for (int py = 0; py < height; ++py)
+    for (int px = 0; px < width; ++px) {
       int covered = 0;
       for (int j = 0; j < kSamples; ++j) {
         const int r = y[size_t(py) * kSamples + size_t(j)];
@@ -102,7 +103,7 @@ std::vector<uint16_t> goo_preview(const HeightMap& view, int n) {
         }
       }
       const unsigned v = unsigned((255 * covered + kSamples * kSamples / 2) / (kSamples * kSamples));
-      out[size_t(py) * size_t(n) + size_t(px)] = uint16_t((v >> 3) << 11 | (v >> 2) << 5 | (v >> 3));
+      out[size_t(py) * size_t(width) + size_t(px)] = uint16_t((v >> 3) << 11 | (v >> 2) << 5 | (v >> 3));
     }
   return out;
 }

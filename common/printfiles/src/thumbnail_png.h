@@ -18,12 +18,12 @@ namespace slicereuse {
 
 void thumbnail_png(const HeightMap& view, int width, int height, std::vector<uint8_t>& out);
 
-// goo_preview: a top view as a .goo header's preview (goo_writer.h): n x n RGB565 pixels,
-// row-major from the top, showing where the part stands on the build plate: the whole display
-// area fitted into the square at its true proportions and centred, +x to the right and +y up
-// (the display's mirrors undone), each pixel a grey level round(255 * share) of its 4 x 4
-// samples that fall on covered cells. Why the plate rather than the part: a printer's screen
-// shows where on the plate the job will stand.
-std::vector<uint16_t> goo_preview(const HeightMap& view, int n);
+// rgb565_preview: a top view as a printer's preview (.goo, .ctb, Anycubic headers): width x height
+// RGB565 pixels, row-major from the top, showing where the part stands on the build plate: the
+// whole display area fitted into the picture at its true proportions and centred, +x to the
+// right and +y up (the display's mirrors undone), each pixel a grey level round(255 * share) of
+// its 4 x 4 samples that fall on covered cells. Why the plate rather than the part: a printer's
+// screen shows where on the plate the job will stand.
+std::vector<uint16_t> rgb565_preview(const HeightMap& view, int width, int height);
 
 }  // namespace slicereuse
