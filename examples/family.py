@@ -10,7 +10,7 @@
 Default: slices MESH0 once with encoding, then for each member MESH1 ...: loads it, transfers
 the slicing (exact: the result equals slicing it) and writes DIR/<member file stem> with the
 printer's own print file (its preset's extension in common/printer/presets.json: .sl1, .sl1s,
-.goo, or a folder of PNG images for the method's display, custom printers and the Photon Mono X;
+.goo, .ctb, .pwmx, ..., or a folder of PNG images for the method's display and custom printers;
 --format chooses another), all in memory, with no contour file unless --keep-contours.
 --direct: the same outputs by slicing every member directly (the baseline). --verify: also
 slices each member directly and compares the masks (min_similarity 1 and max_grey_difference 0
@@ -74,15 +74,17 @@ def main():
                     help="also slice each member directly and compare the masks "
                          "(min_similarity, max_grey_difference)")
     ap.add_argument("--keep-contours", action="store_true", help="also write each member's contour file")
-    ap.add_argument("--printer", help="printer profile: method (the default), prusa_sl1, prusa_sl1s_speed, "
-                    "anycubic_photon_mono_x, elegoo_saturn_3_ultra, or custom (with --width, --height, --pixel-um)")
+    presets = [p["id"] for p in json.loads(sr.PRESETS.read_text())["presets"]]
+    ap.add_argument("--printer", help=f"printer profile: {', '.join(presets)} (method, the default), or custom (with --width, "
+                    "--height, --pixel-um)")
     ap.add_argument("--width", type=int, help="custom printer: display pixels along x")
     ap.add_argument("--height", type=int, help="custom printer: display pixels along y")
     ap.add_argument("--pixel-um", type=float, help="custom printer: pixel size in micrometres")
     ap.add_argument("--antialiasing", action="store_true", help="grey edge pixels from exact coverage")
     ap.add_argument("--gamma", type=float, help="anti-aliasing gamma (PrusaSlicer's gamma_correction; default 1)")
-    ap.add_argument("--format", choices=["sl1", "sl1s", "goo", "png"],
-                    help="print file: sl1, sl1s, goo, or png (a folder of PNG images); default: the printer's own "
+    formats = [e[1:] for e in sr.print_file_extensions()] + ["png"]
+    ap.add_argument("--format", choices=formats,
+                    help=f"print file: {', '.join(formats)} (png: a folder of PNG images); default: the printer's own "
                          "(common/printer/presets.json)")
     ap.add_argument("--text", action="store_true",
                     help="write text .enc/.ctr instead of binary .srb (encoding, kept contours)")

@@ -66,12 +66,16 @@ void log_display_warning(Host& host, const char* filter, const MaskExportStats& 
 void add_display_figures(const MaskExportStats& stats, Result& result);
 // keys and the keys add_display_figures adds, for a spec's results.
 std::vector<std::string> with_display_keys(std::vector<std::string> keys);
-// The output_path parameter of the filters that write print files (a folder of PNG images, an
-// .sl1/.sl1s archive or a .goo file), bound to field; tooltip says what is written there.
+// The output_path parameter of the filters that write print files (a folder of PNG images, or a
+// file of one of print_formats()), bound to field; tooltip says what is written there, and the
+// formats and their extensions follow it.
+std::string print_file_patterns();                   // "*.sl1 *.sl1s *.goo ..."
+std::string print_file_tooltip(const char* tooltip);  // tooltip, then "Print files: .sl1 (...), ..."
 template <class P>
 ParamList<P>& add_print_file_output(ParamList<P>& l, std::string P::*field, const char* tooltip) {
-  return l.file(field, ParamType::FileSave, "output_path", "Output .sl1, .sl1s, .goo or folder", "*.sl1 *.sl1s *.goo",
-                "choose a folder, or a .sl1, .sl1s or .goo file", tooltip);
+  return l.file(field, ParamType::FileSave, "output_path", "Output print file or folder",
+                print_file_patterns().c_str(), "choose a folder, or a print file (.sl1, .ctb, ...)",
+                print_file_tooltip(tooltip).c_str());
 }
 
 // How a print or plate job makes its members' layers (filters_job_layers.cpp): transferred

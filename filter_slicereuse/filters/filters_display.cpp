@@ -6,6 +6,7 @@
 
 #include "filter_params.h"
 #include "filters_common.h"
+#include "slicereuse/printer/print_formats.h"
 #include "slicereuse/printer/printer_presets.h"
 #include "slicereuse/util/error.h"
 
@@ -98,6 +99,18 @@ PrinterProfile PrinterSettings::profile_before_elephant_foot() const {
   p.antialiasing = given.antialiasing;
   p.gamma = given.gamma;
   return p;
+}
+
+std::string print_file_patterns() {
+  std::string patterns;
+  for (const PrintFormat& f : print_formats()) patterns += (patterns.empty() ? "*" : " *") + f.extension;
+  return patterns;
+}
+
+std::string print_file_tooltip(const char* tooltip) {
+  std::string list;
+  for (const PrintFormat& f : print_formats()) list += (list.empty() ? "" : ", ") + f.extension + " (" + f.name + ")";
+  return std::string(tooltip) + " Print files by extension: " + list + "; any other name is a folder of PNG images.";
 }
 
 std::string PrinterSettings::name() const {

@@ -93,7 +93,8 @@ TEST(PrinterPresets, EveryProfilesDefaultFileIsTheOneItsPrinterTakes) {
 }
 
 TEST(PrinterPresets, ABrokenPresetsTextIsRefusedNamingThePresetAndTheKey) {
-  const std::string good = R"({"presets": [{"id": "a", "name": "A", "extension": ".sl1",
+  const std::string good = R"({"formats": [{"extension": ".sl1", "name": "S", "grey_levels": 256}],
+      "presets": [{"id": "a", "name": "A", "extension": ".sl1",
       "display": {"width_px": 100, "height_px": 50, "pixel_x_um": 50, "pixel_y_um": 50,
                   "portrait": false, "mirror_x": true, "mirror_y": false},
       "antialiasing": true,
@@ -125,6 +126,12 @@ TEST(PrinterPresets, ABrokenPresetsTextIsRefusedNamingThePresetAndTheKey) {
             "printer preset 'a' (p.json): display size 0 x 50 px is not within 1..65535 pixels per side");
   const std::string preset = good.substr(good.find("{\"id\""), good.rfind("]}") - good.find("{\"id\""));
   EXPECT_EQ(error(preset, preset + ", " + preset), "printer preset 'a' (p.json) is given twice");
-  EXPECT_EQ(error(good, R"({"presets": []})"), "p.json has no presets");
+  EXPECT_EQ(error(good, R"({"formats": [], "presets": []})"), "p.json has no presets");
+  EXPECT_EQ(error("\"name\": \"A\", \"extension\": \".sl1\"", "\"name\": \"A\", \"extension\": \".ctb\""),
+            "\"extension\" in printer preset 'a' (p.json) is '.ctb', none of the print formats in p.json");
+  EXPECT_EQ(error("\"grey_levels\": 256", "\"grey_levels\": 64"),
+            "\"grey_levels\" in print format 1 (p.json) is 64, not 16, 128 or 256");
+  EXPECT_EQ(error("\"extension\": \".sl1\", \"name\": \"S\"", "\"extension\": \"CTB\", \"name\": \"S\""),
+            "\"extension\" in print format 1 (p.json) is 'CTB', not a dot and lower-case letters and digits");
   EXPECT_EQ(error(good, R"({"presets": [})").rfind("'p.json': parse error at line 1, column 14", 0), 0u);
 }

@@ -1,5 +1,6 @@
 #include "read_printer_presets.h"
 
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <set>
@@ -69,10 +70,31 @@ PrinterProfile profile_of(const Fields& display, bool antialiasing, const Fields
 
 }  // namespace
 
+std::vector<PrintFormat> read_print_formats(const std::string& text, const std::string& name) {
+  const JsonValue doc = parse_json(text, name);
+  const auto& list = doc.at("formats", name).as_array("\"formats\" in " + name);
+  std::vector<PrintFormat> formats;
+  for (size_t k = 0; k < list.size(); ++k) {
+    const Fields f{list[k], format("print format %zu (%s)", k + 1, name.c_str())};
+    PrintFormat pf{f.text("extension"), f.text("name"), f.whole("grey_levels")};
+    const std::string& e = pf.extension;
+    if (e.size() < 2 || e[0] != '.' ||
+        !std::all_of(e.begin() + 1, e.end(), [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9'); }))
+      throw Error(f.of("extension") + " is '" + e + "', not a dot and lower-case letters and digits");
+    if (pf.grey_levels != 16 && pf.grey_levels != 128 && pf.grey_levels != 256)
+      throw Error(f.of("grey_levels") + " is " + std::to_string(pf.grey_levels) + ", not 16, 128 or 256");
+    for (const PrintFormat& g : formats)
+      if (g.extension == e) throw Error(f.where + ": extension '" + e + "' is given twice");
+    formats.push_back(std::move(pf));
+  }
+  return formats;
+}
+
 std::vector<PrinterPreset> read_printer_presets(const std::string& text, const std::string& name) {
   const JsonValue doc = parse_json(text, name);
   const auto& list = doc.at("presets", name).as_array("\"presets\" in " + name);
   if (list.empty()) throw Error(name + " has no presets");
+  const std::vector<PrintFormat> formats = read_print_formats(text, name);
   std::vector<PrinterPreset> presets;
   std::set<std::string> ids;
   for (size_t k = 0; k < list.size(); ++k) {
@@ -81,6 +103,9 @@ std::vector<PrinterPreset> read_printer_presets(const std::string& text, const s
     const Fields preset{list[k], format("printer preset '%s' (%s)", id.c_str(), name.c_str())};
     if (!ids.insert(id).second) throw Error(preset.where + " is given twice");
     PrinterPreset p{id, preset.text("name"), preset.text("extension"), {}};
+    if (!p.extension.empty() &&
+        std::none_of(formats.begin(), formats.end(), [&](const PrintFormat& f) { return f.extension == p.extension; }))
+      throw Error(preset.of("extension") + " is '" + p.extension + "', none of the print formats in " + name);
     p.profile = profile_of({preset.at("display"), "the display of " + preset.where}, preset.flag("antialiasing"),
                            {preset.at("job"), "the job of " + preset.where});
     try {

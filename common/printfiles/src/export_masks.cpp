@@ -23,6 +23,7 @@
 #include "sl1_writer.h"
 #include "thumbnail_png.h"
 #include "slicereuse/png/mask_png.h"
+#include "slicereuse/printer/print_formats.h"
 #include "slicereuse/printer/printer_profile.h"
 #include "slicereuse/printfiles/export_masks.h"
 #include "slicereuse/raster/rasterize_layer.h"
@@ -377,18 +378,19 @@ void export_goo(Stack& stack, const PrinterProfile& p, const std::string& path, 
   });
 }
 
-MaskExportStats export_stack(Stack& stack, const PrinterProfile& profile, const std::string& output_path,
+MaskExportStats export_stack(Stack& stack, const PrinterProfile& printer, const std::string& output_path,
                              const Progress& progress) {
   const auto start = std::chrono::steady_clock::now();
-  validate_printer_profile(profile);
+  validate_printer_profile(printer);
+  // The output's kind by its extension: one of print_formats(), else a folder.
+  const std::string ext = lower_extension(output_path);
+  const PrinterProfile profile = profile_for_format(printer, print_format(ext));
   if (stack.layers() == 0) throw Error("mask export: the slices have no layers");
   if (output_path.empty()) throw Error("mask export: no output path given");
   report_progress(progress, 0, PHASE);
   StackSummary summary(stack.layers());
   MaskExportStats stats;
-  // The output's kind: ".sl1" and ".sl1s" are the same format (PrusaSlicer names the file after
-  // the printer), anything but those and ".goo" a folder.
-  const std::string ext = lower_extension(output_path);
+  // ".sl1" and ".sl1s" are the same format (PrusaSlicer names the file after the printer).
   if (ext == ".sl1" || ext == ".sl1s") {
     export_sl1(stack, profile, output_path, summary, stats.ignored_open_contours, progress);
   } else if (ext == ".goo") {
