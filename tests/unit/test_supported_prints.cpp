@@ -2,7 +2,7 @@
 // each member or transferred from the family's source, exported on the SL1S preset, and every
 // mask stack checked layer on layer (support_checks.h): no island, no lit pixel more than 1 mm
 // from the layer below. By reuse and by direct slicing, the same support structure gives the
-// same masks. Elephant-foot compensation shrinks the plate's first layer only, alike in binary
+// same masks. Elephant-foot compensation shrinks the plate's first layers, faded, alike in binary
 // and anti-aliased masks.
 #include <gtest/gtest.h>
 
@@ -223,7 +223,7 @@ TEST_F(SupportedPrintTest, WithoutSupportsTheCheckFindsIslands) {
   EXPECT_EQ(c.first_island_layer, raised.layers_below);
 }
 
-TEST_F(SupportedPrintTest, ElephantFootShrinksThePlatesFirstLayerOnlyAlikeBinaryAndAntiAliased) {
+TEST_F(SupportedPrintTest, ElephantFootShrinksThePlatesFirstLayersFadedAlikeBinaryAndAntiAliased) {
   const test::FamilyOptions o = family_of("sphere");
   const std::vector<Mesh> placed =
       placed_on_plate({test::make_family_member(test::make_family_base(o), o, 1)});
@@ -242,7 +242,14 @@ TEST_F(SupportedPrintTest, ElephantFootShrinksThePlatesFirstLayerOnlyAlikeBinary
   std::printf("elephant foot 0.2 mm: plate layer 0 %zu -> %zu lit pixels\n", before.lit[0], after.lit[0]);
   EXPECT_LT(after.lit[0], before.lit[0]);
   EXPECT_GT(after.lit[0], 0u);
-  for (size_t k = 1; k < c.layers.size(); ++k) EXPECT_EQ(c.layers[k].max_grey_difference, 0) << "layer " << k;
+  // Faded over the SL1S's 10 faded layers: layers 0..8 shrink less and less, the pad's first ones.
+  ASSERT_EQ(plain.faded_layers, 10);
+  for (size_t k = 0; k < 9; ++k) {
+    EXPECT_LE(after.lit[k], before.lit[k]) << "layer " << k;
+    EXPECT_GT(after.lit[k], 0u) << "layer " << k;
+  }
+  EXPECT_LT(after.lit[4], before.lit[4]);
+  for (size_t k = 9; k < c.layers.size(); ++k) EXPECT_EQ(c.layers[k].max_grey_difference, 0) << "layer " << k;
   EXPECT_EQ(compare_mask_stacks(path("binary.sl1s"), path("gamma0.sl1s"), "").max_grey_difference, 0);
 }
 

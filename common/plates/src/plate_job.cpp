@@ -7,7 +7,7 @@
 #include <memory>
 #include <mutex>
 
-#include "slicereuse/plates/first_layer.h"
+#include "slicereuse/plates/faded_elephant_foot.h"
 #include "slicereuse/slicing/layer_chunks.h"
 #include "slicereuse/slicing/layer_planes.h"
 #include "slicereuse/slicing/slice_layers.h"
@@ -365,9 +365,8 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
       st.ranges = 0;
       st.masks = export_masks(LayerMaker{L, st.thickness, [&](size_t k, std::vector<SlicePart>& parts) {
                                            made.make(k, parts);
-                                           if (k == 0)
-                                             compensate_first_layer(parts, profile, frame.plane(0), frame.bottom(0),
-                                                                    frame.thickness);
+                                           compensate_faded_layers(parts, profile,
+                                                                   {frame.bottom(0), frame.thickness, L, k, 1});
                                          }},
                               profile, output_path, sub_progress(progress, share, 1));
       made.stats(st);
@@ -387,8 +386,8 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
                            plate_range(members, frame, first[i], first[i + 1], st, range_progress);
                        st.slicing_seconds += seconds_since(t);
                        if (o.whole_stack) o.whole_stack(parts);
-                       if (first[i] == 0)
-                         compensate_first_layer(parts, profile, frame.plane(0), frame.bottom(0), frame.thickness);
+                       compensate_faded_layers(parts, profile,
+                                               {frame.bottom(0), frame.thickness, L, first[i], first[i + 1] - first[i]});
                        return parts;
                      }};
   st.masks = export_masks(chunks, profile, output_path, progress);
