@@ -75,7 +75,9 @@ def main():
                          "(min_similarity, max_grey_difference)")
     ap.add_argument("--keep-contours", action="store_true", help="also write each member's contour file")
     ap.add_argument("--printer", help="printer profile: method (the default), prusa_sl1, prusa_sl1s_speed, "
-                    "anycubic_photon_mono_x, elegoo_saturn_3_ultra, or custom (with --width, --height, --pixel-um)")
+                    "anycubic_photon_mono_x, elegoo_saturn_3_ultra, elegoo_mars_2_pro, phrozen_sonic_mighty_4k, "
+                    "anycubic_photon_mono_x_6k, anycubic_photon_mono_4, anycubic_photon_mono_m5s, or custom "
+                    "(with --width, --height, --pixel-um)")
     ap.add_argument("--width", type=int, help="custom printer: display pixels along x")
     ap.add_argument("--height", type=int, help="custom printer: display pixels along y")
     ap.add_argument("--pixel-um", type=float, help="custom printer: pixel size in micrometres")

@@ -53,8 +53,8 @@ def load(plugin=None):
 
 def printer_extension(printer=None):
     """The print file a printer's jobs are made into unless told otherwise: its preset's
-    "extension" in common/printer/presets.json (".sl1", ".sl1s", ".goo", or "" for a folder of PNG
-    images). printer: a preset id; None and "custom" (a display of one's own) take the method's."""
+    "extension" in common/printer/presets.json (".sl1", ".sl1s", ".goo", ".ctb", the Anycubic
+    ".pwmx", ".pwmb", ".pm4n", ".pm5s", or "" for a folder of PNG images). printer: a preset id; None and "custom" (a display of one's own) take the method's."""
     presets = {p["id"]: p for p in json.loads(PRESETS.read_text())["presets"]}
     preset = "method" if printer in (None, "custom") else printer
     if preset not in presets:
