@@ -10,8 +10,8 @@
 Default: slices MESH0 once with encoding, then for each member MESH1 ...: loads it, transfers
 the slicing (exact: the result equals slicing it) and writes DIR/<member file stem> with the
 printer's own print file (its preset's extension in common/printer/presets.json: .sl1, .sl1s,
-.goo, or a folder of PNG images for the method's display, custom printers and the Photon Mono X;
---format chooses another), all in memory, with no contour file unless --keep-contours.
+.goo, .ctb, Anycubic's .pwmx, .pwmb, .pm4n, .pm5s, or a folder of PNG images for the method's
+display and custom printers; --format chooses another), all in memory, with no contour file unless --keep-contours.
 --direct: the same outputs by slicing every member directly (the baseline). --verify: also
 slices each member directly and compares the masks (min_similarity 1 and max_grey_difference 0
 mean identical).
