@@ -152,7 +152,12 @@ def test_family_py_makes_the_printers_own_print_file(make_family, tmp_path, args
         assert (model == "SL1S") == (extension == ".sl1s")
     elif extension == ".goo":
         assert output.read_bytes()[:4] == b"V3.0"
+    elif extension == ".ctb":  # Chitubox's magic number, little-endian
+        assert output.read_bytes()[:4] == bytes([0x86, 0x00, 0xFD, 0x12])
+    elif extension in (".pwmx", ".pwmb", ".pm4n", ".pm5s"):  # Photon Workshop's files
+        assert output.read_bytes()[:12] == b"ANYCUBIC\0\0\0\0"
     else:
+        assert extension == "", extension
         assert sorted(p.name for p in output.iterdir()) == [f"layer{k:05d}.png" for k in range(16)]
 
 
@@ -160,7 +165,8 @@ def test_family_py_makes_the_printers_own_print_file(make_family, tmp_path, args
     (["--layer-thickness", "0"], "--layer-thickness must be greater than 0"),
     (["--layer-thickness", "0.1", "--printer", "nonesuch"],
      "family: error: unknown printer 'nonesuch': one of method, prusa_sl1, prusa_sl1s_speed, "
-     "anycubic_photon_mono_x, elegoo_saturn_3_ultra, or custom"),
+     "anycubic_photon_mono_x, elegoo_saturn_3_ultra, elegoo_mars_2_pro, phrozen_sonic_mighty_4k, "
+     "anycubic_photon_mono_x_6k, anycubic_photon_mono_4, anycubic_photon_mono_m5s, or custom"),
     (["--layer-thickness", "0.1", "MISSING"], "mesh file not found: "),
 ])
 def test_cli_errors_are_one_line(make_family, tmp_path, args, message):

@@ -347,7 +347,9 @@ TEST_F(MaskFiles, EveryPresetIsAValidProfileWithItsPrintersFigures) {
   const std::vector<std::tuple<std::string, double, double>> sizes = {
       {"method", 76.8, 57.6},           {"prusa_sl1", 120.96, 68.04},
       {"prusa_sl1s_speed", 128, 81},    {"anycubic_photon_mono_x", 192, 120},
-      {"elegoo_saturn_3_ultra", 218.88, 122.88}};
+      {"elegoo_saturn_3_ultra", 218.88, 122.88},   {"elegoo_mars_2_pro", 82.62, 130.56},
+      {"phrozen_sonic_mighty_4k", 199.68, 124.8},  {"anycubic_photon_mono_x_6k", 198.15, 123.84},
+      {"anycubic_photon_mono_4", 153.408, 87.04},  {"anycubic_photon_mono_m5s", 218.88, 122.88}};
   ASSERT_EQ(printer_presets().size(), sizes.size());
   for (const auto& [id, w, h] : sizes) {
     const PrinterProfile& p = printer_preset(id).profile;
@@ -357,7 +359,8 @@ TEST_F(MaskFiles, EveryPresetIsAValidProfileWithItsPrintersFigures) {
   }
   EXPECT_EQ(test::error_of([] { printer_preset("sl2"); }),
             "no printer profile named 'sl2' (the profiles are: method, prusa_sl1, prusa_sl1s_speed, "
-            "anycubic_photon_mono_x, elegoo_saturn_3_ultra)");
+            "anycubic_photon_mono_x, elegoo_saturn_3_ultra, elegoo_mars_2_pro, phrozen_sonic_mighty_4k, "
+            "anycubic_photon_mono_x_6k, anycubic_photon_mono_4, anycubic_photon_mono_m5s)");
 }
 
 TEST_F(MaskFiles, Sl1ConfigCarriesTheResinVolumeSummedWhileTheLayersAreMade) {
