@@ -102,9 +102,11 @@ Target check_job(const std::string& path, const PhotonWorkshopJob& job) {
   const PrinterProfile& p = job.profile;
   const std::string ext = lower_extension(path);
   const PwsFileKind* kind = photon_workshop_kind(ext);
-  if (!kind)
-    throw Error("cannot write '" + path + "' as an Anycubic Photon Workshop file: its extension is none of .pwmx, "
-                ".pwma, .pwmb, .pm5, .pm5s, .pm4n");
+  if (!kind) {
+    std::string known;
+    for (const PwsFileKind& k : kPwsFileKinds) known += std::string(known.empty() ? "" : ", ") + k.extension;
+    throw Error("cannot write '" + path + "' as an Anycubic Photon Workshop file: its extension is none of " + known);
+  }
   std::string held;
   for (unsigned v : kind->versions)
     if (v) held += (held.empty() ? "" : ", ") + std::to_string(v);
