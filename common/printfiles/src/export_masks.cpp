@@ -20,6 +20,8 @@
 #include "goo_format.h"
 #include "goo_writer.h"
 #include "mask_stack.h"
+#include "photon_workshop_format.h"
+#include "photon_workshop_writer.h"
 #include "sl1_writer.h"
 #include "thumbnail_png.h"
 #include "slicereuse/png/mask_png.h"
@@ -378,6 +380,38 @@ void export_goo(Stack& stack, const PrinterProfile& p, const std::string& path, 
   });
 }
 
+// An Anycubic Photon Workshop file: each layer's entry and pw0Img data straight from its runs,
+// which also go into the previews.
+void export_photon_workshop(Stack& stack, const PrinterProfile& p, const std::string& path, StackSummary& summary,
+                            size_t& open_contours, const Progress& progress) {
+  const PhotonWorkshopJob job{p, stack.layers(), stack.thickness()};
+  TopView top_view(p, stack.layers());
+  OrderedLayers encoder(stack, open_contours, progress,
+                        [&](const LayerView& layer, size_t k, std::vector<uint8_t>& record) {
+                          summary.add(k, summarize_layer(layer, k));
+                          thread_local MaskRuns runs;
+                          if (p.antialiasing)
+                            rasterize_layer_antialiased_runs(layer, p, runs);
+                          else
+                            rasterize_layer_runs(layer, p, runs);
+                          top_view.add(layer, k);
+                          encode_pw0_layer(job, k, runs, record);
+                        });
+  write_photon_workshop(path, job, std::ref(encoder), [&] {
+    MaskExportStats extent;  // the model's extent, moved onto the plate
+    summary.measure_extent(p, extent);
+    const bool any = extent.min_x < extent.max_x || extent.min_y < extent.max_y;
+    const HeightMap& view = top_view.finish();
+    return PhotonWorkshopSummary{summary.used_material_ml(stack.thickness()),
+                                 rgb565_preview(view, kPwsPreviewWidth, kPwsPreviewHeight),
+                                 rgb565_preview(view, kPwsPreview2Width, kPwsPreview2Height),
+                                 any ? extent.min_x + p.offset_x_mm : 0,
+                                 any ? extent.max_x + p.offset_x_mm : 0,
+                                 any ? extent.min_y + p.offset_y_mm : 0,
+                                 any ? extent.max_y + p.offset_y_mm : 0};
+  });
+}
+
 MaskExportStats export_stack(Stack& stack, const PrinterProfile& printer, const std::string& output_path,
                              const Progress& progress) {
   const auto start = std::chrono::steady_clock::now();
@@ -395,6 +429,8 @@ MaskExportStats export_stack(Stack& stack, const PrinterProfile& printer, const 
     export_sl1(stack, profile, output_path, summary, stats.ignored_open_contours, progress);
   } else if (ext == ".goo") {
     export_goo(stack, profile, output_path, summary, stats.ignored_open_contours, progress);
+  } else if (photon_workshop_kind(ext)) {
+    export_photon_workshop(stack, profile, output_path, summary, stats.ignored_open_contours, progress);
   } else {
     export_folder(stack, profile, output_path, summary, stats.ignored_open_contours, progress);
   }

@@ -20,7 +20,8 @@ uint32_t big_endian(const uint8_t* p, size_t n) {
   return v;
 }
 
-// n bytes at offset, or Error saying what was cut off.
+}  // namespace
+
 void read_at(int fd, uint64_t offset, uint8_t* to, size_t n, const std::string& path, const std::string& what) {
   size_t done = 0;
   while (done < n) {
@@ -31,8 +32,6 @@ void read_at(int fd, uint64_t offset, uint8_t* to, size_t n, const std::string& 
     done += size_t(got);
   }
 }
-
-}  // namespace
 
 GooIndex index_goo_file(int fd, const std::string& path) {
   struct stat st;

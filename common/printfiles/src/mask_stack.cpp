@@ -13,6 +13,7 @@
 #include <memory>
 
 #include "goo_format.h"
+#include "photon_workshop_format.h"
 #include "slicereuse/util/error.h"
 
 namespace slicereuse {
@@ -75,6 +76,13 @@ bool starts_as_goo(const std::string& path) {
          std::memcmp(head + kGooMagicAt, kGooMagic, sizeof kGooMagic) == 0;
 }
 
+// A file that begins as an Anycubic Photon Workshop file does ("ANYCUBIC"), whatever its name.
+bool starts_as_photon_workshop(const std::string& path) {
+  std::unique_ptr<FILE, int (*)(FILE*)> f(std::fopen(path.c_str(), "rb"), std::fclose);
+  char head[sizeof kPwsMark];
+  return f && std::fread(head, 1, sizeof head, f.get()) == sizeof head && std::memcmp(head, kPwsMark, sizeof head) == 0;
+}
+
 std::string zip_message(int code) {
   zip_error_t e;
   zip_error_init_with_code(&e, code);
@@ -133,6 +141,20 @@ MaskStack::MaskStack(const std::string& path) : path_(path) {
     names_.resize(goo_index_.data_at.size());
     return;
   }
+  if (photon_workshop_kind(lower_extension(path)) || starts_as_photon_workshop(path)) {
+    pws_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (pws_ < 0) throw Error("cannot open '" + path + "': " + std::strerror(errno));
+    try {
+      pws_index_ = index_photon_workshop_file(pws_, path);
+      if (pws_index_.data_at.empty()) throw Error("mask stack '" + path + "' holds no layers");
+    } catch (...) {
+      ::close(pws_);
+      pws_ = -1;
+      throw;
+    }
+    names_.resize(pws_index_.data_at.size());
+    return;
+  }
   int code = 0;
   zip_ = zip_open(path.c_str(), ZIP_RDONLY, &code);
   if (!zip_)
@@ -159,16 +181,19 @@ MaskStack::MaskStack(const std::string& path) : path_(path) {
 MaskStack::~MaskStack() {
   if (zip_) zip_discard(zip_);
   if (goo_ >= 0) ::close(goo_);
+  if (pws_ >= 0) ::close(pws_);
 }
 
 std::string MaskStack::layer_name(size_t k) const {
-  if (goo_ >= 0) return path_ + ": layer " + std::to_string(k);
+  if (goo_ >= 0 || pws_ >= 0) return path_ + ": layer " + std::to_string(k);
   return zip_ ? path_ + ":" + names_[k] : (fs::path(path_) / names_[k]).string();
 }
 
 void MaskStack::decode(size_t k, const std::vector<uint8_t>& bytes, MaskImage& out) const {
   if (goo_ >= 0)
     decode_goo_layer(bytes.data(), bytes.size(), goo_index_.width, goo_index_.height, layer_name(k), out);
+  else if (pws_ >= 0)
+    decode_pw0_layer(bytes.data(), bytes.size(), pws_index_.width, pws_index_.height, layer_name(k), out);
   else
     decode_mask_png(bytes.data(), bytes.size(), layer_name(k), out);
 }
@@ -176,6 +201,10 @@ void MaskStack::decode(size_t k, const std::vector<uint8_t>& bytes, MaskImage& o
 void MaskStack::read(size_t k, std::vector<uint8_t>& bytes) {
   if (goo_ >= 0) {
     read_goo_layer(goo_, goo_index_, k, layer_name(k), bytes);
+    return;
+  }
+  if (pws_ >= 0) {
+    read_photon_workshop_layer(pws_, pws_index_, k, layer_name(k), bytes);
     return;
   }
   if (!zip_) {
