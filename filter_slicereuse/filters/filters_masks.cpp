@@ -78,7 +78,7 @@ FilterSpec export_masks_filter() {
       "<p>Rasterizes the layers of a contour file into one mask image per layer "
       "for mask-projection (DLP/LCD) printers: a folder of PNG images "
       "(NNNNN.png), or the print file the output path's extension names: a Prusa .sl1/.sl1s archive, an "
-      "Elegoo .goo, a Chitubox .ctb, an Anycubic Photon Workshop file (.pwmx, .pwmb, .pm4n, .pm5s).</p>"
+      "Elegoo .goo, a Chitubox .ctb, an Anycubic Photon Workshop file (.pwmx, .pwma, .pwmb, .pm4n, .pm5, .pm5s).</p>"
       "<p>Choose the printer by name (its display, orientation, mirrors and exposure as its "
       "own slicer writes them), or custom and give them. A binary pixel is lit when its centre lies "
       "inside the layer by the nonzero winding rule of the closed contours; with anti-aliasing a pixel's grey "
