@@ -4,16 +4,19 @@
 //     <jobDir>NNNNN.png), only its top level is listed,
 //   - a Prusa .sl1 archive (zip), entries <jobDir>NNNNN.png; thumbnail entries are ignored, or
 //   - an Elegoo .goo file (a name ending in .goo, any case, or a file that starts as one does:
-//     Phrozen's .prz is the same format): its layers in order (goo_stack.h).
-// read(k) gives layer k's bytes as stored (a PNG, or a .goo layer's image data), decode(k, ...)
+//     Phrozen's .prz is the same format): its layers in order (goo_stack.h), or
+//   - a Chitubox .ctb file (a name ending in .ctb, any case, or a file that starts with its
+//     magic): its layers in order, encrypted ones decrypted with the header's key (ctb_stack.h).
+// read(k) gives layer k's bytes as stored (a PNG, or a .goo or .ctb layer's image data), decode(k, ...)
 // its pixels; reading is sequential (one file handle), decoding may run on any thread.
 // In a folder or archive, layer k is the PNG whose name ends in the decimal number k right before ".png"; PNGs without
 // such a number are ignored, and the numbers must run 0..L-1 with no gap and no repeat. Of a
 // longer run of digits only the last max(5, digits of L-1) count, so a job name ending in
 // digits ("member_001" + "00012.png") keeps its own.
 // The constructor throws Error naming the path when it does not exist, is neither a folder nor
-// a readable zip archive nor a .goo file, holds no layer image, or misses or repeats a layer
-// number; for a .goo, when it is truncated or its records are corrupt (goo_stack.h).
+// a readable zip archive nor a .goo or .ctb file, holds no layer image, or misses or repeats a
+// layer number; for a .goo or .ctb, when it is truncated or its records or tables are corrupt
+// (goo_stack.h, ctb_stack.h).
 // mask_layer_file_name gives the names export_masks writes: prefix, k with at least 5 digits
 // (zero-padded, like PrusaSlicer's %.5d), ".png".
 // lower_extension: what export and reading tell outputs apart by, the path's extension from its
@@ -23,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "ctb_stack.h"
 #include "goo_stack.h"
 #include "slicereuse/png/mask_png.h"
 
@@ -47,15 +51,18 @@ class MaskStack {
   // when it cannot be read (a zip entry failing its CRC included). One archive handle: not
   // thread-safe.
   void read(size_t k, std::vector<uint8_t>& bytes);
-  // Layer k's pixels from what read(k) gave: PNG decoding (mask_png.h), or the .goo layer's
-  // run-length chunks after its checksum; Error naming layer_name(k). Thread-safe.
+  // Layer k's pixels from what read(k) gave: PNG decoding (mask_png.h), the .goo layer's
+  // run-length chunks after its checksum, or the .ctb layer's runs; Error naming layer_name(k).
+  // Thread-safe.
   void decode(size_t k, const std::vector<uint8_t>& bytes, MaskImage& out) const;
 
  private:
   std::string path_;
   struct zip* zip_ = nullptr;
-  int goo_ = -1;                     // a .goo file's descriptor
+  int file_ = -1;                    // a .goo or .ctb file's descriptor
+  bool ctb_ = false;                 // which of the two
   GooIndex goo_index_;
+  CtbIndex ctb_index_;
   std::vector<std::string> names_;   // file or entry name per layer
   std::vector<uint64_t> entry_;      // zip entry index per layer
 };
