@@ -77,10 +77,6 @@ int check_job(const std::string& path, const CtbJob& job) {
                        path.c_str(), m.width, m.height, (unsigned long long)kGooMaxPixels));
   if (job.layers > std::numeric_limits<uint32_t>::max())
     throw Error(format("cannot write '%s': %zu layers, more than a .ctb holds (4294967295)", path.c_str(), job.layers));
-  const double seconds = std::round(print_seconds(p, job.layers));
-  if (!(seconds <= std::numeric_limits<uint32_t>::max()))
-    throw Error(format("cannot write '%s': a print time of %g s, more than a .ctb's print time holds (4294967295 s)",
-                       path.c_str(), seconds));
   const struct {
     const char* what;
     double v;
@@ -99,6 +95,10 @@ int check_job(const std::string& path, const CtbJob& job) {
                 {"the layer height", job.layer_height_mm},
                 {"the print height", print_height_mm(job.layers, job.layer_height_mm)}};
   for (const auto& f : floats) check_float(path, f.what, f.v);
+  const double seconds = std::round(print_seconds(p, job.layers));
+  if (!(seconds <= std::numeric_limits<uint32_t>::max()))
+    throw Error(format("cannot write '%s': a print time of %g s, more than a .ctb's print time holds (4294967295 s)",
+                       path.c_str(), seconds));
   return version;
 }
 
