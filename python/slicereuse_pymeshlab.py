@@ -53,8 +53,8 @@ def load(plugin=None):
 
 def printer_extension(printer=None):
     """The print file a printer's jobs are made into unless told otherwise: its preset's
-    "extension" in common/printer/presets.json (".sl1", ".sl1s", ".goo", or "" for a folder of PNG
-    images). printer: a preset id; None and "custom" (a display of one's own) take the method's."""
+    "extension" in common/printer/presets.json (".sl1", ".sl1s", ".goo", ".ctb", or "" for a folder
+    of PNG images). printer: a preset id; None and "custom" (a display of one's own) take the method's."""
     presets = {p["id"]: p for p in json.loads(PRESETS.read_text())["presets"]}
     preset = "method" if printer in (None, "custom") else printer
     if preset not in presets:
@@ -224,7 +224,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
            direct=False, verify=False, keep_contours=False, details=False, extension=None,
            workers=0, scheduler=None, resume=False, send_encoding=False, strict=False, supports=False):
     """The production pipeline: one print job per family member, out/<member stem><extension>
-    (".sl1", ".sl1s", ".goo", or "" for a folder of PNG images; None: the printer's own,
+    (".sl1", ".sl1s", ".goo", ".ctb", or "" for a folder of PNG images; None: the printer's own,
     printer_extension(profile's printer)).
 
     Default: slices source once with encoding (out/<source stem>_enc.srb), then for each
@@ -440,7 +440,7 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
            spacing_mm=2.0, placements=None, extension=None, workers=0, scheduler=None, resume=False,
            strict=False, supports=False):
     """The lab's job: the targets arranged on build plates of the printer, one print file per
-    plate, out/plate_<k><extension> (".sl1", ".sl1s", ".goo", or "" for folders of PNG images;
+    plate, out/plate_<k><extension> (".sl1", ".sl1s", ".goo", ".ctb", or "" for folders of PNG images;
     None: the printer's own, printer_extension(profile's printer)), its top view
     out/plate_<k>_layout.png, and out/plates.json, the placements (docs/formats.md, "Placements
     file").

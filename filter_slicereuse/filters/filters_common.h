@@ -67,11 +67,11 @@ void add_display_figures(const MaskExportStats& stats, Result& result);
 // keys and the keys add_display_figures adds, for a spec's results.
 std::vector<std::string> with_display_keys(std::vector<std::string> keys);
 // The output_path parameter of the filters that write print files (a folder of PNG images, an
-// .sl1/.sl1s archive or a .goo file), bound to field; tooltip says what is written there.
+// .sl1/.sl1s archive, a .goo or a .ctb file), bound to field; tooltip says what is written there.
 template <class P>
 ParamList<P>& add_print_file_output(ParamList<P>& l, std::string P::*field, const char* tooltip) {
-  return l.file(field, ParamType::FileSave, "output_path", "Output .sl1, .sl1s, .goo or folder", "*.sl1 *.sl1s *.goo",
-                "choose a folder, or a .sl1, .sl1s or .goo file", tooltip);
+  return l.file(field, ParamType::FileSave, "output_path", "Output .sl1, .sl1s, .goo, .ctb or folder",
+                "*.sl1 *.sl1s *.goo *.ctb", "choose a folder, or a .sl1, .sl1s, .goo or .ctb file", tooltip);
 }
 
 // How a print or plate job makes its members' layers (filters_job_layers.cpp): transferred

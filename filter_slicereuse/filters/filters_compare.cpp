@@ -15,12 +15,12 @@ struct CompareParams {
 
 ParamList<CompareParams> compare_params() {
   ParamList<CompareParams> l;
-  l.file(&CompareParams::stack_a, ParamType::FileOpen, "stack_a", "Stack A", "*.sl1 *.sl1s *.goo",
-         "choose the first mask stack (a folder of PNG images, an .sl1 archive or a .goo file)",
-         "First mask stack: a folder of PNG images, a .sl1/.sl1s archive or an Elegoo .goo file.")
-      .file(&CompareParams::stack_b, ParamType::FileOpen, "stack_b", "Stack B", "*.sl1 *.sl1s *.goo",
-            "choose the second mask stack (a folder of PNG images, an .sl1 archive or a .goo file)",
-            "Second mask stack: a folder of PNG images, a .sl1/.sl1s archive or an Elegoo .goo file.")
+  l.file(&CompareParams::stack_a, ParamType::FileOpen, "stack_a", "Stack A", "*.sl1 *.sl1s *.goo *.ctb",
+         "choose the first mask stack (a folder of PNG images, an .sl1 archive, a .goo or a .ctb file)",
+         "First mask stack: a folder of PNG images, a .sl1/.sl1s archive, an Elegoo .goo or a Chitubox .ctb file.")
+      .file(&CompareParams::stack_b, ParamType::FileOpen, "stack_b", "Stack B", "*.sl1 *.sl1s *.goo *.ctb",
+            "choose the second mask stack (a folder of PNG images, an .sl1 archive, a .goo or a .ctb file)",
+            "Second mask stack: a folder of PNG images, a .sl1/.sl1s archive, an Elegoo .goo or a Chitubox .ctb file.")
       .file(&CompareParams::report_file, ParamType::FileSave, "report_file", "Report file (CSV)", "*.csv", nullptr,
             "Where to write one CSV row per layer (layer, similarity, differing pixels, largest grey "
             "difference, pixels differing by more than one level). Empty: no report is written.");
@@ -56,7 +56,7 @@ Result run_compare_masks(const CompareParams& p, Host& host) {
 FilterSpec compare_masks_filter() {
   const std::string description = std::string(
       "<p>Compares two stacks of mask images (folders of PNG images, .sl1 "
-      "archives or .goo files, in any pairing, e.g. from a transferred and a directly sliced member) layer by "
+      "archives, .goo or .ctb files, in any pairing, e.g. from a transferred and a directly sliced member) layer by "
       "layer. A pixel is on when its grey level is at least 128 (binary masks are "
       "0 or 255). The similarity of a layer is S = 1 - (pixels on in one image and "
       "off in the other) / (all pixels), so for binary masks S = (pixels equal in "

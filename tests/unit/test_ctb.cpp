@@ -45,7 +45,8 @@ using test::star;
 
 // The fixed sections' places, from the documentation's sizes: header 112, large preview header
 // 32 and its place of 2 bytes a pixel, the small one's, print parameters 60, slicer info 76.
-constexpr size_t kLargeAt = 112, kSmallAt = kLargeAt + 32 + 2 * 400 * 300, kParametersAt = kSmallAt + 32 + 2 * 200 * 125,
+constexpr size_t kLargeAt = 112, kSmallAt = kLargeAt + 32 + 2 * 400 * 300,
+                 kParametersAt = kSmallAt + 32 + 2 * 200 * 125,
                  kSlicerAt = kParametersAt + 60, kNameAt = kSlicerAt + 76;
 
 std::string read_bytes(const std::string& path) {
@@ -142,7 +143,10 @@ void write_stack(const std::string& path, const Slices& s, const PrinterProfile&
     encode_ctb_layer(job, k, runs, data[k]);
   }
   write_ctb(path, job, [&](size_t k) -> const std::vector<uint8_t>& { return data[k]; },
-            [&] { return CtbSummary{0, rgb565_preview(top_view.finish(), 400, 300), rgb565_preview(top_view.finish(), 200, 125)}; });
+            [&] {
+              return CtbSummary{0, rgb565_preview(top_view.finish(), 400, 300),
+                                rgb565_preview(top_view.finish(), 200, 125)};
+            });
 }
 
 // The layer table's entry k: where its data lies and how long it is.
@@ -379,11 +383,13 @@ TEST_F(CtbFiles, TheHeaderAndTablesCarryTheProfileAndTheJob) {
     EXPECT_EQ(le32(b, kSmallAt + 8), kSmallAt + 32);
     // Print parameters.
     const float parameters[] = {7, 40, 4, 60, 120, 0.184f, 0.184f * 1.1f, 0, bottom_off, off};
-    for (size_t i = 0; i < std::size(parameters); ++i) EXPECT_FLOAT_EQ(f32(b, kParametersAt + 4 * i), parameters[i]) << i;
+    for (size_t i = 0; i < std::size(parameters); ++i)
+      EXPECT_FLOAT_EQ(f32(b, kParametersAt + 4 * i), parameters[i]) << i;
     EXPECT_EQ(le32(b, kParametersAt + 40), 1u);
     // Slicer info.
     const float second_stages[] = {0, 40, 0, 60, 0, 120, 0};
-    for (size_t i = 0; i < std::size(second_stages); ++i) EXPECT_FLOAT_EQ(f32(b, kSlicerAt + 4 * i), second_stages[i]) << i;
+    for (size_t i = 0; i < std::size(second_stages); ++i)
+      EXPECT_FLOAT_EQ(f32(b, kSlicerAt + 4 * i), second_stages[i]) << i;
     EXPECT_EQ(le32(b, kSlicerAt + 28), kNameAt);
     EXPECT_EQ(le32(b, kSlicerAt + 32), 11u);
     EXPECT_EQ(b.substr(kNameAt, 11), "ELEGOO MARS");
@@ -422,7 +428,8 @@ TEST_F(CtbFiles, TheHeaderAndTablesCarryTheProfileAndTheJob) {
       const bool v4 = version == 4;
       const float bottom[] = {7, 40, 0, v4 ? 40.0f : 0, 100, 0, v4 ? 100.0f : 0, 0, 0, 0, 255};
       const float other[] = {4, 60, 0, v4 ? 60.0f : 0, 120, 0, v4 ? 120.0f : 0, 0, 0, 0, 255};
-      for (size_t i = 0; i < 11; ++i) EXPECT_FLOAT_EQ(f32(b, at - 84 + 40 + 4 * i), (k == 0 ? bottom : other)[i]) << k << ", " << i;
+      for (size_t i = 0; i < 11; ++i)
+        EXPECT_FLOAT_EQ(f32(b, at - 84 + 40 + 4 * i), (k == 0 ? bottom : other)[i]) << k << ", " << i;
     }
     EXPECT_EQ(next, b.size());
   }
@@ -591,7 +598,8 @@ TEST_F(CtbFiles, RangesOfLayersMakeTheSameFileByteForByte) {
     chunks.thickness = 0.1;
     chunks.make = [&](size_t i, const Progress&) {
       std::vector<SlicePart> parts;
-      parts.push_back({make_slices({layers.begin() + long(chunks.first[i]), layers.begin() + long(chunks.first[i + 1])}), 0});
+      parts.push_back(
+          {make_slices({layers.begin() + long(chunks.first[i]), layers.begin() + long(chunks.first[i + 1])}), 0});
       return parts;
     };
     export_masks(make_slices(layers), p, path("whole.ctb"));

@@ -82,7 +82,8 @@ TEST(Filters, ValuesOutOfRangeAreRefusedOnceWithTheirRange) {
   const FilterSpec& masks = spec_named("export_mask_images");
   EXPECT_EQ(error_of([&] { masks.run(defaults(masks, {{"output_path", "/tmp/x"}}, {{"width_px", 65536}}), host); }),
             "width_px must be between 1 and 65535 pixels (got 65536)");
-  EXPECT_EQ(error_of([&] { masks.run(defaults(masks), host); }), "output_path is empty: choose a folder, or a .sl1, .sl1s or .goo file");
+  EXPECT_EQ(error_of([&] { masks.run(defaults(masks), host); }),
+            "output_path is empty: choose a folder, or a .sl1, .sl1s, .goo or .ctb file");
   EXPECT_TRUE(host.lines.empty());
 }
 

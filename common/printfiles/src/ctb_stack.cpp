@@ -12,7 +12,9 @@
 namespace slicereuse {
 namespace {
 
-uint32_t little_endian(const uint8_t* p) { return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24; }
+uint32_t little_endian(const uint8_t* p) {
+  return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24;
+}
 
 }  // namespace
 
@@ -90,7 +92,11 @@ void decode_ctb_layer(const uint8_t* data, size_t n, int width, int height, uint
       if (i >= n) throw cut();
       const uint8_t b0 = d[i++];
       // The length's first byte says how many more follow: 0xxxxxxx none, 10 one, 110 two, 1110 three.
-      const unsigned more = (b0 & 0x80) == 0 ? 0 : (b0 & 0xC0) == 0x80 ? 1 : (b0 & 0xE0) == 0xC0 ? 2 : (b0 & 0xF0) == 0xE0 ? 3 : 4;
+      const unsigned more = (b0 & 0x80) == 0      ? 0
+                            : (b0 & 0xC0) == 0x80 ? 1
+                            : (b0 & 0xE0) == 0xC0 ? 2
+                            : (b0 & 0xF0) == 0xE0 ? 3
+                                                  : 4;
       if (more == 4)
         throw Error(format("'%s' is corrupt: a run length begins with the byte %02X, of no known form", name.c_str(),
                            unsigned(b0)));
@@ -99,13 +105,14 @@ void decode_ctb_layer(const uint8_t* data, size_t n, int width, int height, uint
       for (unsigned m = 0; m < more; ++m) run = run << 8 | d[i++];
     }
     if (run > pixels - filled)
-      throw Error(format("'%s' is corrupt: its runs make more than the %d x %d pixels of the image", name.c_str(), width,
-                         height));
+      throw Error(format("'%s' is corrupt: its runs make more than the %d x %d pixels of the image", name.c_str(),
+                         width, height));
     std::memset(px + filled, code == 0 ? 0 : int(2 * code + 1), size_t(run));
     filled += size_t(run);
   }
   if (filled != pixels)
-    throw Error(format("'%s' is corrupt: its runs make %zu of the %zu pixels of the image", name.c_str(), filled, pixels));
+    throw Error(
+        format("'%s' is corrupt: its runs make %zu of the %zu pixels of the image", name.c_str(), filled, pixels));
 }
 
 }  // namespace slicereuse

@@ -63,7 +63,8 @@ double light_off_s(const PrinterProfile& p, bool bottom) { return wait_after_ret
 
 void check_float(const std::string& path, const char* what, double v) {
   if (!(std::fabs(v) <= FLT_MAX))
-    throw Error(format("cannot write '%s': %s is %g, beyond the range of a .ctb's float fields", path.c_str(), what, v));
+    throw Error(
+        format("cannot write '%s': %s is %g, beyond the range of a .ctb's float fields", path.c_str(), what, v));
 }
 
 int check_job(const std::string& path, const CtbJob& job) {
