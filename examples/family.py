@@ -81,8 +81,8 @@ def main():
     ap.add_argument("--pixel-um", type=float, help="custom printer: pixel size in micrometres")
     ap.add_argument("--antialiasing", action="store_true", help="grey edge pixels from exact coverage")
     ap.add_argument("--gamma", type=float, help="anti-aliasing gamma (PrusaSlicer's gamma_correction; default 1)")
-    ap.add_argument("--format", choices=["sl1", "sl1s", "goo", "png"],
-                    help="print file: sl1, sl1s, goo, or png (a folder of PNG images); default: the printer's own "
+    ap.add_argument("--format", choices=["sl1", "sl1s", "goo", "ctb", "png"],
+                    help="print file: sl1, sl1s, goo, ctb, or png (a folder of PNG images); default: the printer's own "
                          "(common/printer/presets.json)")
     ap.add_argument("--text", action="store_true",
                     help="write text .enc/.ctr instead of binary .srb (encoding, kept contours)")
