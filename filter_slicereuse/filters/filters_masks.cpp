@@ -23,8 +23,9 @@ ParamList<ExportParams> export_params() {
          "contour file opened with File > Import Mesh (.ctr, .srb, .cli).");
   add_print_file_output(l, &ExportParams::output_path,
                         "A folder for PNG images (created if missing; its parent must exist), or a file name ending "
-                        "in .sl1 or .sl1s for a Prusa SL1/SL1S archive, or in .goo for an Elegoo print file "
-                        "(landscape displays).")
+                        "in .sl1 or .sl1s for a Prusa SL1/SL1S archive, in .goo for an Elegoo print file "
+                        "(landscape displays), or in .ctb for a Chitubox print file (the printer's file version, 3 or "
+                        "4).")
       .include(&ExportParams::printer, printer_params());
   return l;
 }
@@ -78,8 +79,9 @@ FilterSpec export_masks_filter() {
   const std::string description = std::string(
       "<p>Rasterizes the layers of a contour file into one mask image per layer "
       "for mask-projection (DLP/LCD) printers: a folder of PNG images "
-      "(NNNNN.png), a Prusa SL1/SL1S archive when the output path ends in .sl1 or .sl1s, or an Elegoo "
-      ".goo print file (e.g. for the Saturn 3 Ultra) when it ends in .goo.</p>"
+      "(NNNNN.png), a Prusa SL1/SL1S archive when the output path ends in .sl1 or .sl1s, an Elegoo "
+      ".goo print file (e.g. for the Saturn 3 Ultra) when it ends in .goo, or a Chitubox .ctb print file "
+      "(version 3 or 4) when it ends in .ctb.</p>"
       "<p>Choose the printer by name (its display, orientation, mirrors and exposure as its "
       "own slicer writes them), or custom and give them. A binary pixel is lit when its centre lies "
       "inside the layer by the nonzero winding rule of the closed contours; with anti-aliasing a pixel's grey "

@@ -74,8 +74,8 @@ ParamList<PlateJobParams> plate_job_params() {
                         "not written.");
   add_print_file_output(l, &PlateJobParams::output_path,
                         "One print file per plate, numbered: plate.sl1 gives plate_1.sl1, plate_2.sl1, ... (.sl1 or "
-                        ".sl1s: Prusa archives, .goo: Elegoo print files); a folder name gives folders name_1, "
-                        "name_2, ... of PNG images. Each plate's layout picture is written beside it "
+                        ".sl1s: Prusa archives, .goo: Elegoo, .ctb: Chitubox print files); a folder name gives "
+                        "folders name_1, name_2, ... of PNG images. Each plate's layout picture is written beside it "
                         "(plate_1_layout.png).")
       .first_file([](const PlateJobParams& p) { return plate_file_name(p.output_path, first_plate(p)); });
   l.whole(&PlateJobParams::plate, "plate", "Only plate", 0, Range::at_least(0, ""),

@@ -28,8 +28,8 @@ ParamList<PrintJobParams> print_job_params() {
             "Also write the layers' contour points here (text .ctr unless the name ends in .srb). Empty (the "
             "default): no contour file.");
   add_print_file_output(l, &PrintJobParams::output_path,
-                        "A file name ending in .sl1 or .sl1s for a Prusa SL1/SL1S archive, or in .goo for an Elegoo "
-                        "print file (landscape displays), or a folder for PNG images (created if missing; its parent "
+                        "A file name ending in .sl1 or .sl1s for a Prusa SL1/SL1S archive, in .goo for an Elegoo "
+                        "print file (landscape displays), in .ctb for a Chitubox print file, or a folder for PNG images (created if missing; its parent "
                         "must exist).")
       .include(&PrintJobParams::printer, printer_params());
   return l;
