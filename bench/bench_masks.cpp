@@ -7,6 +7,9 @@
 //   compare    - compare_mask_stacks(folder, sl1), which must report S = 1 and grey difference 0
 //   goo        - (only when asked for) export_masks to <out>/masks.goo (Elegoo), and, with the
 //                sl1 step, compare_mask_stacks(sl1, goo), which must report S = 1 (not timed)
+//   ctb        - (only when asked for) export_masks to <out>/masks.ctb (Chitubox), and, with the
+//                sl1 step, compare_mask_stacks(sl1, ctb), which must report S = 1 (not timed; a
+//                256-level mask's greys differ by the .ctb's 7-bit codes)
 //   layer      - (only when asked for) every layer on one thread, as an .sl1 encodes it:
 //                rasterize_layer_runs, then encode_mask_png of the runs (anti-aliased: also
 //                rasterize_layer_antialiased_png); microseconds per layer of each in thread CPU
@@ -24,7 +27,7 @@
 // Usage: bench_masks [--shape arch] [--faces 545000] [--height 14.484] [--thickness 0.001]
 //                    [--runs 3] [--out /tmp/slicereuse-bench] [--aa 0|1|0,1] [--gamma 1]
 //                    [--reference R] [--aa-reference R] [--printer ID]
-//                    [--steps rasterize,folder,sl1,compare[,goo][,layer][,deflate]]
+//                    [--steps rasterize,folder,sl1,compare[,goo][,ctb][,layer][,deflate]]
 #include <libdeflate.h>
 #include <omp.h>
 #include <sys/resource.h>
@@ -192,9 +195,9 @@ void time_layers(const Slices& s, const PrinterProfile& profile, int runs) {
 // One kind of mask the steps are run for, and what they measured.
 struct Mode {
   PrinterProfile profile;
-  std::string folder, sl1, goo, reference;
-  std::vector<double> t_raster, t_folder, t_sl1, t_compare, t_goo;
-  std::vector<double> c_raster, c_folder, c_sl1, c_compare, c_goo;
+  std::string folder, sl1, goo, ctb, reference;
+  std::vector<double> t_raster, t_folder, t_sl1, t_compare, t_goo, t_ctb;
+  std::vector<double> c_raster, c_folder, c_sl1, c_compare, c_goo, c_ctb;
   StackComparison cmp;
   const char* name() const { return profile.antialiasing ? "anti-aliased" : "binary"; }
 };
@@ -239,6 +242,7 @@ int main(int argc, char** argv) {
     m.folder = args.out + "/masks" + suffix;
     m.sl1 = args.out + "/masks" + suffix + ".sl1";
     m.goo = args.out + "/masks" + suffix + ".goo";
+    m.ctb = args.out + "/masks" + suffix + ".ctb";
     m.reference = m.profile.antialiasing ? aa_reference : reference;
     modes.push_back(m);
   }
@@ -272,6 +276,7 @@ int main(int argc, char** argv) {
         m.t_folder.push_back(seconds_of([&] { export_masks(s, profile, m.folder); }, m.c_folder));
       if (wants(steps, "sl1")) m.t_sl1.push_back(seconds_of([&] { export_masks(s, profile, m.sl1); }, m.c_sl1));
       if (wants(steps, "goo")) m.t_goo.push_back(seconds_of([&] { export_masks(s, profile, m.goo); }, m.c_goo));
+      if (wants(steps, "ctb")) m.t_ctb.push_back(seconds_of([&] { export_masks(s, profile, m.ctb); }, m.c_ctb));
       if (compare)
         m.t_compare.push_back(seconds_of([&] { m.cmp = compare_mask_stacks(m.folder, m.sl1, ""); }, m.c_compare));
     }
@@ -290,6 +295,12 @@ int main(int argc, char** argv) {
                   static_cast<unsigned long long>(c.differing_pixels));
       ok = ok && c.min_similarity == 1 && c.differing_pixels == 0;
     }
+    if (!m.t_ctb.empty() && !m.t_sl1.empty()) {
+      const StackComparison c = compare_mask_stacks(m.sl1, m.ctb, "");
+      std::printf("ctb against sl1: min S %.9g, %llu differing pixels, max grey difference %d\n", c.min_similarity,
+                  static_cast<unsigned long long>(c.differing_pixels), c.max_grey_difference);
+      ok = ok && c.min_similarity == 1;
+    }
     std::printf("%-10s %9s %12s %12s   wall seconds per run\n", "step", "seconds", "layers/s", "cpu-seconds");
     struct Row {
       const char* name;
@@ -300,7 +311,8 @@ int main(int argc, char** argv) {
                         {"folder", m.t_folder, m.c_folder},
                         {"sl1", m.t_sl1, m.c_sl1},
                         {"compare", m.t_compare, m.c_compare},
-                        {"goo", m.t_goo, m.c_goo}};
+                        {"goo", m.t_goo, m.c_goo},
+                        {"ctb", m.t_ctb, m.c_ctb}};
     for (const Row& row : rows) {
       if (row.wall.empty()) continue;
       const double med = median_of(row.wall);
@@ -315,6 +327,7 @@ int main(int argc, char** argv) {
     }
     if (!m.t_sl1.empty()) std::printf("sl1 %.1f MB\n", double(std::filesystem::file_size(m.sl1)) / 1e6);
     if (!m.t_goo.empty()) std::printf("goo %.1f MB\n", double(std::filesystem::file_size(m.goo)) / 1e6);
+    if (!m.t_ctb.empty()) std::printf("ctb %.1f MB\n", double(std::filesystem::file_size(m.ctb)) / 1e6);
     if (!m.reference.empty() && !m.t_sl1.empty()) {
       const StackComparison ref = compare_mask_stacks(m.reference, m.sl1, "");
       // S is taken on the binary threshold: only a grey difference of 0 means every level kept.

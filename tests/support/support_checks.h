@@ -26,7 +26,7 @@ struct StackSupport {
 };
 
 StackSupport check_stack_support(const std::vector<MaskImage>& layers, const PrinterProfile& profile);
-// The stack export_masks wrote at path (a PNG folder, .sl1/.sl1s or .goo: mask_stack.h), read a
+// The stack export_masks wrote at path (a PNG folder, .sl1/.sl1s, .goo or .ctb: mask_stack.h), read a
 // layer at a time.
 StackSupport check_stack_support(const std::string& path, const PrinterProfile& profile);
 

@@ -100,9 +100,10 @@ StackComparison compare_mask_stacks(const std::string& stack_a, const std::strin
           a.decode(k, bytes_a[i], ia);
           LayerSimilarity& l = result.layers[k];
           l.layer = k;
-          // Equal bytes hold equal images (e.g. reused and direct .sl1 or .goo layers, which the
-          // encoders write byte for byte alike; a PNG and a .goo layer never begin alike): one
-          // decode checks them, the second is skipped and every difference stays 0.
+          // Equal bytes hold equal images (e.g. reused and direct .sl1, .goo or .ctb layers, which
+          // the encoders write byte for byte alike; a PNG, a .goo layer (0x55 first) and a mask's
+          // .ctb layer (its top-left pixels' run first) do not begin alike): one decode checks
+          // them, the second is skipped and every difference stays 0.
           if (bytes_a[i] != bytes_b[i]) {
             b.decode(k, bytes_b[i], ib);
             if (ia.width != ib.width || ia.height != ib.height)

@@ -17,6 +17,8 @@
 
 #include <omp.h>
 
+#include "ctb_format.h"
+#include "ctb_writer.h"
 #include "goo_format.h"
 #include "goo_writer.h"
 #include "mask_stack.h"
@@ -297,7 +299,7 @@ void export_folder(Stack& stack, const PrinterProfile& p, const std::string& fol
   }
 }
 
-// Encodes layers on all cores, a window ahead of the archive writer (write_sl1, write_goo), which
+// Encodes layers on all cores, a window ahead of the archive writer (write_sl1, write_goo, write_ctb), which
 // asks for them in order: range by range, the next one made when the writer first asks for one
 // of its layers. encode(layer, k, bytes) makes the layer, layer k of the stack.
 class OrderedLayers {
@@ -358,25 +360,48 @@ void export_sl1(Stack& stack, const PrinterProfile& p, const std::string& path, 
             std::ref(encoder));
 }
 
-// A .goo: each layer's record straight from its runs, which also go into the previews.
+// A layer of a file made from runs (.goo, .ctb): its mask as runs (the calling thread's), also
+// drawn into the top view the previews are made from.
+const MaskRuns& layer_runs(const LayerView& layer, size_t k, const PrinterProfile& p, StackSummary& summary,
+                           TopView& top_view) {
+  summary.add(k, summarize_layer(layer, k));
+  thread_local MaskRuns runs;
+  if (p.antialiasing)
+    rasterize_layer_antialiased_runs(layer, p, runs);
+  else
+    rasterize_layer_runs(layer, p, runs);
+  top_view.add(layer, k);
+  return runs;
+}
+
+// A .goo: each layer's record straight from its runs.
 void export_goo(Stack& stack, const PrinterProfile& p, const std::string& path, StackSummary& summary,
                 size_t& open_contours, const Progress& progress) {
   const GooJob job{p, stack.layers(), stack.thickness()};
   TopView top_view(p, stack.layers());
   OrderedLayers encoder(stack, open_contours, progress,
                         [&](const LayerView& layer, size_t k, std::vector<uint8_t>& record) {
-                          summary.add(k, summarize_layer(layer, k));
-                          thread_local MaskRuns runs;
-                          if (p.antialiasing)
-                            rasterize_layer_antialiased_runs(layer, p, runs);
-                          else
-                            rasterize_layer_runs(layer, p, runs);
-                          top_view.add(layer, k);
-                          encode_goo_layer(job, k, runs, record);
+                          encode_goo_layer(job, k, layer_runs(layer, k, p, summary, top_view), record);
                         });
   write_goo(path, job, std::ref(encoder), [&] {
     return GooSummary{summary.used_material_ml(stack.thickness()), rgb565_preview(top_view.finish(), kGooSmallPreview, kGooSmallPreview),
                       rgb565_preview(top_view.finish(), kGooBigPreview, kGooBigPreview)};
+  });
+}
+
+// A .ctb: each layer's data straight from its runs, unencrypted.
+void export_ctb(Stack& stack, const PrinterProfile& p, const std::string& path, StackSummary& summary,
+                size_t& open_contours, const Progress& progress) {
+  const CtbJob job{p, stack.layers(), stack.thickness()};
+  TopView top_view(p, stack.layers());
+  OrderedLayers encoder(stack, open_contours, progress,
+                        [&](const LayerView& layer, size_t k, std::vector<uint8_t>& data) {
+                          encode_ctb_layer(job, k, layer_runs(layer, k, p, summary, top_view), data);
+                        });
+  write_ctb(path, job, std::ref(encoder), [&] {
+    return CtbSummary{summary.used_material_ml(stack.thickness()),
+                      rgb565_preview(top_view.finish(), kCtbLargePreviewWidth, kCtbLargePreviewHeight),
+                      rgb565_preview(top_view.finish(), kCtbSmallPreviewWidth, kCtbSmallPreviewHeight)};
   });
 }
 
@@ -388,14 +413,7 @@ void export_photon_workshop(Stack& stack, const PrinterProfile& p, const std::st
   TopView top_view(p, stack.layers());
   OrderedLayers encoder(stack, open_contours, progress,
                         [&](const LayerView& layer, size_t k, std::vector<uint8_t>& record) {
-                          summary.add(k, summarize_layer(layer, k));
-                          thread_local MaskRuns runs;
-                          if (p.antialiasing)
-                            rasterize_layer_antialiased_runs(layer, p, runs);
-                          else
-                            rasterize_layer_runs(layer, p, runs);
-                          top_view.add(layer, k);
-                          encode_pw0_layer(job, k, runs, record);
+                          encode_pw0_layer(job, k, layer_runs(layer, k, p, summary, top_view), record);
                         });
   write_photon_workshop(path, job, std::ref(encoder), [&] {
     MaskExportStats extent;  // the model's extent, moved onto the plate
@@ -431,6 +449,8 @@ MaskExportStats export_stack(Stack& stack, const PrinterProfile& printer, const 
     export_goo(stack, profile, output_path, summary, stats.ignored_open_contours, progress);
   } else if (photon_workshop_kind(ext)) {
     export_photon_workshop(stack, profile, output_path, summary, stats.ignored_open_contours, progress);
+  } else if (ext == ".ctb") {
+    export_ctb(stack, profile, output_path, summary, stats.ignored_open_contours, progress);
   } else {
     export_folder(stack, profile, output_path, summary, stats.ignored_open_contours, progress);
   }

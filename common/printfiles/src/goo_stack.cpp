@@ -1,12 +1,9 @@
 #include "goo_stack.h"
 
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
 #include <cstring>
 
+#include "file_read_at.h"
 #include "goo_format.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
@@ -22,21 +19,8 @@ uint32_t big_endian(const uint8_t* p, size_t n) {
 
 }  // namespace
 
-void read_at(int fd, uint64_t offset, uint8_t* to, size_t n, const std::string& path, const std::string& what) {
-  size_t done = 0;
-  while (done < n) {
-    const ssize_t got = ::pread(fd, to + done, n - done, off_t(offset + done));
-    if (got < 0 && errno == EINTR) continue;
-    if (got < 0) throw Error("cannot read '" + path + "': " + std::strerror(errno));
-    if (got == 0) throw Error("'" + path + "' is truncated: it ends inside " + what);
-    done += size_t(got);
-  }
-}
-
 GooIndex index_goo_file(int fd, const std::string& path) {
-  struct stat st;
-  if (::fstat(fd, &st) != 0) throw Error("cannot read '" + path + "': " + std::strerror(errno));
-  const uint64_t file_size = uint64_t(st.st_size);
+  const uint64_t file_size = slicereuse::file_size(fd, path);
   std::vector<uint8_t> head(kGooHeaderSize);
   read_at(fd, 0, head.data(), std::min<uint64_t>(file_size, 12), path, "the header");
   if (file_size < 12 || std::memcmp(head.data() + kGooMagicAt, kGooMagic, sizeof kGooMagic) != 0)

@@ -31,10 +31,6 @@ struct GooIndex {
 
 GooIndex index_goo_file(int fd, const std::string& path);
 
-// n bytes of the file at offset into to, or Error: '<path>' is truncated: it ends inside <what>
-// (also for the other print files' readers).
-void read_at(int fd, uint64_t offset, uint8_t* to, size_t n, const std::string& path, const std::string& what);
-
 void read_goo_layer(int fd, const GooIndex& index, size_t k, const std::string& name, std::vector<uint8_t>& bytes);
 
 void decode_goo_layer(const uint8_t* data, size_t size, int width, int height, const std::string& name,

@@ -2,11 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <ctime>
 #include <limits>
 
+#include "byte_fields.h"
 #include "goo_format.h"
+#include "lift_fields.h"
 #include "slicereuse/printer/print_estimate.h"
 #include "slicereuse/util/atomic_file.h"
 #include "slicereuse/util/error.h"
@@ -14,54 +15,6 @@
 
 namespace slicereuse {
 namespace {
-
-// Big-endian fields appended to a byte string.
-struct BigEndian {
-  std::vector<uint8_t>& out;
-  void u8(unsigned v) { out.push_back(uint8_t(v)); }
-  void u16(unsigned v) {
-    u8(v >> 8);
-    u8(v & 0xFF);
-  }
-  void u32(uint32_t v) {
-    u16(v >> 16);
-    u16(v & 0xFFFF);
-  }
-  void f32(double v) {
-    const float f = float(v);
-    uint32_t bits;
-    std::memcpy(&bits, &f, 4);
-    u32(bits);
-  }
-  void bytes(const uint8_t* p, size_t n) { out.insert(out.end(), p, p + n); }
-  // A text field of n bytes, zero-filled (a longer text is cut).
-  void text(const std::string& s, size_t n) {
-    const size_t used = std::min(s.size(), n);
-    out.insert(out.end(), s.begin(), s.begin() + long(used));
-    out.insert(out.end(), n - used, 0);
-  }
-};
-
-// Grams of resin per mm^3 for the header's weight: 1.1 g/ml, a typical standard resin.
-constexpr double kResinGramsPerMm3 = 1.1e-3;
-
-// A layer's moves (printer_profile.h's lift), of the bottom layers or of the others.
-struct LayerMoves {
-  double lift_mm, lift_speed, retract_speed, light_off_s;
-};
-
-LayerMoves layer_moves(const PrinterProfile& p, bool bottom) {
-  return bottom ? LayerMoves{p.bottom_lift_mm, p.bottom_lift_speed_mm_min, p.bottom_retract_speed_mm_min,
-                             p.bottom_light_off_s}
-                : LayerMoves{p.lift_mm, p.lift_speed_mm_min, p.retract_speed_mm_min, p.light_off_s};
-}
-
-// The wait after each retract: the light-off delay, plus what makes the moves take the profile's
-// layer_move_s when they take less.
-double wait_after_retract_s(const PrinterProfile& p, const LayerMoves& m) {
-  const double moves_s = 60 * (m.lift_mm / m.lift_speed + m.lift_mm / m.retract_speed);
-  return std::max(0.0, p.layer_move_s - moves_s) + m.light_off_s;
-}
 
 // Lift, second lift, retract, second retract: distance and speed each. The second stages are
 // not used (0 mm), at the first stages' speeds so that no reader divides by a zero speed.
@@ -77,10 +30,6 @@ void preview(BigEndian& w, const std::vector<uint16_t>& pixels, int n) {
   for (uint16_t p : pixels) w.u16(p);
   w.bytes(kGooDelimiter, 2);
 }
-
-// Anti-aliasing level: the slicer's setting, which the images already carry; 1 is "off" as
-// ChiTuBox and UVtools write it, 8 their highest supersampling, standing for exact coverage.
-unsigned antialiasing_level(const PrinterProfile& p) { return p.antialiasing && p.gamma > 0 ? 8 : 1; }
 
 std::vector<uint8_t> header(const GooJob& job, const GooSummary& s, std::time_t now) {
   const PrinterProfile& p = job.profile;

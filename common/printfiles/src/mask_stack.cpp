@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "ctb_format.h"
 #include "goo_format.h"
 #include "photon_workshop_format.h"
 #include "slicereuse/util/error.h"
@@ -83,6 +84,15 @@ bool starts_as_photon_workshop(const std::string& path) {
   return f && std::fread(head, 1, sizeof head, f.get()) == sizeof head && std::memcmp(head, kPwsMark, sizeof head) == 0;
 }
 
+// A file that begins as a .ctb does (its magic, little-endian, in bytes 0..3), whatever its name.
+bool starts_as_ctb(const std::string& path) {
+  std::unique_ptr<FILE, int (*)(FILE*)> f(std::fopen(path.c_str(), "rb"), std::fclose);
+  uint8_t head[4];
+  if (!f || std::fread(head, 1, sizeof head, f.get()) != sizeof head) return false;
+  const uint32_t magic = uint32_t(head[0]) | uint32_t(head[1]) << 8 | uint32_t(head[2]) << 16 | uint32_t(head[3]) << 24;
+  return magic == kCtbMagic || magic == kCtbMagicUVtoolsV4 || magic == kCtbEncryptedMagic;
+}
+
 std::string zip_message(int code) {
   zip_error_t e;
   zip_error_init_with_code(&e, code);
@@ -123,42 +133,39 @@ MaskStack::MaskStack(const std::string& path) : path_(path) {
     place(path, found, names_, nullptr, found_entry);
     return;
   }
-  if (lower_extension(path) == ".goo" || starts_as_goo(path)) {
-    goo_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (goo_ < 0) throw Error("cannot open '" + path + "': " + std::strerror(errno));
+  const std::string ext = lower_extension(path);
+  kind_ = ext == ".goo" || starts_as_goo(path)                                   ? PrintFile::Goo
+          : ext == ".ctb" || starts_as_ctb(path)                                 ? PrintFile::Ctb
+          : photon_workshop_kind(ext) || starts_as_photon_workshop(path) ? PrintFile::PhotonWorkshop
+                                                                                 : PrintFile::None;
+  if (kind_ != PrintFile::None) {
+    file_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (file_ < 0) throw Error("cannot open '" + path + "': " + std::strerror(errno));
+    size_t layers = 0;
     try {
-      goo_index_ = index_goo_file(goo_, path);
+      if (kind_ == PrintFile::Goo) {
+        goo_index_ = index_goo_file(file_, path);
+        layers = goo_index_.data_at.size();
+      } else if (kind_ == PrintFile::Ctb) {
+        ctb_index_ = index_ctb_file(file_, path);
+        layers = ctb_index_.data_at.size();
+      } else {
+        pws_index_ = index_photon_workshop_file(file_, path);
+        layers = pws_index_.data_at.size();
+      }
+      if (layers == 0) throw Error("mask stack '" + path + "' holds no layers");
     } catch (...) {
-      ::close(goo_);
-      goo_ = -1;
+      ::close(file_);
+      file_ = -1;
       throw;
     }
-    if (goo_index_.data_at.empty()) {
-      ::close(goo_);
-      goo_ = -1;
-      throw Error("mask stack '" + path + "' holds no layers");
-    }
-    names_.resize(goo_index_.data_at.size());
-    return;
-  }
-  if (photon_workshop_kind(lower_extension(path)) || starts_as_photon_workshop(path)) {
-    pws_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (pws_ < 0) throw Error("cannot open '" + path + "': " + std::strerror(errno));
-    try {
-      pws_index_ = index_photon_workshop_file(pws_, path);
-      if (pws_index_.data_at.empty()) throw Error("mask stack '" + path + "' holds no layers");
-    } catch (...) {
-      ::close(pws_);
-      pws_ = -1;
-      throw;
-    }
-    names_.resize(pws_index_.data_at.size());
+    names_.resize(layers);
     return;
   }
   int code = 0;
   zip_ = zip_open(path.c_str(), ZIP_RDONLY, &code);
   if (!zip_)
-    throw Error("mask stack '" + path + "' is neither a folder nor a readable .sl1 archive nor a .goo file: " +
+    throw Error("mask stack '" + path + "' is neither a folder nor a readable .sl1 archive nor a print file: " +
                 zip_message(code));
   const zip_int64_t n = zip_get_num_entries(zip_, 0);
   for (zip_int64_t i = 0; i < n; ++i) {
@@ -180,32 +187,38 @@ MaskStack::MaskStack(const std::string& path) : path_(path) {
 
 MaskStack::~MaskStack() {
   if (zip_) zip_discard(zip_);
-  if (goo_ >= 0) ::close(goo_);
-  if (pws_ >= 0) ::close(pws_);
+  if (file_ >= 0) ::close(file_);
 }
 
 std::string MaskStack::layer_name(size_t k) const {
-  if (goo_ >= 0 || pws_ >= 0) return path_ + ": layer " + std::to_string(k);
+  if (file_ >= 0) return path_ + ": layer " + std::to_string(k);
   return zip_ ? path_ + ":" + names_[k] : (fs::path(path_) / names_[k]).string();
 }
 
 void MaskStack::decode(size_t k, const std::vector<uint8_t>& bytes, MaskImage& out) const {
-  if (goo_ >= 0)
-    decode_goo_layer(bytes.data(), bytes.size(), goo_index_.width, goo_index_.height, layer_name(k), out);
-  else if (pws_ >= 0)
-    decode_pw0_layer(bytes.data(), bytes.size(), pws_index_.width, pws_index_.height, layer_name(k), out);
-  else
-    decode_mask_png(bytes.data(), bytes.size(), layer_name(k), out);
+  switch (kind_) {
+    case PrintFile::Goo:
+      return decode_goo_layer(bytes.data(), bytes.size(), goo_index_.width, goo_index_.height, layer_name(k), out);
+    case PrintFile::Ctb:
+      return decode_ctb_layer(bytes.data(), bytes.size(), ctb_index_.width, ctb_index_.height, ctb_index_.key, k,
+                              layer_name(k), out);
+    case PrintFile::PhotonWorkshop:
+      return decode_pw0_layer(bytes.data(), bytes.size(), pws_index_.width, pws_index_.height, layer_name(k), out);
+    case PrintFile::None:
+      return decode_mask_png(bytes.data(), bytes.size(), layer_name(k), out);
+  }
 }
 
 void MaskStack::read(size_t k, std::vector<uint8_t>& bytes) {
-  if (goo_ >= 0) {
-    read_goo_layer(goo_, goo_index_, k, layer_name(k), bytes);
-    return;
-  }
-  if (pws_ >= 0) {
-    read_photon_workshop_layer(pws_, pws_index_, k, layer_name(k), bytes);
-    return;
+  switch (kind_) {
+    case PrintFile::Goo:
+      return read_goo_layer(file_, goo_index_, k, layer_name(k), bytes);
+    case PrintFile::Ctb:
+      return read_ctb_layer(file_, ctb_index_, k, layer_name(k), bytes);
+    case PrintFile::PhotonWorkshop:
+      return read_photon_workshop_layer(file_, pws_index_, k, layer_name(k), bytes);
+    case PrintFile::None:
+      break;
   }
   if (!zip_) {
     const std::string file = layer_name(k);

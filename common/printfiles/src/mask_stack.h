@@ -7,17 +7,19 @@
 //     Phrozen's .prz is the same format): its layers in order (goo_stack.h), or
 //   - an Anycubic Photon Workshop file (a name ending in one of photon_workshop_format.h's
 //     extensions, any case, or a file that starts with "ANYCUBIC"): its LAYERDEF table's layers
-//     (photon_workshop_stack.h).
-// read(k) gives layer k's bytes as stored (a PNG, a .goo layer's image data or a pw0Img layer), decode(k, ...)
+//     (photon_workshop_stack.h), or
+//   - a Chitubox .ctb file (a name ending in .ctb, any case, or a file that starts with its
+//     magic): its layers in order, encrypted ones decrypted with the header's key (ctb_stack.h).
+// read(k) gives layer k's bytes as stored (a PNG, or a print file's layer data), decode(k, ...)
 // its pixels; reading is sequential (one file handle), decoding may run on any thread.
 // In a folder or archive, layer k is the PNG whose name ends in the decimal number k right before ".png"; PNGs without
 // such a number are ignored, and the numbers must run 0..L-1 with no gap and no repeat. Of a
 // longer run of digits only the last max(5, digits of L-1) count, so a job name ending in
 // digits ("member_001" + "00012.png") keeps its own.
 // The constructor throws Error naming the path when it does not exist, is neither a folder nor
-// a readable zip archive nor a .goo file, holds no layer image, or misses or repeats a layer
-// number; for a .goo, when it is truncated or its records are corrupt (goo_stack.h); for a
-// Photon Workshop file, when its tables are (photon_workshop_stack.h).
+// a readable zip archive nor a print file it reads, holds no layer image, or misses or repeats a
+// layer number; for a print file, when it is truncated or its records or tables are corrupt
+// (goo_stack.h, ctb_stack.h, photon_workshop_stack.h).
 // mask_layer_file_name gives the names export_masks writes: prefix, k with at least 5 digits
 // (zero-padded, like PrusaSlicer's %.5d), ".png".
 // lower_extension: what export and reading tell outputs apart by, the path's extension from its
@@ -27,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "ctb_stack.h"
 #include "goo_stack.h"
 #include "photon_workshop_stack.h"
 #include "slicereuse/png/mask_png.h"
@@ -52,17 +55,20 @@ class MaskStack {
   // when it cannot be read (a zip entry failing its CRC included). One archive handle: not
   // thread-safe.
   void read(size_t k, std::vector<uint8_t>& bytes);
-  // Layer k's pixels from what read(k) gave: PNG decoding (mask_png.h), or the .goo layer's
-  // run-length chunks after its checksum, or the pw0Img runs; Error naming layer_name(k).
+  // Layer k's pixels from what read(k) gave: PNG decoding (mask_png.h), or the print file's
+  // run-length layer (.goo chunks after their checksum, .ctb runs, pw0Img runs); Error naming
+  // layer_name(k).
   // Thread-safe.
   void decode(size_t k, const std::vector<uint8_t>& bytes, MaskImage& out) const;
 
  private:
   std::string path_;
   struct zip* zip_ = nullptr;
-  int goo_ = -1;                     // a .goo file's descriptor
+  // A print file's descriptor and kind, with the index of that kind.
+  enum class PrintFile { None, Goo, Ctb, PhotonWorkshop } kind_ = PrintFile::None;
+  int file_ = -1;
   GooIndex goo_index_;
-  int pws_ = -1;  // an Anycubic Photon Workshop file's descriptor
+  CtbIndex ctb_index_;
   PhotonWorkshopIndex pws_index_;
   std::vector<std::string> names_;   // file or entry name per layer
   std::vector<uint64_t> entry_;      // zip entry index per layer

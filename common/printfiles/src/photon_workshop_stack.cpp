@@ -1,11 +1,10 @@
 #include "photon_workshop_stack.h"
 
-#include <sys/stat.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
 
+#include "file_read_at.h"
 #include "photon_workshop_format.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
@@ -29,9 +28,7 @@ uint32_t table_start(int fd, uint64_t at, const char* name, const std::string& p
 }  // namespace
 
 PhotonWorkshopIndex index_photon_workshop_file(int fd, const std::string& path) {
-  struct stat st;
-  if (::fstat(fd, &st) != 0) throw Error("cannot read '" + path + "': " + std::strerror(errno));
-  const uint64_t file_size = uint64_t(st.st_size);
+  const uint64_t file_size = slicereuse::file_size(fd, path);
   uint8_t mark[kPwsLayerDefAddressAt + 4];
   read_at(fd, 0, mark, sizeof mark, path, "the file mark");
   if (std::memcmp(mark, kPwsMark, sizeof kPwsMark) != 0)

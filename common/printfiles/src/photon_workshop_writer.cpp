@@ -6,6 +6,8 @@
 #include <cstring>
 #include <limits>
 
+#include "byte_fields.h"
+#include "lift_fields.h"
 #include "mask_stack.h"
 #include "photon_workshop_format.h"
 #include "slicereuse/printer/print_estimate.h"
@@ -16,39 +18,12 @@
 namespace slicereuse {
 namespace {
 
-// Little-endian fields appended to a byte string.
-struct LittleEndian {
-  std::vector<uint8_t>& out;
-  void u8(unsigned v) { out.push_back(uint8_t(v)); }
-  void u16(unsigned v) {
-    u8(v & 0xFF);
-    u8(v >> 8 & 0xFF);
-  }
-  void u32(uint64_t v) {
-    u16(unsigned(v & 0xFFFF));
-    u16(unsigned(v >> 16 & 0xFFFF));
-  }
-  void f32(double v) {
-    const float f = float(v);
-    uint32_t bits;
-    std::memcpy(&bits, &f, 4);
-    u32(bits);
-  }
-  // A text field of n bytes, zero-filled (a longer text is cut, keeping a terminating zero).
-  void text(const std::string& s, size_t n) {
-    const size_t used = std::min(s.size(), n - 1);
-    out.insert(out.end(), s.begin(), s.begin() + long(used));
-    out.insert(out.end(), n - used, 0);
-  }
-  // A named table's start: its name and length.
-  void table(const char* name, uint64_t length) {
-    text(name, kPwsNameSize);
-    u32(length);
-  }
-};
+// A named table's start: its name and length.
+void table(LittleEndian& w, const char* name, uint64_t length) {
+  w.text(name, kPwsNameSize);
+  w.u32(uint32_t(length));
+}
 
-// Grams of resin per ml for the header's weight: 1.1, a typical standard resin (as in .goo).
-constexpr double kResinGramsPerMl = 1.1;
 constexpr uint32_t kMaxAddress = std::numeric_limits<uint32_t>::max();
 
 // The version written and the kind of file, checked.
@@ -186,7 +161,7 @@ void preview_table(LittleEndian& w, const std::vector<uint16_t>& pixels, int wid
   if (pixels.size() != size_t(width) * size_t(height))
     throw Error(format("Photon Workshop writer: a preview image of %zu pixels, expected %d x %d", pixels.size(), width,
                        height));
-  w.table(second ? "PREVIEW2" : "PREVIEW", (second ? kPreview2Size : kPreviewSize));
+  table(w, second ? "PREVIEW2" : "PREVIEW", (second ? kPreview2Size : kPreviewSize));
   w.u32(unsigned(width));
   if (second) {
     w.u16(4293);  // background colours, as UVtools writes them
@@ -226,11 +201,11 @@ std::vector<uint8_t> tables(const Target& t, const PhotonWorkshopJob& job, const
   if (v >= 517) w.u32(a.model);
   if (v >= 518) w.u32(a.sub_layer_def), w.u32(a.preview2);
   // HEADER.
-  w.table("HEADER", header_length(v));
+  table(w, "HEADER", header_length(v));
   w.f32(std::max(m.column_um, m.row_um));
   w.f32(job.layer_height_mm);
   w.f32(p.exposure_s);
-  w.f32(p.light_off_s);  // wait before cure: the light-off delay
+  w.f32(wait_after_retract_s(p, layer_moves(p, false)));  // wait before cure: the light-off delay
   w.f32(p.bottom_exposure_s);
   w.f32(p.bottom_layers);
   w.f32(p.lift_mm);
@@ -240,12 +215,12 @@ std::vector<uint8_t> tables(const Target& t, const PhotonWorkshopJob& job, const
   w.u32(antialiasing);
   w.u32(unsigned(m.width));
   w.u32(unsigned(m.height));
-  w.f32(volume_ml * kResinGramsPerMl);
+  w.f32(volume_ml * 1000 * kResinGramsPerMm3);
   w.f32(0);       // price: unknown
   w.text("$", 4);  // its currency
   w.u32(1);       // per-layer settings: the printer uses each layer's entry (faded layers, bottom lifts)
-  w.u32(uint64_t(std::round(print_seconds(p, job.layers))));
-  w.u32(uint64_t(std::max(0, p.faded_layers)));  // transition layers
+  w.u32(uint32_t(std::round(print_seconds(p, job.layers))));
+  w.u32(uint32_t(std::max(0, p.faded_layers)));  // transition layers
   w.u32(0);                                      // transition type: linear
   w.u32(0);  // advanced mode off: one-stage moves (two-stage motion control unused)
   if (v >= 517) {
@@ -261,22 +236,20 @@ std::vector<uint8_t> tables(const Target& t, const PhotonWorkshopJob& job, const
   for (unsigned i = 0; i < 16; ++i) w.u8(unsigned(std::min(255.0, std::floor((i + 1) * (255.0 / antialiasing)))));
   w.u32(0);
   // LAYERDEF.
-  w.table("LAYERDEF", 4 + uint64_t(job.layers) * kPwsLayerDefSize);
-  w.u32(job.layers);
+  table(w, "LAYERDEF", 4 + uint64_t(job.layers) * kPwsLayerDefSize);
+  w.u32(uint32_t(job.layers));
   out.insert(out.end(), layer_defs.begin(), layer_defs.end());
   // EXTRA: the bottom layers' and the others' moves in two stages, the second not used (0 mm at
   // the first stage's speeds). Its length is 24, as every writer in the open writes it.
-  w.table("EXTRA", 24);
+  table(w, "EXTRA", 24);
   for (bool bottom : {true, false}) {
-    const double lift = bottom ? p.bottom_lift_mm : p.lift_mm;
-    const double up = (bottom ? p.bottom_lift_speed_mm_min : p.lift_speed_mm_min) / 60;
-    const double down = (bottom ? p.bottom_retract_speed_mm_min : p.retract_speed_mm_min) / 60;
+    const LayerMoves m = layer_moves(p, bottom);
     w.u32(2);  // stages
-    for (double height : {lift, 0.0}) w.f32(height), w.f32(up), w.f32(down);
+    for (double height : {m.lift_mm, 0.0}) w.f32(height), w.f32(m.lift_speed / 60), w.f32(m.retract_speed / 60);
   }
   // MACHINE.
-  w.table("MACHINE", machine_size(v));
-  w.text(p.printer_model.empty() ? t.kind->machine : p.printer_model, 96);
+  table(w, "MACHINE", machine_size(v));
+  w.text((p.printer_model.empty() ? t.kind->machine : p.printer_model).substr(0, 95), 96);  // zero-terminated
   w.text("pw0Img", 16);
   w.u32(16);                                  // highest anti-aliasing level
   w.u32(v >= 518 ? 15 : v >= 517 ? 7 : 1);    // property fields, as UVtools writes them per version
@@ -303,14 +276,14 @@ std::vector<uint8_t> tables(const Target& t, const PhotonWorkshopJob& job, const
     w.text("", 64);  // operating system
     w.text("", 32);  // OpenGL version
     // MODEL: the part's extent around the display centre, from the plate to the top layer.
-    w.table("MODEL", kModelSize);
+    table(w, "MODEL", kModelSize);
     for (double c : {s.min_x, s.min_y, 0.0, s.max_x, s.max_y, double(job.layers) * job.layer_height_mm}) w.f32(c);
     w.u32(0);  // supports: none known
     w.f32(0);  // their density
   }
   if (v >= 518) {
-    w.table("SUBIMGS", 8 + kPwsTableBase + uint64_t(job.layers) * kPwsSubLayerDefSize);
-    w.u32(job.layers);
+    table(w, "SUBIMGS", 8 + kPwsTableBase + uint64_t(job.layers) * kPwsSubLayerDefSize);
+    w.u32(uint32_t(job.layers));
     w.u32(1);  // index
     out.insert(out.end(), sub_layer_defs.begin(), sub_layer_defs.end());
     preview_table(w, s.preview2, kPwsPreview2Width, kPwsPreview2Height, true);
@@ -327,13 +300,13 @@ uint32_t le32(const uint8_t* p) { return uint32_t(p[0]) | uint32_t(p[1]) << 8 | 
 
 void encode_pw0_layer(const PhotonWorkshopJob& job, size_t k, const MaskRuns& runs, std::vector<uint8_t>& out) {
   const PrinterProfile& p = job.profile;
-  const bool bottom = bottom_layer(p, k);
+  const LayerMoves m = layer_moves(p, bottom_layer(p, k));
   out.clear();
   LittleEndian w{out};
   w.u32(0);  // data address: the writer's
   w.u32(0);  // data length, once known
-  w.f32(bottom ? p.bottom_lift_mm : p.lift_mm);
-  w.f32((bottom ? p.bottom_lift_speed_mm_min : p.lift_speed_mm_min) / 60);
+  w.f32(m.lift_mm);
+  w.f32(m.lift_speed / 60);
   w.f32(layer_exposure_s(p, k));
   w.f32(job.layer_height_mm);
   const size_t lit_at = out.size();

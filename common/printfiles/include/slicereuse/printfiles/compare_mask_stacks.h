@@ -1,6 +1,6 @@
 #pragma once
-// compare_mask_stacks: two mask stacks (folders of PNGs, .sl1 archives or .goo files, in any
-// pairing) -> per layer the method's similarity S and the grey differences, and the same
+// compare_mask_stacks: two mask stacks (folders of PNGs, .sl1 archives, .goo or .ctb files, in
+// any pairing) -> per layer the method's similarity S and the grey differences, and the same
 // figures over the whole stack.
 //
 // Masks are 8-bit grey (binary masks 0 or 255, anti-aliased ones any level). For pixels a, b

@@ -1,7 +1,7 @@
 #pragma once
 // export_masks: every layer's mask (rasterize_layer.h) written as a folder of PNGs, a Prusa
-// .sl1/.sl1s archive, an Elegoo .goo file or an Anycubic Photon Workshop file, from a whole stack
-// of slices or from ranges of layers made one at a time.
+// .sl1/.sl1s archive, an Elegoo .goo file, a Chitubox .ctb file or an Anycubic Photon Workshop
+// file, from a whole stack of slices or from ranges of layers made one at a time.
 #include <cstddef>
 #include <functional>
 #include <string>
@@ -26,9 +26,12 @@ struct MaskExportStats {
 // Writes one PNG per layer as <folder>/<prefix>NNNNN.png, or, when output_path ends in .sl1 or
 // .sl1s (any case), a Prusa SL1/SL1S archive of the same PNGs plus config.ini and
 // prusaslicer.ini, or, when it ends in .goo, an Elegoo .goo file (goo_writer.h; a portrait
-// profile is refused), or, when it ends in .pwmx, .pwma, .pwmb, .pm5, .pm5s or .pm4n, an Anycubic
-// Photon Workshop file of the version that extension's printer takes, or the profile's
-// file_version (photon_workshop_writer.h; a portrait profile is refused). Multithreaded; only a few layers are held in memory at a time. Atomic:
+// profile is refused), or, when it ends in .ctb, a Chitubox .ctb file of the profile's
+// file_version, 3 or 4 (0: 4), unencrypted (ctb_writer.h), or, when it ends in .pwmx, .pwma,
+// .pwmb, .pm5, .pm5s or .pm4n, an Anycubic Photon Workshop file of the version that extension's
+// printer takes, or the profile's file_version (photon_workshop_writer.h; a portrait profile is
+// refused). The masks have the grey levels the file holds (print_formats.h). Multithreaded; only
+// a few layers are held in memory at a time. Atomic:
 // nothing is left under the final name on failure. A point of a closed contour whose x or y is
 // not finite is refused (Error naming the point and layer).
 MaskExportStats export_masks(const Slices& s, const PrinterProfile& profile,
