@@ -42,8 +42,7 @@ struct GooSummary {
 };
 
 // Each layer's lift and retract are the profile's (the bottom layers' own), one stage; the wait
-// after the retract is the light-off delay plus what makes the moves take the profile's
-// layer_move_s when they take less.
+// after the retract is lift_fields.h's.
 using GooLayerRecord = std::function<const std::vector<uint8_t>&(size_t k)>;
 
 void write_goo(const std::string& path, const GooJob& job, const GooLayerRecord& layer_record,
