@@ -197,13 +197,17 @@ TEST_F(CtbFiles, EveryLayerReadsBackAsTheMaskVersions3And4BinaryAndAntialiased) 
       }
 }
 
-TEST_F(CtbFiles, Levels256AreFoldedToTheFormatsCodes) {
-  // A 256-level anti-aliased mask: each level stored as its code level >> 1, read back as 0 or 2c + 1.
+TEST_F(CtbFiles, Levels256AreExportedAsTheNearestLevelsTheFileHolds) {
+  // A 256-level anti-aliased profile: export draws the masks with the 128 levels a .ctb holds
+  // (grey_levels.h), each stored as its code level >> 1 and read back as 0 or 2c + 1.
   const Slices s = make_slices(part_layers());
   PrinterProfile p = small_display();
   p.antialiasing = true;
+  ASSERT_EQ(p.grey_levels, 256);
   export_masks(s, p, path("grey.ctb"));
-  expect_layers_equal_the_masks(path("grey.ctb"), s, p);
+  PrinterProfile held = p;
+  held.grey_levels = 128;
+  expect_layers_equal_the_masks(path("grey.ctb"), s, held);
   const std::vector<uint8_t> wall = raster(s, 1, p);
   EXPECT_TRUE(std::any_of(wall.begin(), wall.end(), [](uint8_t v) { return ctb_level(v) != v; }));
 }
@@ -340,12 +344,12 @@ TEST_F(CtbFiles, TheHeaderAndTablesCarryTheProfileAndTheJob) {
     p.printer_model = "ELEGOO MARS";
     export_masks(s, p, path("h.ctb"));
     const std::string b = read_bytes(path("h.ctb"));
-    // The light-off delays: each light-off plus what brings the moves up to 20 s.
-    const float bottom_off = 20 - 60 * (7.0f / 40 + 7.0f / 100) + 1.5f, off = 20 - 60 * (4.0f / 60 + 4.0f / 120) + 0.5f;
+    // The light-off delays: what brings the moves up to 20 s, longer than each light-off.
+    const float bottom_off = 20 - 60 * (7.0f / 40 + 7.0f / 100), off = 20 - 60 * (4.0f / 60 + 4.0f / 120);
     const size_t v4_at = kNameAt + 11 + 320, table_at = version == 4 ? v4_at + 464 : kNameAt + 11;
     SCOPED_TRACE(version);
     // Header.
-    EXPECT_EQ(le32(b, 0), 0x12FD0086u);
+    EXPECT_EQ(le32(b, 0), version == 4 ? 0x12FD0106u : 0x12FD0086u);  // as Chitubox writes each version
     EXPECT_EQ(le32(b, 4), uint32_t(version));
     EXPECT_FLOAT_EQ(f32(b, 8), 19.2f);
     EXPECT_FLOAT_EQ(f32(b, 12), 19.2f);

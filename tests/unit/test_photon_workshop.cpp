@@ -147,18 +147,24 @@ TEST_F(PhotonWorkshopFiles, EveryLayerReadsBackAsTheMaskInEveryKindAndVersion) {
       }
 }
 
-TEST_F(PhotonWorkshopFiles, A256LevelMaskKeepsTheCodesLevelShiftedRightBy4) {
+TEST_F(PhotonWorkshopFiles, A256LevelProfileIsExportedAsTheNearestLevelsTheFileHolds) {
+  // Export draws a 256-level profile's masks with the 16 levels an Anycubic file holds
+  // (grey_levels.h), each stored as its code level >> 4 and read back as 17c.
   const Slices s = make_slices(part_layers());
   PrinterProfile p = small_display();
   p.antialiasing = true;
   p.grey_levels = 256;
   export_masks(s, p, path("g.pwmx"));
   const std::vector<MaskImage> images = read_stack(path("g.pwmx"));
+  PrinterProfile held = p;
+  held.grey_levels = 16;
+  size_t moved = 0;
   for (size_t k = 0; k < s.layers(); ++k) {
-    std::vector<uint8_t> expected = raster(s, k, p);
-    for (uint8_t& v : expected) v = uint8_t(17 * (v >> 4));
+    const std::vector<uint8_t> full = raster(s, k, p), expected = raster(s, k, held);
+    for (size_t i = 0; i < full.size(); ++i) moved += full[i] != expected[i];
     EXPECT_TRUE(images[k].pixels == expected) << k;
   }
+  EXPECT_GT(moved, 0u);
 }
 
 TEST_F(PhotonWorkshopFiles, RunsAreEncodedAtTheFormatsLimits) {
@@ -248,7 +254,8 @@ TEST_F(PhotonWorkshopFiles, TheTablesCarryTheProfileAndTheJobInEachVersion) {
       EXPECT_FLOAT_EQ(f32(b, h + 16), 120);  // the larger side of an 80 x 120 um pixel
       EXPECT_FLOAT_EQ(f32(b, h + 20), 1);
       EXPECT_FLOAT_EQ(f32(b, h + 24), 2);
-      EXPECT_FLOAT_EQ(f32(b, h + 28), 0.5);
+      // The wait before cure: what brings the moves up to layer_move_s, longer than the light-off.
+      EXPECT_FLOAT_EQ(f32(b, h + 28), float(8 - 60 * (4.0 / 120 + 4.0 / 180)));
       EXPECT_FLOAT_EQ(f32(b, h + 32), 20);
       EXPECT_FLOAT_EQ(f32(b, h + 36), 1);
       EXPECT_FLOAT_EQ(f32(b, h + 40), 4);

@@ -19,8 +19,10 @@
 
 namespace slicereuse {
 
+// Versions 2 and 3 begin with kCtbMagic, version 4 with kCtbMagicV4 (as Chitubox writes them; the
+// layouts differ only as the version says).
 inline constexpr uint32_t kCtbMagic = 0x12FD0086;
-inline constexpr uint32_t kCtbMagicUVtoolsV4 = 0x12FD0106;  // UVtools' .v4.ctb: the same layout
+inline constexpr uint32_t kCtbMagicV4 = 0x12FD0106;
 inline constexpr uint32_t kCtbEncryptedMagic = 0x12FD0107;  // Chitu's closed scheme: not written nor read
 inline constexpr uint32_t kCbddlpMagic = 0x12FD0019;        // the 1-bit sibling: not read
 

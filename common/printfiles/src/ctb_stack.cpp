@@ -28,8 +28,8 @@ CtbIndex index_ctb_file(int fd, const std::string& path) {
                 "' is an encrypted .ctb (magic 12FD0107, the closed scheme of newer Chitu boards), which is not read");
   if (magic == kCbddlpMagic)
     throw Error("'" + path + "' is a .cbddlp/.photon file (magic 12FD0019, 1-bit layers), which is not read");
-  if (magic != kCtbMagic && magic != kCtbMagicUVtoolsV4)
-    throw Error("'" + path + "' is not a .ctb file: its first 4 bytes are not the magic 86 00 FD 12");
+  if (magic != kCtbMagic && magic != kCtbMagicV4)
+    throw Error("'" + path + "' is not a .ctb file: its first 4 bytes are not the magic 86 00 FD 12 or 06 01 FD 12");
   read_at(fd, 0, head, kCtbHeaderSize, path, format("the header (%zu bytes)", kCtbHeaderSize));
   CtbIndex c;
   const uint32_t width = little_endian(head + kCtbResolutionAt), height = little_endian(head + kCtbResolutionAt + 4);

@@ -219,7 +219,7 @@ std::vector<uint8_t> front(const CtbJob& job, const Layout& l, const CtbSummary&
   std::vector<uint8_t> out;
   out.reserve(l.table_at);
   LittleEndian w{out};
-  w.u32(kCtbMagic);
+  w.u32(l.version >= 4 ? kCtbMagicV4 : kCtbMagic);
   w.u32(uint32_t(l.version));
   w.f32(m.width * m.column_um / 1000);
   w.f32(m.height * m.row_um / 1000);

@@ -90,7 +90,7 @@ bool starts_as_ctb(const std::string& path) {
   uint8_t head[4];
   if (!f || std::fread(head, 1, sizeof head, f.get()) != sizeof head) return false;
   const uint32_t magic = uint32_t(head[0]) | uint32_t(head[1]) << 8 | uint32_t(head[2]) << 16 | uint32_t(head[3]) << 24;
-  return magic == kCtbMagic || magic == kCtbMagicUVtoolsV4 || magic == kCtbEncryptedMagic;
+  return magic == kCtbMagic || magic == kCtbMagicV4 || magic == kCtbEncryptedMagic;
 }
 
 std::string zip_message(int code) {
