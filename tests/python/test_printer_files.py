@@ -85,6 +85,15 @@ class Expect:
     def bottom(self, k):
         return k < self.bottom_layers
 
+    def light_off_s(self, bottom):
+        """The wait after the retract, as the product writes it (goo_writer.cpp's
+        wait_after_retract_s): the profile's light-off plus what makes the moves take
+        layer_move_s when they take less."""
+        b = "bottom_" if bottom else ""
+        lift = self.lift[f"{b}height_mm"]
+        moves_s = 60 * (lift / self.lift[f"{b}speed_mm_min"] + lift / self.lift[f"{b}retract_speed_mm_min"])
+        return max(0.0, self.layer_move_s - moves_s) + self.lift[f"{b}light_off_s"]
+
 
 def expect_of(printer, thickness=THICKNESS):
     """The figures of presets.json's `printer`; fails, saying so, while the preset is missing."""
@@ -155,9 +164,9 @@ def check_header(path, expect, layers):
         m.close("bottom exposure (s)", h.bottom_exposure_s, f32(e.bottom_exposure_s))
         m.equal("bottom layers", h.bottom_layers, e.bottom_layers)
         m.equal("print parameters' bottom layers", h.bottom_layers_2, e.bottom_layers)
-        m.close("light-off (s)", h.light_off_s, f32(lift["light_off_s"]))
-        m.close("print parameters' light-off (s)", h.light_off_s_2, f32(lift["light_off_s"]))
-        m.close("bottom light-off (s)", h.bottom_light_off_s, f32(lift["bottom_light_off_s"]))
+        m.close("light-off (s)", h.light_off_s, f32(e.light_off_s(False)))
+        m.close("print parameters' light-off (s)", h.light_off_s_2, f32(e.light_off_s(False)))
+        m.close("bottom light-off (s)", h.bottom_light_off_s, f32(e.light_off_s(True)))
         # Version 4 holds a lift as its total and its second stage (UVtools: total = first + second).
         m.close("bottom lift (mm)", h.bottom_lift_mm, f32(lift["bottom_height_mm"]))
         m.close("lift (mm)", h.lift_mm, f32(lift["height_mm"]))
@@ -176,8 +185,7 @@ def check_header(path, expect, layers):
             b = e.bottom(k)
             m.close(f"layer {k}'s z (mm)", layer.z_mm, f32((k + 1) * t))
             m.close(f"layer {k}'s exposure (s)", layer.exposure_s, f32(e.layer_exposure_s(k)))
-            m.close(f"layer {k}'s light-off (s)", layer.light_off_s,
-                    f32(lift["bottom_light_off_s" if b else "light_off_s"]))
+            m.close(f"layer {k}'s light-off (s)", layer.light_off_s, f32(e.light_off_s(b)))
             if layer.ext is not None:
                 m.close(f"layer {k}'s lift (mm)", layer.ext["lift_mm"],
                         f32(lift["bottom_height_mm" if b else "height_mm"]))
@@ -200,7 +208,7 @@ def check_header(path, expect, layers):
         m.close("bottom exposure (s)", h.bottom_exposure_s, f32(e.bottom_exposure_s))
         m.close("bottom layers", h.bottom_layers, e.bottom_layers)
         # UVtools: the wait before cure is the light-off delay; speeds are mm/s.
-        m.close("light-off (s)", h.wait_before_cure_s, f32(lift["light_off_s"]))
+        m.close("light-off (s)", h.wait_before_cure_s, f32(e.light_off_s(False)))
         m.close("lift (mm)", h.lift_mm, f32(lift["height_mm"]))
         m.close("lift speed (mm/s)", h.lift_speed_mm_s, f32(lift["speed_mm_min"] / 60))
         m.close("retract speed (mm/s)", h.retract_speed_mm_s, f32(lift["retract_speed_mm_min"] / 60))
