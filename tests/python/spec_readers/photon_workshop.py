@@ -357,8 +357,9 @@ class PwFile:
         count, index = struct.unpack("<2I", self._span(m.sublayer_definition_address + NAMED.size, 8,
                                                        "the SUBIMGS table"))
         if count != len(self.layers) or length != NAMED.size + 8 + SUBLAYER_DEF.size * count:
+            need = NAMED.size + 8 + SUBLAYER_DEF.size * len(self.layers)
             raise ValueError(f"{name}: the SUBIMGS table has {count} layers in {length} bytes; the file has "
-                             f"{len(self.layers)} layers, which make {NAMED.size + 8 + SUBLAYER_DEF.size * len(self.layers)}")
+                             f"{len(self.layers)} layers, which make {need}")
         table = self._span(m.sublayer_definition_address + NAMED.size + 8, SUBLAYER_DEF.size * count, "SUBIMGS")
         subs = []
         for k in range(count):
