@@ -340,7 +340,7 @@ def printer_jobs(make_family, tmp_path_factory):
                             f"(no writer of that format)")
             plates = sr.plates(members[0], members[1:], THICKNESS, out / "plates", profile=profile, verify=True,
                                extension=expect.extension)
-            assert plates["failed"] == 0, plates
+            assert plates["failed"] == 0 and sum(len(p["members"]) for p in plates["plates"]) == PLATE_MEMBERS, plates
             plate_pngs = sr.plates(members[0], members[1:], THICKNESS, out / "plate_pngs", profile=profile,
                                    extension="", placements=out / "plates" / "plates.json")
             assert plate_pngs["failed"] == 0, plate_pngs
