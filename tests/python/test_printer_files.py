@@ -40,10 +40,10 @@ PROFILE_DEFAULTS = {"grey_levels": 256, "file_version": 0,
                              "bottom_light_off_s": 0, "light_off_s": 0}}
 NEWEST_CTB_VERSION = 4
 PLATE_MEMBERS = 10
-# The parts' height: 30 layers of THICKNESS, past the bottom and faded layers of every preset,
-# and few enough for the 12K displays (59 M pixels a layer) to stay cheap.
-PART_HEIGHT = 3.0
-LAYERS = 30
+# The parts' height: 20 layers of THICKNESS, past every preset's 8 bottom layers, and few enough
+# for the 12K displays (59 M pixels a layer) to stay cheap.
+PART_HEIGHT = 2.0
+LAYERS = 20
 
 
 def f32(x):
