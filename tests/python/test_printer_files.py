@@ -90,13 +90,13 @@ class Expect:
         return k < self.bottom_layers
 
     def light_off_s(self, bottom):
-        """The wait after the retract, as the product writes it (goo_writer.cpp's
-        wait_after_retract_s): the profile's light-off plus what makes the moves take
-        layer_move_s when they take less."""
+        """The wait after the retract: long enough that the moves and the wait take layer_move_s,
+        printer_profile.h's "time between two exposures" that print_seconds counts per layer, and
+        at least the profile's light-off (the light stays off that long after the retract)."""
         b = "bottom_" if bottom else ""
         lift = self.lift[f"{b}height_mm"]
         moves_s = 60 * (lift / self.lift[f"{b}speed_mm_min"] + lift / self.lift[f"{b}retract_speed_mm_min"])
-        return max(0.0, self.layer_move_s - moves_s) + self.lift[f"{b}light_off_s"]
+        return max(self.lift[f"{b}light_off_s"], self.layer_move_s - moves_s)
 
 
 def expect_of(printer, thickness=THICKNESS):
