@@ -629,3 +629,38 @@ def test_ctb_reader_refuses_what_the_specification_does_not_allow(tmp_path, bug,
     with pytest.raises(ValueError, match=re.escape(message)):
         f = ctb.read_ctb(tmp_path / "bad.ctb")
         f.layer_image(0)
+
+
+def pw_bug_cases():
+    """(name, the bug on a Photon Workshop file's bytes given its reading, what the reader says)."""
+    def at(f, address, fmt, value):
+        return lambda d: struct.pack_into(fmt, d, address, value)
+    return [
+        ("file mark", lambda f: lambda d: d.__setitem__(slice(0, 8), b"ANYCUBIX"), lambda f: "not 'ANYCUBIC'"),
+        ("version", lambda f: at(f, 12, "<I", 600), lambda f: "version 600, not one of"),
+        ("table count", lambda f: at(f, 16, "<I", f.mark.tables + 1),
+         lambda f: f"counts {f.mark.tables + 1} tables; version {f.mark.version} files have {f.mark.tables}"),
+        ("header length", lambda f: at(f, f.mark.header_address + 12, "<I", f.header.table_length + 4),
+         lambda f: f"the HEADER table's length is {f.header.table_length + 4}"),
+        ("machine mark", lambda f: lambda d: d.__setitem__(slice(f.mark.machine_address, f.mark.machine_address + 7),
+                                                            b"MACHINX"),
+         lambda f: "should begin with the mark 'MACHINE'"),
+        ("layer outside the file", lambda f: at(f, f.mark.layer_definition_address + 20, "<I", len(f.data)),
+         lambda f: "layer 0's data at offset"),
+        ("bytes after the image",
+         lambda f: at(f, f.mark.layer_definition_address + 24, "<I", f.layers[0].data_size + 1),
+         lambda f: "1 bytes after the runs that fill the image"),
+    ]
+
+
+@pytest.mark.parametrize("case", range(len(pw_bug_cases())), ids=[c[0].replace(" ", "_") for c in pw_bug_cases()])
+def test_photon_workshop_reader_refuses_what_the_specification_does_not_allow(printer_jobs, tmp_path, case):
+    """The Photon Workshop reader on a good .pwmx with one structural fault: it raises, in words."""
+    jobs = printer_jobs("anycubic_photon_mono_x")
+    good = pw.read_photon_workshop(jobs.member)
+    _, bug, message = pw_bug_cases()[case]
+    data = bytearray(good.data)
+    bug(good)(data)
+    (tmp_path / "bad.pwmx").write_bytes(bytes(data))
+    with pytest.raises(ValueError, match=re.escape(message(good))):
+        pw.read_photon_workshop(tmp_path / "bad.pwmx").layer_image(0)
