@@ -41,7 +41,7 @@ Z_CHANGE_FLAGS = {None: [], "band": ["--z-band"], "everywhere": ["--z-change"]}
 
 @pytest.fixture(scope="session")
 def make_family(tmp_path_factory):
-    """make_family(shape, members, z_change=None, faces=3000, seed=1) -> [member paths].
+    """make_family(shape, members, z_change=None, faces=3000, seed=1, height=HEIGHT) -> [member paths].
     z_change: None (members differ in x-y only), "band" (z also changes within one band of
     heights) or "everywhere" (z changes at every height); see tools/family/family.h.
     shuffle: members other than the base get renumbered vertices and faces (gen_family --shuffle),
@@ -52,12 +52,12 @@ def make_family(tmp_path_factory):
                     "(or set SLICEREUSE_GEN_FAMILY)")
     cache = {}
 
-    def make(shape, members, z_change=None, faces=3000, seed=1, shuffle=False):
-        key = (shape, members, z_change, faces, seed, shuffle)
+    def make(shape, members, z_change=None, faces=3000, seed=1, shuffle=False, height=HEIGHT):
+        key = (shape, members, z_change, faces, seed, shuffle, height)
         if key not in cache:
             out = tmp_path_factory.mktemp(f"{shape}_{z_change or 'xy'}{'_shuffled' if shuffle else ''}")
             cmd = [str(binary), "--shape", shape, "--faces", str(faces), "--members", str(members),
-                   "--height", str(HEIGHT), "--seed", str(seed), "--out", str(out)]
+                   "--height", str(height), "--seed", str(seed), "--out", str(out)]
             cmd += Z_CHANGE_FLAGS[z_change] + (["--shuffle"] if shuffle else [])
             subprocess.run(cmd, check=True, capture_output=True, text=True)
             cache[key] = [out / f"member_{m:03d}.ply" for m in range(members)]
