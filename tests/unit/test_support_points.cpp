@@ -18,6 +18,7 @@
 
 #include "error_of.h"
 #include "family.h"
+#include "shapes.h"
 #include "slicereuse/crossparam/surface_grid.h"
 #include "slicereuse/crossparam/surface_map.h"
 #include "slicereuse/mesh/fingerprint.h"
@@ -335,3 +336,27 @@ TEST(SupportPoints, RefuseSlicingsOfOtherMeshesTooManyPointsAndBadPositions) {
 }
 
 }  // namespace
+
+// A 2.5 mm ledge (a slab over a narrower column): wider than the masks' rule at every critical
+// angle, so it gets points at every one, even where it does not overhang (at 1 degree the
+// self-supporting distance, 0.05 / tan(1 degree) = 2.86 mm, exceeds it), and its far area is
+// covered within the head reach.
+TEST(SupportPoints, WideLedgeGetsPointsAtEveryCriticalAngle) {
+  Mesh ledge = test::make_box(0, 0, 0, 5, 5, 4);
+  const Mesh slab = test::make_box(0, 0, 3, 7.5, 5, 5);
+  const uint32_t offset = uint32_t(ledge.vertices());
+  ledge.V.insert(ledge.V.end(), slab.V.begin(), slab.V.end());
+  for (uint32_t i : slab.F) ledge.F.push_back(i + offset);
+  const Slices s = slice(ledge);
+  for (const double angle : {1.0, 5.0, 20.0, 45.0, 70.0, 89.0}) {
+    SCOPED_TRACE(angle);
+    SupportPointOptions o = options();
+    o.critical_angle_deg = angle;
+    const SupportPoints pts = generate_support_points(ledge, s, o);
+    size_t on_ledge = 0;
+    for (size_t i = 0; i < pts.size(); ++i) on_ledge += pts.xyz[3 * i + 2] > 2.9 && pts.xyz[3 * i] > 5;
+    std::cout << "[ support  ] ledge at " << angle << " degrees: " << on_ledge << " points on it\n";
+    EXPECT_GT(on_ledge, 0u);
+    expect_covered(s, pts, o, "ledge");
+  }
+}
