@@ -327,6 +327,27 @@ TEST(SupportTree, LayersBelow) {
   EXPECT_ERROR(support_layers_below(raised(1e9), 1e-3), "more than 10000000");
 }
 
+// The pad's top never reaches the part's first plane: elevation 0 with the pad (the part sunk
+// into it, not modelled) is refused in words, and a thin pad under a tiny elevation is not
+// rounded up into the part.
+TEST(SupportTree, PadTopStaysBelowThePart) {
+  SupportTreeOptions o;
+  o.pad_wall_thickness_mm = 0.07;
+  o.object_elevation_mm = 0;
+  EXPECT_ERROR(support_layers_below(o, 0.05),
+               "an object elevation of 0 mm with the pad on needs the part sunk into its pad (PrusaSlicer's zero "
+               "elevation), which the supports do not model: the pad's top (0.07 mm thick) would lie in the part; "
+               "raise the part (an elevation above 0) or turn the pad off");
+  o.pad_enable = false;
+  EXPECT_EQ(support_layers_below(o, 0.05), 0u);
+  o.pad_enable = true;
+  for (const double elevation : {0.001, 0.01, 0.02, 0.5}) {
+    SCOPED_TRACE(elevation);
+    o.object_elevation_mm = elevation;
+    EXPECT_LT(support_ground_z(0, 0.05, o) + o.pad_wall_thickness_mm, 0);
+  }
+}
+
 TEST(SupportTree, BadInputInWords) {
   const Mesh part = test::make_box(0, 0, 0, 4, 4, 2);
   const SupportPoints pts = points_on(part, {face_near(part, 1, 2, 0)});

@@ -137,8 +137,16 @@ size_t support_layers_below(const SupportTreeOptions& o, double thickness) {
     throw Error(format("the layer thickness is %g mm; it must be a finite, positive number", thickness));
   if (!(std::isfinite(elevation_mm) && elevation_mm >= 0))
     throw Error(format("the object's elevation is %g mm; it must be a finite, non-negative number", elevation_mm));
+  if (o.pad_enable && elevation_mm == 0)
+    throw Error(format("an object elevation of 0 mm with the pad on needs the part sunk into its pad (PrusaSlicer's "
+                       "zero elevation), which the supports do not model: the pad's top (%g mm thick) would lie in "
+                       "the part; raise the part (an elevation above 0) or turn the pad off",
+                       o.pad_wall_thickness_mm));
   const double below = elevation_mm + (o.pad_enable ? o.pad_wall_thickness_mm : 0);
-  const double layers = std::round(below / thickness);
+  // Rounded to whole layers, but never so far down that the pad's top reaches the part's first
+  // plane: at least one layer more than the pad's thickness holds.
+  const double layers = std::max(std::round(below / thickness),
+                                 o.pad_enable ? std::floor(o.pad_wall_thickness_mm / thickness) + 1 : 0.0);
   if (layers > double(kMaxLayers))
     throw Error(format("an elevation of %g mm is %.0f layers of %g mm, more than %zu", below, layers, thickness,
                        kMaxLayers));

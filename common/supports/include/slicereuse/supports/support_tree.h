@@ -71,13 +71,15 @@ SupportTree build_support_tree(const Mesh& part, const SupportPoints& points, do
 
 // Where the structure stands for a part sliced from z_start in layers of thickness: the part
 // object_elevation_mm above the pad's top (PrusaSlicer's support_object_elevation), so the pad's
-// bottom lies elevation plus pad thickness below z_start, rounded to whole layers: the part's
+// bottom lies elevation plus pad thickness below z_start, rounded to whole layers (but at least
+// one layer more than the pad's thickness, so the pad's top stays below z_start): the part's
 // layers keep their planes and the job gains that many layers below it.
-// Elevation 0 (the part on the plate, or sunk into the pad) is out of scope for the structure:
-// then ground_z = z_start, the pad would fill the part's own lowest layers and every point
-// under its top is refused; a part on the plate is printed without supports.
+// Elevation 0 without a pad: the part on the plate, ground_z = z_start, every point at or under
+// it refused; a part on the plate is printed without supports. Elevation 0 with the pad
+// (PrusaSlicer's part sunk into its pad, pad_around_object) is not modelled: refused.
 // Throws Error for a thickness that is not positive, an elevation that is negative or not
-// finite, or more than kMaxLayers layers.
+// finite, elevation 0 with the pad ("an object elevation of 0 mm with the pad on needs the part
+// sunk into its pad ..."), or more than kMaxLayers layers.
 size_t support_layers_below(const SupportTreeOptions& options, double thickness);
 inline double support_ground_z(double z_start, double thickness, const SupportTreeOptions& options) {
   return z_start - double(support_layers_below(options, thickness)) * thickness;
