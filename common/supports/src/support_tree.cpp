@@ -107,10 +107,15 @@ SupportTree build_support_tree(const Mesh& part, const SupportPoints& points, do
     const double head_bottom = std::max(z_head_bottom, floor);
     add_cone(x, y, head_bottom, head_r(head_bottom), z_top, r_front, true);
     if (!std::isnan(way.blocked_z)) {
-      // A foot: a small head upside down, from the pillar into the part under it.
+      // A foot: a small head upside down, from the pillar into the part where the highest ray
+      // met it; under a rim ray's hit, beside the axis, it leans from the pillar to the hit
+      // rather than ending in the air on the axis. Its zone is the vertical cone around the
+      // hit that holds it (the lean, rim_radius at the top, added to its radius).
       const double foot_top = std::min(z_head_bottom, way.blocked_z + kFootRiseMm);
-      const double foot_bottom = std::max((std::isnan(way.axis_z) ? way.blocked_z : way.axis_z) - pen, floor);
-      add_cone(x, y, foot_bottom, r_front, foot_top, r_pillar, true);
+      const double foot_bottom = std::max(way.blocked_z - pen, floor);
+      const double bx = way.blocked_x, by = way.blocked_y;
+      append_loft(m, circle_outline(bx, by, r_front), foot_bottom, circle_outline(x, y, r_pillar), foot_top);
+      tree.head_zones.push_back({bx, by, foot_bottom, foot_top, r_front, r_pillar + std::hypot(x - bx, y - by)});
       if (foot_top < z_head_bottom) add_cone(x, y, foot_top, r_pillar, z_head_bottom, r_pillar, false);
       ++tree.on_part;
       continue;

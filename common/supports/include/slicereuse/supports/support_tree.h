@@ -11,15 +11,17 @@
 //     where the way down is blocked by the part (a vertical ray through the pillar's axis or its
 //     rim, with clearance, hits it), the pillar ends on the part with a small head
 //     (head_front_diameter_mm, penetrating head_penetration_mm) instead: a foot, upside down,
-//     whose cone starts 1 mm above the highest hit; where the part below is nearer than the
-//     head's width, the head itself ends in it.
+//     whose cone starts 1 mm above the highest hit and ends in the part at that hit (leaning
+//     from the axis when a rim ray's hit is the highest); where the part below is nearer than
+//     the head's width, the head itself ends in it.
 // Every cone and cylinder is a 16-gon (support_shapes.h), the pad a loft between two outlines;
 // each shell closed, its faces counter-clockwise seen from outside.
 // pad (pad_enable): under everything that reaches ground_z, pad_wall_thickness_mm thick, its top
 //   the convex hull of the bases grown by pad_brim_mm, its walls sloping in towards the plate at
 //   pad_wall_slope_deg (its bottom smaller by thickness / tan(slope)), as PrusaSlicer's pad.
 // head_zones: where the structure may enter the part (each head, and each foot on the part), as
-// vertical cones: the only places the part's and the supports' sections may overlap.
+// vertical cones (a leaning foot's around its tip, wide enough to hold it): the only places the
+// part's and the supports' sections may overlap.
 // No points: no structure (an empty mesh, ground_z set); no pillar reaching the ground: no pad.
 // Throws Error when a point lies at or below the pad's top (ground_z without a pad), the
 // structure would be taller than max_height_mm ("... pillar of H mm, taller than the printer's
