@@ -153,7 +153,8 @@ ParamList<BuildParams> build_params() {
   ParamList<BuildParams> l;
   l.mesh(&BuildParams::points_layer, "points_layer", "Support points layer",
          "The point layer of the current mesh's support points (Generate or Transfer Support Points add one; "
-         "points may be deleted or moved on the surface there). Ignored when support_points_file is given. In a "
+         "points may be deleted or moved on the surface there; a point farther than 1 mm from the surface is "
+         "refused). Ignored when support_points_file is given. In a "
          ".mlx script: the 0-based index of the layer as loaded.")
       .file(&BuildParams::support_points_file, ParamType::FileOpen, "support_points_file", "Support points file",
             "*.srp", nullptr,
@@ -169,7 +170,11 @@ Result run_build(const BuildParams& p, Host& host) {
   const Mesh part = host.current_mesh();
   SupportPoints points;
   if (p.support_points_file.empty()) {
-    points = locate_support_points(part, host.mesh_at(p.points_layer).V);
+    const Mesh layer = host.mesh_at(p.points_layer);
+    if (layer.faces() > 0)
+      throw Error(format("the support points layer (layer %d) is a mesh of %zu faces, not a point layer",
+                         p.points_layer, layer.faces()));
+    points = locate_support_points(part, layer.V, {}, kUserPointReachMm);
   } else {
     points = read_support_points(p.support_points_file);
     validate_support_points(points, &part);

@@ -377,3 +377,15 @@ TEST(SupportPoints, HighDensitiesHoldOverhangsWithinTheirRadius) {
     previous = p.points.size();
   }
 }
+
+// A user's point is moved onto the surface from within the cap only: beyond it, refused in
+// words naming the point and its distance.
+TEST(SupportPoints, LocatingRefusesPointsFartherThanTheCap) {
+  const Mesh box = test::make_box(0, 0, 0, 4, 4, 2);
+  const SupportPoints near = locate_support_points(box, {1, 2, -0.5, 2, 2, 0.5}, {}, kUserPointReachMm);
+  ASSERT_EQ(near.size(), 2u);
+  EXPECT_EQ(near.xyz, (std::vector<double>{1, 2, 0, 2, 2, 0}));
+  EXPECT_ERROR(locate_support_points(box, {1, 2, -0.5, 2, 2, -2.5}, {}, kUserPointReachMm),
+               "support point 2 at (2, 2, -2.5) mm is 2.5 mm from the mesh's surface, farther than the 1 mm a point "
+               "may be moved onto it: the points are not this mesh's, or were moved off it");
+}
