@@ -187,10 +187,10 @@ Result run_build(const BuildParams& p, Host& host) {
       part, points, support_ground_z(z_start, p.layer_thickness, p.tree), p.tree);
   host.add_mesh_layer(host.current_mesh_name() + " supports", tree.mesh);
   const double seconds = seconds_since(start);
-  host.log(format("Build Supports: %zu points, %zu pillars to the %s, %zu ending on the part, ground at z %g mm "
-                  "(%zu layers below the part's first), %zu faces, %.3f s",
-                  points.size(), tree.pillars, p.tree.pad_enable ? "pad" : "plate", tree.on_part, tree.ground_z, below,
-                  tree.mesh.faces(), seconds));
+  host.log(format("Build Supports: %zu points (%zu dropped: their surface faces up), %zu pillars to the %s, %zu "
+                  "ending on the part, ground at z %g mm (%zu layers below the part's first), %zu faces, %.3f s",
+                  points.size(), tree.up_facing, tree.pillars, p.tree.pad_enable ? "pad" : "plate", tree.on_part,
+                  tree.ground_z, below, tree.mesh.faces(), seconds));
   return {{"points", int64_t(points.size())},
           {"pillars", int64_t(tree.pillars)},
           {"on_part", int64_t(tree.on_part)},
@@ -240,7 +240,8 @@ FilterSpec build_supports_filter() {
       "<p>Builds the current mesh's support structure from its support points (a point layer, or a "
       "support-points file), after PrusaSlicer's SLA supports with its SL1S defaults: at each point a head "
       "(a cone whose tip enters the part), a pillar down to the pad or the plate standing on a base cone, or "
-      "onto the part with a small head where the way down is blocked; optionally a pad under it all.</p>"
+      "onto the part with a small head where the way down is blocked; optionally a pad under it all. A point "
+      "whose surface faces up (within 30 degrees of straight up) gets none, as in PrusaSlicer.</p>"
       "<p>The part is not moved: the supports stand <i>object elevation</i> (rounded to whole layers) below "
       "its first layer, so the print jobs slice the part on its own planes and add those layers below it. "
       "The structure is added as a new mesh layer, <i>&lt;mesh&gt; supports</i>.</p>") +

@@ -173,7 +173,8 @@ size_t expect_covered(const Slices& s, const SupportPoints& points, const Suppor
   return overhang_samples;
 }
 
-// Valid, on the mesh, each on a downward-facing face or a face its layer's plane crosses.
+// Valid, on the mesh, each on a downward-facing face or a face its layer's plane crosses, none
+// on a surface facing up.
 void expect_on_mesh(const Mesh& m, const Slices& s, const SupportPoints& points) {
   validate_support_points(points, &m);
   const SurfaceGrid grid(m);
@@ -191,6 +192,9 @@ void expect_on_mesh(const Mesh& m, const Slices& s, const SupportPoints& points)
   }
   EXPECT_EQ(off, 0u);
   EXPECT_EQ(wrong_face, 0u);
+  size_t up = 0;
+  for (size_t i = 0; i < points.size(); ++i) up += faces_up(points, i);
+  EXPECT_EQ(up, 0u) << "points whose surface faces up";
   std::cout << "[ support  ] " << contour << " of " << points.size() << " points on contour faces\n";
 }
 
@@ -388,4 +392,23 @@ TEST(SupportPoints, LocatingRefusesPointsFartherThanTheCap) {
   EXPECT_ERROR(locate_support_points(box, {1, 2, -0.5, 2, 2, -2.5}, {}, kUserPointReachMm),
                "support point 2 at (2, 2, -2.5) mm is 2.5 mm from the mesh's surface, farther than the 1 mm a point "
                "may be moved onto it: the points are not this mesh's, or were moved off it");
+}
+
+// A box raised off the plate whose walls lean out by 1e-7 mm over its 2 mm (a mesh's rounding):
+// its first layer's contour lies a hair outside the bottom face, on the walls' slivers, and
+// the rays from below must still find the bottom face, not the walls (within 30 degrees of
+// straight down, the only surface here that needs support).
+TEST(SupportPoints, BottomPointsStayOffNearlyVerticalWalls) {
+  Mesh box = test::make_box(0, 0, 0, 4, 4, 2);
+  for (size_t v = 0; v < box.vertices(); ++v)
+    if (box.V[3 * v + 2] == 2)
+      for (int a = 0; a < 2; ++a) box.V[3 * v + a] += box.V[3 * v + a] == 0 ? -1e-7 : 1e-7;
+  const Slices s = slice(box);
+  const SupportPoints pts = generate_support_points(box, s, options());
+  size_t on_walls = 0;
+  for (size_t i = 0; i < pts.size(); ++i) on_walls += !(pts.normal[3 * i + 2] < -std::cos(M_PI / 6));
+  std::cout << "[ support  ] leaning box: " << on_walls << " of " << pts.size() << " points on its walls\n";
+  EXPECT_GT(pts.size(), 0u);
+  EXPECT_EQ(on_walls, 0u);
+  expect_covered(s, pts, options(), "leaning box");
 }

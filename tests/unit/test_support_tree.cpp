@@ -289,6 +289,22 @@ TEST(SupportTree, FootUnderABlockedRimStandsOnThePart) {
   check_sections(part, tree);
 }
 
+// PrusaSlicer builds no head under a point whose surface faces up (its normal within 30 degrees
+// of +z): such a point (a user's, on the top face) is dropped and counted; one on the bottom
+// face beside it is built.
+TEST(SupportTree, PointsFacingUpAreDropped) {
+  const Mesh part = test::make_box(0, 0, 0, 4, 4, 2);
+  const SupportPoints pts = points_on(part, {face_near(part, 1, 2, 2), face_near(part, 1, 2, 0)});
+  ASSERT_EQ(pts.normal[2], 1);
+  ASSERT_EQ(pts.normal[5], -1);
+  const SupportTree tree = build_support_tree(part, pts, -6, SupportTreeOptions{});
+  EXPECT_EQ(tree.up_facing, 1u);
+  EXPECT_EQ(tree.pillars, 1u);
+  EXPECT_EQ(tree.on_part, 0u);
+  EXPECT_EQ(tree.head_zones.size(), 1u);
+  check_sections(part, tree);
+}
+
 TEST(SupportTree, HeadReachingThePartBelowEndsInIt) {
   Mesh part = test::make_box(0, 0, 0, 10, 10, 2);
   const Mesh slab = test::make_box(0, 0, 4, 10, 10, 6);

@@ -64,6 +64,7 @@ SupportTree build_support_tree(const Mesh& part, const SupportPoints& points, do
   const double floor = ground_z + (o.pad_enable ? o.pad_wall_thickness_mm : 0);
   for (size_t i = 0; i < points.size(); ++i) {
     const double z = points.xyz[3 * i + 2];
+    if (faces_up(points, i)) continue;
     if (!(z > floor))
       throw Error(format("support point %zu at z = %g mm is below the %s at %g mm", i + 1, z,
                          o.pad_enable ? "pad's top" : "ground", floor));
@@ -88,6 +89,10 @@ SupportTree build_support_tree(const Mesh& part, const SupportPoints& points, do
     if (zone) tree.head_zones.push_back({x, y, z_bottom, z_top, r_bottom, r_top});
   };
   for (size_t i = 0; i < points.size(); ++i) {
+    if (faces_up(points, i)) {
+      ++tree.up_facing;
+      continue;
+    }
     const double x = points.xyz[3 * i], y = points.xyz[3 * i + 1], z = points.xyz[3 * i + 2];
     // Into a wall thinner than twice the penetration, the head goes halfway: it must not come
     // out of the part's other side.

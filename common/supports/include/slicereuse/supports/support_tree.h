@@ -22,11 +22,13 @@
 // head_zones: where the structure may enter the part (each head, and each foot on the part), as
 // vertical cones (a leaning foot's around its tip, wide enough to hold it): the only places the
 // part's and the supports' sections may overlap.
+// A point whose surface faces up (faces_up, support_points.h) gets nothing: counted in
+// up_facing, as PrusaSlicer drops it.
 // No points: no structure (an empty mesh, ground_z set); no pillar reaching the ground: no pad.
-// Throws Error when a point lies at or below the pad's top (ground_z without a pad), the
-// structure would be taller than max_height_mm ("... pillar of H mm, taller than the printer's
-// ... mm"), an option or ground_z is not a finite number of the right sign, the pad's walls
-// slope in by more than the base's radius and brim, or the points are inconsistent
+// Throws Error when a point (not facing up) lies at or below the pad's top (ground_z without a
+// pad), the structure would be taller than max_height_mm ("... pillar of H mm, taller than the
+// printer's ... mm"), an option or ground_z is not a finite number of the right sign, the pad's
+// walls slope in by more than the base's radius and brim, or the points are inconsistent
 // (validate_support_points) or the part has no faces.
 #include <cstddef>
 #include <vector>
@@ -65,6 +67,7 @@ struct SupportTree {
   std::vector<HeadZone> head_zones;
   size_t pillars = 0;         // reaching the pad or ground
   size_t on_part = 0;         // ending on the part
+  size_t up_facing = 0;       // points dropped: their surface faces up
   double ground_z = 0;
 };
 

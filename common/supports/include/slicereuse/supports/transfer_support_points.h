@@ -9,7 +9,8 @@
 //     points.h), or within the support radius of one; its layer is its own (the plate's planes
 //     are the source's) or, failing that, the layer whose plane is the first at or above its z
 //     or one next to that, as long as its z lies where a point of that layer may (from the plane
-//     below that layer's minus a layer to its own plus one);
+//     below that layer's minus a layer to its own plus one), and its surface does not face up
+//     (faces_up, support_points.h);
 //   otherwise dropped;
 //   added: the member's own islands and overhangs that no kept point covers get new points
 //     (generate_support_points with the kept points as existing);
