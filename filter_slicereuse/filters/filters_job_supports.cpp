@@ -56,7 +56,8 @@ ParamList<SupportTreeOptions> support_tree_params() {
       .number(&T::object_elevation_mm, "object_elevation", "Object elevation (mm)", d.object_elevation_mm,
               Range::at_least(0, "mm"),
               "How high the part stands above the plate (or the pad), in mm, rounded to whole layers; the part is "
-              "not moved: the supports stand that far below its first layer. 0: the part stands on the plate.")
+              "not moved: the supports stand that far below its first layer. 0: the part stands on the plate, "
+              "with the pad off (a part sunk into its pad is not modelled: 0 with the pad is refused).")
       .flag(&T::pad_enable, "pad_enable", "Pad", d.pad_enable,
             "A pad under the supports, holding them together on the plate.")
       .number(&T::pad_wall_thickness_mm, "pad_wall_thickness", "Pad wall thickness (mm)", d.pad_wall_thickness_mm,

@@ -153,7 +153,8 @@ ParamList<BuildParams> build_params() {
   ParamList<BuildParams> l;
   l.mesh(&BuildParams::points_layer, "points_layer", "Support points layer",
          "The point layer of the current mesh's support points (Generate or Transfer Support Points add one; "
-         "points may be deleted or moved on the surface there). Ignored when support_points_file is given. In a "
+         "points may be deleted or moved on the surface there; a point farther than 1 mm from the surface is "
+         "refused). Ignored when support_points_file is given. In a "
          ".mlx script: the 0-based index of the layer as loaded.")
       .file(&BuildParams::support_points_file, ParamType::FileOpen, "support_points_file", "Support points file",
             "*.srp", nullptr,
@@ -169,7 +170,11 @@ Result run_build(const BuildParams& p, Host& host) {
   const Mesh part = host.current_mesh();
   SupportPoints points;
   if (p.support_points_file.empty()) {
-    points = locate_support_points(part, host.mesh_at(p.points_layer).V);
+    const Mesh layer = host.mesh_at(p.points_layer);
+    if (layer.faces() > 0)
+      throw Error(format("the support points layer (layer %d) is a mesh of %zu faces, not a point layer",
+                         p.points_layer, layer.faces()));
+    points = locate_support_points(part, layer.V, {}, kUserPointReachMm);
   } else {
     points = read_support_points(p.support_points_file);
     validate_support_points(points, &part);
@@ -182,10 +187,10 @@ Result run_build(const BuildParams& p, Host& host) {
       part, points, support_ground_z(z_start, p.layer_thickness, p.tree), p.tree);
   host.add_mesh_layer(host.current_mesh_name() + " supports", tree.mesh);
   const double seconds = seconds_since(start);
-  host.log(format("Build Supports: %zu points, %zu pillars to the %s, %zu ending on the part, ground at z %g mm "
-                  "(%zu layers below the part's first), %zu faces, %.3f s",
-                  points.size(), tree.pillars, p.tree.pad_enable ? "pad" : "plate", tree.on_part, tree.ground_z, below,
-                  tree.mesh.faces(), seconds));
+  host.log(format("Build Supports: %zu points (%zu dropped: their surface faces up), %zu pillars to the %s, %zu "
+                  "ending on the part, ground at z %g mm (%zu layers below the part's first), %zu faces, %.3f s",
+                  points.size(), tree.up_facing, tree.pillars, p.tree.pad_enable ? "pad" : "plate", tree.on_part,
+                  tree.ground_z, below, tree.mesh.faces(), seconds));
   return {{"points", int64_t(points.size())},
           {"pillars", int64_t(tree.pillars)},
           {"on_part", int64_t(tree.on_part)},
@@ -235,7 +240,8 @@ FilterSpec build_supports_filter() {
       "<p>Builds the current mesh's support structure from its support points (a point layer, or a "
       "support-points file), after PrusaSlicer's SLA supports with its SL1S defaults: at each point a head "
       "(a cone whose tip enters the part), a pillar down to the pad or the plate standing on a base cone, or "
-      "onto the part with a small head where the way down is blocked; optionally a pad under it all.</p>"
+      "onto the part with a small head where the way down is blocked; optionally a pad under it all. A point "
+      "whose surface faces up (within 30 degrees of straight up) gets none, as in PrusaSlicer.</p>"
       "<p>The part is not moved: the supports stand <i>object elevation</i> (rounded to whole layers) below "
       "its first layer, so the print jobs slice the part on its own planes and add those layers below it. "
       "The structure is added as a new mesh layer, <i>&lt;mesh&gt; supports</i>.</p>") +

@@ -4,6 +4,7 @@
 // another mesh refused in the core's words, with nothing written.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include "error_of.h"
@@ -127,6 +128,39 @@ TEST_F(SupportFilters, APointsFileForAnotherMeshIsRefusedInWordsAndNothingIsWrit
             0u);
   EXPECT_FALSE(std::filesystem::exists(path("member.srp")));
   EXPECT_FALSE(std::filesystem::exists(path("m.sl1")));
+  EXPECT_TRUE(host.mesh_layers.empty());
+}
+
+// Build Supports from a point layer moves each point onto the surface only from within 1 mm
+// (PrusaSlicer's cap for manual points): another mesh's layer (here the sphere's points on one
+// of radius 7) or a point dragged off is refused in words naming the point and its distance; a
+// mesh layer is not a point layer. Nothing is added.
+TEST_F(SupportFilters, BuildRefusesAPointLayerOffTheMeshInWords) {
+  const FilterSpec& generate = spec_named("generate_support_points");
+  generate.run(defaults(generate, {{"support_points_file", path("source.srp")}}), host);
+  const std::vector<double> on_mesh = host.point_layers.at("mesh0 support points");
+  Mesh other;
+  other.V = on_mesh;
+  for (double& v : other.V) v *= 7.0 / 5;
+  host.meshes.push_back(other);
+  const FilterSpec& build = spec_named("build_supports");
+  const std::string message = error_of([&] { build.run(defaults(build, {}, {{"points_layer", 3}}), host); });
+  EXPECT_EQ(message.rfind("support point 1 at (", 0), 0u) << message;
+  EXPECT_NE(message.find("mm from the mesh's surface, farther than the 1 mm a point may be moved onto it"),
+            std::string::npos)
+      << message;
+  // One point of the current mesh's own layer moved 2 mm out.
+  Mesh dragged;
+  dragged.V = on_mesh;
+  dragged.V[3 * 2 + 0] *= 1 + 2.0 / std::hypot(dragged.V[6], dragged.V[7], dragged.V[8]);
+  dragged.V[3 * 2 + 1] *= 1 + 2.0 / std::hypot(on_mesh[6], on_mesh[7], on_mesh[8]);
+  dragged.V[3 * 2 + 2] *= 1 + 2.0 / std::hypot(on_mesh[6], on_mesh[7], on_mesh[8]);
+  host.meshes.push_back(dragged);
+  EXPECT_EQ(error_of([&] { build.run(defaults(build, {}, {{"points_layer", 4}}), host); }).rfind("support point 3 at (", 0),
+            0u);
+  EXPECT_EQ(error_of([&] { build.run(defaults(build, {}, {{"points_layer", 1}}), host); }),
+            "the support points layer (layer 1) is a mesh of " + std::to_string(host.meshes[1].faces()) +
+                " faces, not a point layer");
   EXPECT_TRUE(host.mesh_layers.empty());
 }
 

@@ -18,6 +18,7 @@
 
 #include "error_of.h"
 #include "family.h"
+#include "shapes.h"
 #include "slicereuse/crossparam/surface_grid.h"
 #include "slicereuse/crossparam/surface_map.h"
 #include "slicereuse/mesh/fingerprint.h"
@@ -128,20 +129,22 @@ std::vector<std::array<double, 2>> samples(const ClipperLib::Paths& area) {
 
 // Every island holds a point of its layer (boundary included), every sample of every island
 // and far area lies within the head reach of a point of its layer, and every sample of an
-// overhang within that of one of its layer or within the support radius, in space, of a point
-// at or below it (a point's height: its layer's plane).
+// overhang within that (or the support radius, when smaller) of one of its layer or within the
+// support radius, in space, of a point at or below it (a point's height: its layer's plane).
 // Returns the number of overhang samples checked.
 size_t expect_covered(const Slices& s, const SupportPoints& points, const SupportPointOptions& o, const char* what) {
   std::map<size_t, std::vector<std::array<double, 2>>> by_layer;
   for (size_t i = 0; i < points.size(); ++i) by_layer[points.layer[i]].push_back({points.xyz[3 * i], points.xyz[3 * i + 1]});
   const double head = o.head_reach_mm + 1e-9, support = o.support_radius_mm() + 1e-9;
+  // An overhang's point holds the surface within the support radius only, however near a head.
+  const double own = std::min(head, support);
   size_t islands = 0, uncovered = 0, without_point = 0, overhang_samples = 0;
   for (size_t k = 0; k < s.layers(); ++k) {
     const Needs n = needs_of(s, k, o);
     const std::vector<std::array<double, 2>>& layer = by_layer[k];
-    auto near = [&](const std::array<double, 2>& q) {
+    auto near = [&](const std::array<double, 2>& q, double reach) {
       return std::any_of(layer.begin(), layer.end(),
-                         [&](const std::array<double, 2>& p) { return std::hypot(p[0] - q[0], p[1] - q[1]) <= head; });
+                         [&](const std::array<double, 2>& p) { return std::hypot(p[0] - q[0], p[1] - q[1]) <= reach; });
     };
     auto held = [&](const std::array<double, 2>& q) {
       for (const auto& [j, pts] : by_layer) {
@@ -156,12 +159,12 @@ size_t expect_covered(const Slices& s, const SupportPoints& points, const Suppor
       ++islands;
       if (std::none_of(layer.begin(), layer.end(), [&](const std::array<double, 2>& p) { return inside(island, p[0], p[1]); }))
         ++without_point;
-      for (const std::array<double, 2>& q : samples(island)) uncovered += !near(q);
+      for (const std::array<double, 2>& q : samples(island)) uncovered += !near(q, head);
     }
-    for (const std::array<double, 2>& q : samples(n.far)) uncovered += !near(q);
+    for (const std::array<double, 2>& q : samples(n.far)) uncovered += !near(q, head);
     for (const std::array<double, 2>& q : samples(n.overhang)) {
       ++overhang_samples;
-      uncovered += !near(q) && !held(q);
+      uncovered += !near(q, own) && !held(q);
     }
   }
   EXPECT_GT(islands, 0u) << what;
@@ -170,7 +173,8 @@ size_t expect_covered(const Slices& s, const SupportPoints& points, const Suppor
   return overhang_samples;
 }
 
-// Valid, on the mesh, each on a downward-facing face or a face its layer's plane crosses.
+// Valid, on the mesh, each on a downward-facing face or a face its layer's plane crosses, none
+// on a surface facing up.
 void expect_on_mesh(const Mesh& m, const Slices& s, const SupportPoints& points) {
   validate_support_points(points, &m);
   const SurfaceGrid grid(m);
@@ -188,6 +192,9 @@ void expect_on_mesh(const Mesh& m, const Slices& s, const SupportPoints& points)
   }
   EXPECT_EQ(off, 0u);
   EXPECT_EQ(wrong_face, 0u);
+  size_t up = 0;
+  for (size_t i = 0; i < points.size(); ++i) up += faces_up(points, i);
+  EXPECT_EQ(up, 0u) << "points whose surface faces up";
   std::cout << "[ support  ] " << contour << " of " << points.size() << " points on contour faces\n";
 }
 
@@ -335,3 +342,73 @@ TEST(SupportPoints, RefuseSlicingsOfOtherMeshesTooManyPointsAndBadPositions) {
 }
 
 }  // namespace
+
+// A 2.5 mm ledge (a slab over a narrower column): wider than the masks' rule at every critical
+// angle, so it gets points at every one, even where it does not overhang (at 1 degree the
+// self-supporting distance, 0.05 / tan(1 degree) = 2.86 mm, exceeds it), and its far area is
+// covered within the head reach.
+TEST(SupportPoints, WideLedgeGetsPointsAtEveryCriticalAngle) {
+  Mesh ledge = test::make_box(0, 0, 0, 5, 5, 4);
+  const Mesh slab = test::make_box(0, 0, 3, 7.5, 5, 5);
+  const uint32_t offset = uint32_t(ledge.vertices());
+  ledge.V.insert(ledge.V.end(), slab.V.begin(), slab.V.end());
+  for (uint32_t i : slab.F) ledge.F.push_back(i + offset);
+  const Slices s = slice(ledge);
+  for (const double angle : {1.0, 5.0, 20.0, 45.0, 70.0, 89.0}) {
+    SCOPED_TRACE(angle);
+    SupportPointOptions o = options();
+    o.critical_angle_deg = angle;
+    const SupportPoints pts = generate_support_points(ledge, s, o);
+    size_t on_ledge = 0;
+    for (size_t i = 0; i < pts.size(); ++i) on_ledge += pts.xyz[3 * i + 2] > 2.9 && pts.xyz[3 * i] > 5;
+    std::cout << "[ support  ] ledge at " << angle << " degrees: " << on_ledge << " points on it\n";
+    EXPECT_GT(on_ledge, 0u);
+    expect_covered(s, pts, o, "ledge");
+  }
+}
+
+// Densities past 1840 %, where the support radius (0.42 mm there) falls below the lattice's
+// cover margin for the head reach: every overhang is still held within the support radius.
+TEST(SupportPoints, HighDensitiesHoldOverhangsWithinTheirRadius) {
+  size_t previous = 0;
+  for (const double density : {1.0, 20.0, 50.0}) {
+    SCOPED_TRACE(density);
+    SupportPointOptions o = options();
+    o.density_relative = density;
+    const Part p = part("sphere", o);
+    expect_covered(p.slicing, p.points, o, "dense");
+    EXPECT_GT(p.points.size(), previous);
+    previous = p.points.size();
+  }
+}
+
+// A user's point is moved onto the surface from within the cap only: beyond it, refused in
+// words naming the point and its distance.
+TEST(SupportPoints, LocatingRefusesPointsFartherThanTheCap) {
+  const Mesh box = test::make_box(0, 0, 0, 4, 4, 2);
+  const SupportPoints near = locate_support_points(box, {1, 2, -0.5, 2, 2, 0.5}, {}, kUserPointReachMm);
+  ASSERT_EQ(near.size(), 2u);
+  EXPECT_EQ(near.xyz, (std::vector<double>{1, 2, 0, 2, 2, 0}));
+  EXPECT_ERROR(locate_support_points(box, {1, 2, -0.5, 2, 2, -2.5}, {}, kUserPointReachMm),
+               "support point 2 at (2, 2, -2.5) mm is 2.5 mm from the mesh's surface, farther than the 1 mm a point "
+               "may be moved onto it: the points are not this mesh's, or were moved off it");
+}
+
+// A box raised off the plate whose walls lean out by 1e-7 mm over its 2 mm (a mesh's rounding):
+// its first layer's contour lies a hair outside the bottom face, on the walls' slivers, and
+// the rays from below must still find the bottom face, not the walls (within 30 degrees of
+// straight down, the only surface here that needs support).
+TEST(SupportPoints, BottomPointsStayOffNearlyVerticalWalls) {
+  Mesh box = test::make_box(0, 0, 0, 4, 4, 2);
+  for (size_t v = 0; v < box.vertices(); ++v)
+    if (box.V[3 * v + 2] == 2)
+      for (int a = 0; a < 2; ++a) box.V[3 * v + a] += box.V[3 * v + a] == 0 ? -1e-7 : 1e-7;
+  const Slices s = slice(box);
+  const SupportPoints pts = generate_support_points(box, s, options());
+  size_t on_walls = 0;
+  for (size_t i = 0; i < pts.size(); ++i) on_walls += !(pts.normal[3 * i + 2] < -std::cos(M_PI / 6));
+  std::cout << "[ support  ] leaning box: " << on_walls << " of " << pts.size() << " points on its walls\n";
+  EXPECT_GT(pts.size(), 0u);
+  EXPECT_EQ(on_walls, 0u);
+  expect_covered(s, pts, options(), "leaning box");
+}

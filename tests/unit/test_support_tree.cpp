@@ -9,6 +9,7 @@
 #include "error_of.h"
 #include "family.h"
 #include "shapes.h"
+#include "slicereuse/crossparam/surface_grid.h"
 #include "slicereuse/mesh/fingerprint.h"
 #include "slicereuse/regions/layer_region.h"
 #include "slicereuse/slicing/layer_planes.h"
@@ -158,6 +159,21 @@ size_t check_sections(const Mesh& part, const SupportTree& tree) {
   return overlapping;
 }
 
+// Every foot (a head zone narrowing downwards) ends on the part: its tip, the penetration
+// above its bottom, lies on the part's surface. Returns the number of feet.
+size_t expect_feet_on_part(const Mesh& part, const SupportTree& tree, const SupportTreeOptions& o) {
+  const SurfaceGrid grid(part);
+  size_t feet = 0;
+  for (const HeadZone& h : tree.head_zones) {
+    if (!(h.r_bottom < h.r_top)) continue;
+    ++feet;
+    const double tip[3] = {h.x, h.y, h.z_bottom + o.head_penetration_mm};
+    const double d = grid.nearest_on_surface(tip, nullptr, 0, INFINITY).distance;
+    EXPECT_LT(d, 1e-6) << "the foot at (" << h.x << ", " << h.y << ") ends " << d << " mm from the part";
+  }
+  return feet;
+}
+
 test::FamilyOptions shape(const char* name) {
   test::FamilyOptions o;
   o.shape = name;
@@ -257,6 +273,38 @@ TEST(SupportTree, BlockedPillarEndsOnThePartWithAFoot) {
   EXPECT_GT(check_sections(part, tree), 0u);
 }
 
+// A pillar whose axis passes beside a block (0.4 mm out) but whose rim meets it: the foot stands
+// on the block, not in the air beside it.
+TEST(SupportTree, FootUnderABlockedRimStandsOnThePart) {
+  Mesh part = test::make_box(0, 0, 0, 10, 10, 2);
+  const Mesh slab = test::make_box(0, 0, 8, 20, 10, 10);
+  const uint32_t offset = uint32_t(part.vertices());
+  part.V.insert(part.V.end(), slab.V.begin(), slab.V.end());
+  for (uint32_t i : slab.F) part.F.push_back(i + offset);
+  SupportPoints pts = points_on(part, {face_near(part, 15, 5, 8)});
+  pts.xyz[0] = 10.4, pts.xyz[1] = 5, pts.xyz[2] = 8;
+  const SupportTree tree = build_support_tree(part, pts, -5, SupportTreeOptions{});
+  EXPECT_EQ(tree.on_part, 1u);
+  EXPECT_EQ(expect_feet_on_part(part, tree, SupportTreeOptions{}), 1u);
+  check_sections(part, tree);
+}
+
+// PrusaSlicer builds no head under a point whose surface faces up (its normal within 30 degrees
+// of +z): such a point (a user's, on the top face) is dropped and counted; one on the bottom
+// face beside it is built.
+TEST(SupportTree, PointsFacingUpAreDropped) {
+  const Mesh part = test::make_box(0, 0, 0, 4, 4, 2);
+  const SupportPoints pts = points_on(part, {face_near(part, 1, 2, 2), face_near(part, 1, 2, 0)});
+  ASSERT_EQ(pts.normal[2], 1);
+  ASSERT_EQ(pts.normal[5], -1);
+  const SupportTree tree = build_support_tree(part, pts, -6, SupportTreeOptions{});
+  EXPECT_EQ(tree.up_facing, 1u);
+  EXPECT_EQ(tree.pillars, 1u);
+  EXPECT_EQ(tree.on_part, 0u);
+  EXPECT_EQ(tree.head_zones.size(), 1u);
+  check_sections(part, tree);
+}
+
 TEST(SupportTree, HeadReachingThePartBelowEndsInIt) {
   Mesh part = test::make_box(0, 0, 0, 10, 10, 2);
   const Mesh slab = test::make_box(0, 0, 4, 10, 10, 6);
@@ -296,6 +344,7 @@ TEST(SupportTree, SphereAndHandleEnterThePartOnlyAtHeads) {
     const SupportTree tree = build_support_tree(part, pts, ground_z, SupportTreeOptions{});
     EXPECT_EQ(tree.pillars + tree.on_part, pts.size());
     if (std::string(name) == "handle") EXPECT_GT(tree.on_part, 0u);
+    expect_feet_on_part(part, tree, SupportTreeOptions{});
     EXPECT_GT(tree.pillars, 0u);
     const std::vector<Mesh> shells = shells_of(tree.mesh);
     for (size_t s = 0; s < shells.size(); ++s) {
@@ -325,6 +374,27 @@ TEST(SupportTree, LayersBelow) {
   EXPECT_ERROR(support_layers_below(raised(NAN), 0.05), "the object's elevation is nan mm");
   EXPECT_ERROR(support_layers_below(raised(5), 0), "the layer thickness is 0 mm");
   EXPECT_ERROR(support_layers_below(raised(1e9), 1e-3), "more than 10000000");
+}
+
+// The pad's top never reaches the part's first plane: elevation 0 with the pad (the part sunk
+// into it, not modelled) is refused in words, and a thin pad under a tiny elevation is not
+// rounded up into the part.
+TEST(SupportTree, PadTopStaysBelowThePart) {
+  SupportTreeOptions o;
+  o.pad_wall_thickness_mm = 0.07;
+  o.object_elevation_mm = 0;
+  EXPECT_ERROR(support_layers_below(o, 0.05),
+               "an object elevation of 0 mm with the pad on needs the part sunk into its pad (PrusaSlicer's zero "
+               "elevation), which the supports do not model: the pad's top (0.07 mm thick) would lie in the part; "
+               "raise the part (an elevation above 0) or turn the pad off");
+  o.pad_enable = false;
+  EXPECT_EQ(support_layers_below(o, 0.05), 0u);
+  o.pad_enable = true;
+  for (const double elevation : {0.001, 0.01, 0.02, 0.5}) {
+    SCOPED_TRACE(elevation);
+    o.object_elevation_mm = elevation;
+    EXPECT_LT(support_ground_z(0, 0.05, o) + o.pad_wall_thickness_mm, 0);
+  }
 }
 
 TEST(SupportTree, BadInputInWords) {

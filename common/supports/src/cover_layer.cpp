@@ -86,11 +86,15 @@ bool HeldSurface::holds(double x, double y, double z, double reach) const {
 
 std::vector<PlanePoint> cover_layer(const LayerAreas& areas, const std::vector<std::array<double, 2>>& existing,
                                     const HeldSurface& held, double z, const CoverReach& reach) {
-  const double g = reach.head / 2;
+  // The lattice is fine enough for the smaller reach: every reach less the margin stays
+  // positive (0.17 of it at least), at any density.
+  const double g = std::min(reach.head, reach.support) / 2;
   const double margin = g * std::sqrt(0.5) + g / 8;
   const double support_reach = reach.support - margin;
-  // This layer's points: held in its plane (dz 0) within the head reach.
+  // This layer's points: held in its plane (dz 0) within the head reach, an overhang's within
+  // the support radius too when that is smaller.
   const double head_reach = reach.head - margin;
+  const double overhang_reach = std::min(reach.head, reach.support) - margin;
   HeldSurface taken(head_reach);
   for (const std::array<double, 2>& p : existing) taken.add(p[0], p[1], z);
   std::vector<PlanePoint> out;
@@ -98,7 +102,7 @@ std::vector<PlanePoint> cover_layer(const LayerAreas& areas, const std::vector<s
     taken.add(p[0], p[1], z);
     out.push_back({p[0], p[1], uint8_t(kind)});
   };
-  auto cover = [&](const std::vector<ClipperLib::Paths>& parts, SupportKind kind, bool held_counts) {
+  auto cover = [&](const std::vector<ClipperLib::Paths>& parts, SupportKind kind, double own_reach, bool held_counts) {
     for (const ClipperLib::Paths& part : parts) {
       const Candidates c = candidates_of(part, g);
       if (kind == SupportKind::Island &&
@@ -115,12 +119,12 @@ std::vector<PlanePoint> cover_layer(const LayerAreas& areas, const std::vector<s
       }
       for (const std::vector<std::array<double, 2>>* list : {&c.lattice, &c.boundary})
         for (const std::array<double, 2>& p : *list)
-          if (!taken.holds(p[0], p[1], z, head_reach) && !(held_counts && held.holds(p[0], p[1], z, support_reach))) take(p, kind);
+          if (!taken.holds(p[0], p[1], z, own_reach) && !(held_counts && held.holds(p[0], p[1], z, support_reach))) take(p, kind);
     }
   };
-  cover(areas.islands, SupportKind::Island, false);
-  cover(areas.far, SupportKind::Overhang, false);
-  cover(areas.overhangs, SupportKind::Overhang, true);
+  cover(areas.islands, SupportKind::Island, head_reach, false);
+  cover(areas.far, SupportKind::Overhang, head_reach, false);
+  cover(areas.overhangs, SupportKind::Overhang, overhang_reach, true);
   return out;
 }
 

@@ -2,15 +2,16 @@
 // cover_layer: one layer's support points in the plane, for its islands, far areas and
 // overhangs (support_areas.h), as generate_support_points.h says.
 //
-// Candidates: the points of the global lattice of spacing g = head_reach / 2 (x = i*g, y = j*g:
-// the same on every layer) inside each part, then the part's boundary, its vertices and points
+// Candidates: the points of the global lattice of spacing g = min(head_reach, support_radius) / 2
+// (x = i*g, y = j*g: the same on every layer) inside each part, then the part's boundary, its vertices and points
 // between them at most g/4 apart (slivers narrower than g hold no lattice point). Every point of
 // a part is then within m = g/sqrt(2) + g/8 of a candidate (its nearest lattice point, or where
 // the way to it leaves the part), so a greedy pass that takes each candidate not yet covered
 // within reach - m covers the part within reach:
 //   islands and far areas: covered by points of this layer (existing ones first), reach
 //     head_reach;
-//   overhangs: also by the points held (HeldSurface) within support_radius in space.
+//   overhangs: within the smaller of head_reach and support_radius, also by the points held
+//     (HeldSurface) within support_radius in space.
 // An island that holds no existing point first gets the lattice point nearest its centroid (or
 // its first vertex), so every island has a point of its own. Islands come first, then far
 // areas, then overhangs; the order is fixed, so the result is too.

@@ -10,7 +10,8 @@
 
 namespace slicereuse {
 
-SupportPoints locate_support_points(const Mesh& mesh, const std::vector<double>& xyz, std::vector<uint8_t> kinds) {
+SupportPoints locate_support_points(const Mesh& mesh, const std::vector<double>& xyz, std::vector<uint8_t> kinds,
+                                    double max_distance_mm) {
   const size_t n = xyz.size() / 3;
   if (xyz.size() % 3) throw Error(format("support point positions come 3 numbers a point; %zu is not a multiple of 3", xyz.size()));
   if (kinds.empty()) kinds.assign(n, uint8_t(SupportKind::Overhang));
@@ -26,15 +27,22 @@ SupportPoints locate_support_points(const Mesh& mesh, const std::vector<double>&
   points.layer.assign(n, 0);
   points.face.resize(n);
   points.bary.resize(3 * n);
+  std::vector<double> distance(n, 0);
   if (n) {
     const SurfaceGrid grid(mesh);
 #pragma omp parallel for schedule(dynamic, 256)
     for (long long i = 0; i < (long long)n; ++i) {
       const SurfacePoint s = grid.nearest_on_surface(&xyz[3 * i], nullptr, 0, std::numeric_limits<double>::infinity());
       points.face[i] = s.face;
+      distance[i] = s.distance;
       for (int j = 0; j < 3; ++j) points.bary[3 * i + j] = s.bary[j];
     }
   }
+  for (size_t i = 0; i < n; ++i)
+    if (distance[i] > max_distance_mm)
+      throw Error(format("support point %zu at (%g, %g, %g) mm is %g mm from the mesh's surface, farther than the "
+                         "%g mm a point may be moved onto it: the points are not this mesh's, or were moved off it",
+                         i + 1, xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2], distance[i], max_distance_mm));
   place_support_points(points, mesh);
   return points;
 }

@@ -28,10 +28,15 @@ PartColumns::PartColumns(const Mesh& part, bool downward_only, double z_below) :
     const double* v[3];
     for (int j = 0; j < 3; ++j) v[j] = &part.V[3 * size_t(part.F[3 * f + j])];
     if (std::min({v[0][2], v[1][2], v[2][2]}) >= z_below) continue;
-    if (downward_only && !(cross(sub(v[1], v[0]), sub(v[2], v[0]))[2] < 0)) continue;
+    const Vec3 n = cross(sub(v[1], v[0]), sub(v[2], v[0]));
+    const double nz = n[2] / norm(n);  // NaN for a degenerate face: not kept
+    if (!(std::fabs(nz) > kWallNormalZ) || (downward_only && !(nz < 0))) continue;
     faces.push_back(uint32_t(f));
-    boxes.push_back({std::min({v[0][0], v[1][0], v[2][0]}), std::max({v[0][0], v[1][0], v[2][0]}),
-                     std::min({v[0][1], v[1][1], v[2][1]}), std::max({v[0][1], v[1][1], v[2][1]})});
+    std::array<double, 4> box{std::min({v[0][0], v[1][0], v[2][0]}), std::max({v[0][0], v[1][0], v[2][0]}),
+                              std::min({v[0][1], v[1][1], v[2][1]}), std::max({v[0][1], v[1][1], v[2][1]})};
+    // Grown by the edge tolerance's reach, so that a ray it admits finds the face in its cell.
+    const double grow = kEdgeTolerance * std::max(box[1] - box[0], box[3] - box[2]);
+    boxes.push_back({box[0] - grow, box[1] + grow, box[2] - grow, box[3] + grow});
     x0_ = std::min(x0_, boxes.back()[0]), x1 = std::max(x1, boxes.back()[1]);
     y0_ = std::min(y0_, boxes.back()[2]), y1 = std::max(y1, boxes.back()[3]);
   }

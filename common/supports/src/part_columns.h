@@ -1,14 +1,18 @@
 #pragma once
-// PartColumns: a part's faces (or only its downward-facing ones, unit normal z < 0; and only
-// those reaching below z_below, when given: rays from points below that height meet no other)
-// in a uniform x-y grid over their bounding boxes (about one face per cell), so that a vertical
-// ray tests only the faces whose boxes cover its column. Built once per support tree or
-// generation of support points; queries are const and thread safe.
+// PartColumns: a part's faces but its walls (unit normal z within kWallNormalZ of 0: seen
+// edge-on from above, a ray's height on them is ill-conditioned and a point there is on a side,
+// not under the part), or only its downward-facing ones (unit normal z < -kWallNormalZ), and
+// only those reaching below z_below, when given (rays from points below that height meet no
+// other), in a uniform x-y grid over their bounding boxes (about one face per cell), so that a
+// vertical ray tests only the faces whose boxes cover its column. Built once per support tree
+// or generation of support points; queries are const and thread safe.
 // for_each_hit(x, y, hit) calls hit(face, l, z) for each face of the column, in face order,
-// whose projection holds (x, y) (edges included): l its area coordinates there (corner order,
-// summing to 1), z the face's height there. highest_hit: the highest such z in (z_floor, z_from)
-// (faces seen edge-on from above never count); NaN when there is none. lowest_hit_above: the
-// lowest such z above z_from; NaN when there is none.
+// whose projection holds (x, y), edges included within kEdgeTolerance (area coordinates that
+// far below 0: rounding, a contour a hair outside the face): l its area coordinates there
+// (clamped to [0, 1], corner order, summing to 1), z the face's height there. highest_hit: the
+// highest such z in (z_floor, z_from) (walls never count); NaN when there is none.
+// lowest_hit_above: the lowest such z above z_from; NaN when there is none.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -16,6 +20,11 @@
 #include "slicereuse/mesh/mesh.h"
 
 namespace slicereuse {
+
+// A face steeper than 89.99994 degrees is a wall (a mesh's rounding leans vertical ones).
+constexpr double kWallNormalZ = 1e-6;
+// Relative to the face: 1e-9 of a 10 mm face is 1e-8 mm, far below any feature.
+constexpr double kEdgeTolerance = 1e-9;
 
 class PartColumns {
  public:
@@ -43,13 +52,14 @@ void PartColumns::for_each_hit(double x, double y, Hit&& hit) const {
     const double* a = &part_.V[3 * size_t(f[0])];
     const double* b = &part_.V[3 * size_t(f[1])];
     const double* d = &part_.V[3 * size_t(f[2])];
+    // Never 0: walls are not kept.
     const double area = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
-    if (area == 0) continue;
     const double la = ((b[0] - x) * (d[1] - y) - (b[1] - y) * (d[0] - x)) / area;
     const double lb = ((d[0] - x) * (a[1] - y) - (d[1] - y) * (a[0] - x)) / area;
     const double ld = 1 - la - lb;
-    if (la < 0 || lb < 0 || ld < 0) continue;
-    const double l[3] = {la, lb, ld};
+    if (la < -kEdgeTolerance || lb < -kEdgeTolerance || ld < -kEdgeTolerance) continue;
+    const double ca = std::max(la, 0.0), cb = std::max(lb, 0.0), cd = std::max(ld, 0.0), sum = ca + cb + cd;
+    const double l[3] = {ca / sum, cb / sum, cd / sum};
     hit(cell_faces_[i], l, la * a[2] + lb * b[2] + ld * d[2]);
   }
 }

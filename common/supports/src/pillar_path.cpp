@@ -14,12 +14,13 @@ constexpr double kBelowContactMm = 1e-6;
 
 WayDown find_way_down(const PartColumns& part, double x, double y, double z, double z_head_bottom, double z_floor,
                       double rim_radius) {
-  WayDown way{kNaN, part.highest_hit(x, y, z - kBelowContactMm, z_floor)};
-  way.blocked_z = way.axis_z;
+  const double axis_z = part.highest_hit(x, y, z - kBelowContactMm, z_floor);
+  WayDown way{axis_z, x, y, axis_z};
   for (int i = 0; i < kRimRays; ++i) {
     const double a = 2 * M_PI * i / kRimRays;
-    const double hit = part.highest_hit(x + rim_radius * std::cos(a), y + rim_radius * std::sin(a), z_head_bottom, z_floor);
-    if (!std::isnan(hit) && !(hit <= way.blocked_z)) way.blocked_z = hit;
+    const double rx = x + rim_radius * std::cos(a), ry = y + rim_radius * std::sin(a);
+    const double hit = part.highest_hit(rx, ry, z_head_bottom, z_floor);
+    if (!std::isnan(hit) && !(hit <= way.blocked_z)) way.blocked_z = hit, way.blocked_x = rx, way.blocked_y = ry;
   }
   return way;
 }

@@ -17,8 +17,10 @@ namespace slicereuse {
 constexpr int kRimRays = 8;
 
 struct WayDown {
-  // NaN when the way down to z_floor is clear; else the highest hit of any ray.
+  // NaN when the way down to z_floor is clear; else the highest hit of any ray, at (blocked_x,
+  // blocked_y): that ray's, the first of the axis and the rim rays in order to reach it.
   double blocked_z;
+  double blocked_x, blocked_y;
   // The axis ray's highest hit (NaN when it has none); when above z_head_bottom, the head
   // itself reaches the part below.
   double axis_z;

@@ -96,8 +96,12 @@ LayerAreas areas_of(const LayerRegion* below, const LayerRegion& region, double 
   const ClipperLib::IntRect below_bounds = bounds(below->loops);
   for (const ClipperLib::Paths& part : region.parts)
     if (!overlaps(part, below->loops, below_bounds)) out.islands.push_back(part);
-  out.overhangs = beyond(region.loops, below->loops, o.self_supporting_mm(thickness));
-  if (!out.overhangs.empty()) out.far = beyond(region.loops, below->loops, o.far_reach_mm);
+  const double self_supporting = o.self_supporting_mm(thickness);
+  out.overhangs = beyond(region.loops, below->loops, self_supporting);
+  // Far areas lie within the overhangs only when they reach no farther; at small critical
+  // angles a ledge wider than the far reach may not overhang at all.
+  if (!out.overhangs.empty() || o.far_reach_mm < self_supporting)
+    out.far = beyond(region.loops, below->loops, o.far_reach_mm);
   return out;
 }
 
@@ -157,7 +161,8 @@ bool part_contains(const ClipperLib::Paths& part, double x, double y) {
 }
 
 double distance_to_areas(const LayerAreas& areas, double x, double y) {
-  return std::min(distance_to_parts(areas.islands, x, y), distance_to_parts(areas.overhangs, x, y));
+  return std::min({distance_to_parts(areas.islands, x, y), distance_to_parts(areas.overhangs, x, y),
+                   distance_to_parts(areas.far, x, y)});
 }
 
 LayerSpan layer_span(const Slices& s, size_t k) {

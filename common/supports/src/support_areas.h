@@ -38,8 +38,8 @@ std::vector<LayerAreas> support_areas(const Slices& slicing, const SupportPointO
 // Whether (x, y) (mm) lies in a part (outer loop, then holes), its boundary included.
 bool part_contains(const ClipperLib::Paths& part, double x, double y);
 
-// Distance in mm from (x, y) (mm) to the layer's islands and overhangs (far areas lie in
-// those): 0 inside one.
+// Distance in mm from (x, y) (mm) to the layer's islands, overhangs and far areas (at small
+// critical angles a far area need not lie in an overhang): 0 inside one.
 double distance_to_areas(const LayerAreas& areas, double x, double y);
 
 // The z range in which a point supports layer k: from plane_{k-1} - h to plane_k + h (plane_{-1}

@@ -19,6 +19,10 @@ void SupportPoints::push_back_from(const SupportPoints& o, size_t i) {
   }
 }
 
+bool normal_faces_up(double normal_z) { return normal_z > std::cos(M_PI / 6); }
+
+bool faces_up(const SupportPoints& points, size_t i) { return normal_faces_up(points.normal[3 * i + 2]); }
+
 void place_support_points(SupportPoints& points, const Mesh& mesh) {
   const size_t n = points.size();
   points.xyz.assign(3 * n, 0);

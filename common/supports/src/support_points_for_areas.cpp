@@ -6,6 +6,7 @@
 #include "cover_layer.h"
 #include "part_columns.h"
 #include "slicereuse/mesh/fingerprint.h"
+#include "slicereuse/mesh/vec3.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
 #include "slicereuse/util/parallel_blocks.h"
@@ -19,13 +20,24 @@ struct LayerPoints {
   std::vector<uint8_t> kind;
 };
 
-// The contour point of layer k nearest to (x, y), as face and area coordinates.
-void nearest_contour_point(const Slices& s, size_t k, double x, double y, uint32_t& face, double bary[3]) {
+// Whether mesh's face f faces up (faces_up, support_points.h).
+bool face_faces_up(const Mesh& m, uint32_t f) {
+  const uint32_t* c = &m.F[3 * size_t(f)];
+  const Vec3 n = cross(sub(&m.V[3 * size_t(c[1])], &m.V[3 * size_t(c[0])]), sub(&m.V[3 * size_t(c[2])], &m.V[3 * size_t(c[0])]));
+  return normal_faces_up(n[2] / norm(n));
+}
+
+// The contour point of layer k nearest to (x, y) on a face that does not face up (of all, when
+// every one does), as face and area coordinates.
+void nearest_contour_point(const Mesh& m, const Slices& s, size_t k, double x, double y, uint32_t& face,
+                           double bary[3]) {
   size_t best = s.contour_begin[s.layer_begin[k]];
   double best_d2 = INFINITY;
+  bool best_up = true;
   for (size_t p = best; p < s.contour_begin[s.layer_begin[k + 1]]; ++p) {
     const double d2 = (s.xyz[3 * p] - x) * (s.xyz[3 * p] - x) + (s.xyz[3 * p + 1] - y) * (s.xyz[3 * p + 1] - y);
-    if (d2 < best_d2) best_d2 = d2, best = p;
+    const bool up = face_faces_up(m, s.face[p]);
+    if ((best_up && !up) || (up == best_up && d2 < best_d2)) best_d2 = d2, best = p, best_up = up;
   }
   face = s.face[best];
   const int j = s.edge[best];
@@ -94,7 +106,7 @@ SupportPoints support_points_for_areas(const Mesh& mesh, const Slices& slicing, 
         for (const PlanePoint& p : plane[k]) {
           uint32_t face;
           double bary[3];
-          if (!ray_hit(down, p.x, p.y, span, inner, face, bary)) nearest_contour_point(slicing, k, p.x, p.y, face, bary);
+          if (!ray_hit(down, p.x, p.y, span, inner, face, bary)) nearest_contour_point(mesh, slicing, k, p.x, p.y, face, bary);
           out.face.push_back(face);
           out.bary.insert(out.bary.end(), bary, bary + 3);
           out.kind.push_back(p.kind);

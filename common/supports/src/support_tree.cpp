@@ -64,6 +64,7 @@ SupportTree build_support_tree(const Mesh& part, const SupportPoints& points, do
   const double floor = ground_z + (o.pad_enable ? o.pad_wall_thickness_mm : 0);
   for (size_t i = 0; i < points.size(); ++i) {
     const double z = points.xyz[3 * i + 2];
+    if (faces_up(points, i)) continue;
     if (!(z > floor))
       throw Error(format("support point %zu at z = %g mm is below the %s at %g mm", i + 1, z,
                          o.pad_enable ? "pad's top" : "ground", floor));
@@ -88,6 +89,10 @@ SupportTree build_support_tree(const Mesh& part, const SupportPoints& points, do
     if (zone) tree.head_zones.push_back({x, y, z_bottom, z_top, r_bottom, r_top});
   };
   for (size_t i = 0; i < points.size(); ++i) {
+    if (faces_up(points, i)) {
+      ++tree.up_facing;
+      continue;
+    }
     const double x = points.xyz[3 * i], y = points.xyz[3 * i + 1], z = points.xyz[3 * i + 2];
     // Into a wall thinner than twice the penetration, the head goes halfway: it must not come
     // out of the part's other side.
@@ -107,10 +112,15 @@ SupportTree build_support_tree(const Mesh& part, const SupportPoints& points, do
     const double head_bottom = std::max(z_head_bottom, floor);
     add_cone(x, y, head_bottom, head_r(head_bottom), z_top, r_front, true);
     if (!std::isnan(way.blocked_z)) {
-      // A foot: a small head upside down, from the pillar into the part under it.
+      // A foot: a small head upside down, from the pillar into the part where the highest ray
+      // met it; under a rim ray's hit, beside the axis, it leans from the pillar to the hit
+      // rather than ending in the air on the axis. Its zone is the vertical cone around the
+      // hit that holds it (the lean, rim_radius at the top, added to its radius).
       const double foot_top = std::min(z_head_bottom, way.blocked_z + kFootRiseMm);
-      const double foot_bottom = std::max((std::isnan(way.axis_z) ? way.blocked_z : way.axis_z) - pen, floor);
-      add_cone(x, y, foot_bottom, r_front, foot_top, r_pillar, true);
+      const double foot_bottom = std::max(way.blocked_z - pen, floor);
+      const double bx = way.blocked_x, by = way.blocked_y;
+      append_loft(m, circle_outline(bx, by, r_front), foot_bottom, circle_outline(x, y, r_pillar), foot_top);
+      tree.head_zones.push_back({bx, by, foot_bottom, foot_top, r_front, r_pillar + std::hypot(x - bx, y - by)});
       if (foot_top < z_head_bottom) add_cone(x, y, foot_top, r_pillar, z_head_bottom, r_pillar, false);
       ++tree.on_part;
       continue;
@@ -137,8 +147,16 @@ size_t support_layers_below(const SupportTreeOptions& o, double thickness) {
     throw Error(format("the layer thickness is %g mm; it must be a finite, positive number", thickness));
   if (!(std::isfinite(elevation_mm) && elevation_mm >= 0))
     throw Error(format("the object's elevation is %g mm; it must be a finite, non-negative number", elevation_mm));
+  if (o.pad_enable && elevation_mm == 0)
+    throw Error(format("an object elevation of 0 mm with the pad on needs the part sunk into its pad (PrusaSlicer's "
+                       "zero elevation), which the supports do not model: the pad's top (%g mm thick) would lie in "
+                       "the part; raise the part (an elevation above 0) or turn the pad off",
+                       o.pad_wall_thickness_mm));
   const double below = elevation_mm + (o.pad_enable ? o.pad_wall_thickness_mm : 0);
-  const double layers = std::round(below / thickness);
+  // Rounded to whole layers, but never so far down that the pad's top reaches the part's first
+  // plane: at least one layer more than the pad's thickness holds.
+  const double layers = std::max(std::round(below / thickness),
+                                 o.pad_enable ? std::floor(o.pad_wall_thickness_mm / thickness) + 1 : 0.0);
   if (layers > double(kMaxLayers))
     throw Error(format("an elevation of %g mm is %.0f layers of %g mm, more than %zu", below, layers, thickness,
                        kMaxLayers));

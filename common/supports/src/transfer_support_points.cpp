@@ -49,10 +49,11 @@ size_t layer_at_or_above(const Slices& s, double z) {
 
 // The layer on whose areas point i is certified (within radius of them, z in its span), trying
 // its own layer first (the plate's planes are the source's), then the layer at or above its z,
-// the one below and the one above that; n when none.
+// the one below and the one above that; n when none, or when its surface faces up there.
 size_t certifying_layer(const SupportPoints& p, size_t i, const Slices& s, const std::vector<LayerAreas>& areas,
                         double radius) {
   const size_t n = s.layers();
+  if (faces_up(p, i)) return n;
   const double x = p.xyz[3 * i], y = p.xyz[3 * i + 1], z = p.xyz[3 * i + 2];
   const size_t at = layer_at_or_above(s, z);
   for (const size_t k : {size_t(p.layer[i]), at, at - 1, at + 1}) {

@@ -12,9 +12,10 @@
 //   every point of an island or a far area lies within head_reach_mm of a point of its own
 //   layer, whose head then lies under it in the layer below: with far_reach_mm and
 //   head_reach_mm below 1 mm, no lit pixel of a mask is more than 1 mm from the layer below;
-//   every point of an overhang lies within support_radius_mm() of a point of its own layer or,
-//   in space, of a point of a layer below (the surface between them is held by it), as
-//   PrusaSlicer's support force spreads over the surface around a point;
+//   every point of an overhang lies within support_radius_mm() (and head_reach_mm) of a point
+//   of its own layer or, in space, within support_radius_mm() of a point of a layer below (the
+//   surface between them is held by it), as PrusaSlicer's support force spreads over the
+//   surface around a point, at any density;
 // every island has a point of its own, and points of a layer stand more than about half the
 // radius apart (minimal_distance_mm yields to the cover). Each 2-D point becomes a point on
 // the mesh: the downward-facing face above it between the two layers' planes (a vertical ray),

@@ -35,6 +35,13 @@ struct SupportPoints {
   void push_back_from(const SupportPoints& other, size_t i);
 };
 
+// Whether point i's surface faces up, its normal within 30 degrees of +z (PrusaSlicer's normal
+// cutoff): nothing above the part's surface there needs it, and a head under it would cross the
+// part. Such points are neither made nor kept, and the support tree drops them.
+bool faces_up(const SupportPoints& points, size_t i);
+// The same for a unit normal's z.
+bool normal_faces_up(double normal_z);
+
 // Sets xyz and normal of every point from its face and area coordinates on mesh, which must
 // have the points' fingerprint (not checked here).
 void place_support_points(SupportPoints& points, const Mesh& mesh);

@@ -11,20 +11,24 @@
 //     where the way down is blocked by the part (a vertical ray through the pillar's axis or its
 //     rim, with clearance, hits it), the pillar ends on the part with a small head
 //     (head_front_diameter_mm, penetrating head_penetration_mm) instead: a foot, upside down,
-//     whose cone starts 1 mm above the highest hit; where the part below is nearer than the
-//     head's width, the head itself ends in it.
+//     whose cone starts 1 mm above the highest hit and ends in the part at that hit (leaning
+//     from the axis when a rim ray's hit is the highest); where the part below is nearer than
+//     the head's width, the head itself ends in it.
 // Every cone and cylinder is a 16-gon (support_shapes.h), the pad a loft between two outlines;
 // each shell closed, its faces counter-clockwise seen from outside.
 // pad (pad_enable): under everything that reaches ground_z, pad_wall_thickness_mm thick, its top
 //   the convex hull of the bases grown by pad_brim_mm, its walls sloping in towards the plate at
 //   pad_wall_slope_deg (its bottom smaller by thickness / tan(slope)), as PrusaSlicer's pad.
 // head_zones: where the structure may enter the part (each head, and each foot on the part), as
-// vertical cones: the only places the part's and the supports' sections may overlap.
+// vertical cones (a leaning foot's around its tip, wide enough to hold it): the only places the
+// part's and the supports' sections may overlap.
+// A point whose surface faces up (faces_up, support_points.h) gets nothing: counted in
+// up_facing, as PrusaSlicer drops it.
 // No points: no structure (an empty mesh, ground_z set); no pillar reaching the ground: no pad.
-// Throws Error when a point lies at or below the pad's top (ground_z without a pad), the
-// structure would be taller than max_height_mm ("... pillar of H mm, taller than the printer's
-// ... mm"), an option or ground_z is not a finite number of the right sign, the pad's walls
-// slope in by more than the base's radius and brim, or the points are inconsistent
+// Throws Error when a point (not facing up) lies at or below the pad's top (ground_z without a
+// pad), the structure would be taller than max_height_mm ("... pillar of H mm, taller than the
+// printer's ... mm"), an option or ground_z is not a finite number of the right sign, the pad's
+// walls slope in by more than the base's radius and brim, or the points are inconsistent
 // (validate_support_points) or the part has no faces.
 #include <cstddef>
 #include <vector>
@@ -63,6 +67,7 @@ struct SupportTree {
   std::vector<HeadZone> head_zones;
   size_t pillars = 0;         // reaching the pad or ground
   size_t on_part = 0;         // ending on the part
+  size_t up_facing = 0;       // points dropped: their surface faces up
   double ground_z = 0;
 };
 
@@ -71,13 +76,15 @@ SupportTree build_support_tree(const Mesh& part, const SupportPoints& points, do
 
 // Where the structure stands for a part sliced from z_start in layers of thickness: the part
 // object_elevation_mm above the pad's top (PrusaSlicer's support_object_elevation), so the pad's
-// bottom lies elevation plus pad thickness below z_start, rounded to whole layers: the part's
+// bottom lies elevation plus pad thickness below z_start, rounded to whole layers (but at least
+// one layer more than the pad's thickness, so the pad's top stays below z_start): the part's
 // layers keep their planes and the job gains that many layers below it.
-// Elevation 0 (the part on the plate, or sunk into the pad) is out of scope for the structure:
-// then ground_z = z_start, the pad would fill the part's own lowest layers and every point
-// under its top is refused; a part on the plate is printed without supports.
+// Elevation 0 without a pad: the part on the plate, ground_z = z_start, every point at or under
+// it refused; a part on the plate is printed without supports. Elevation 0 with the pad
+// (PrusaSlicer's part sunk into its pad, pad_around_object) is not modelled: refused.
 // Throws Error for a thickness that is not positive, an elevation that is negative or not
-// finite, or more than kMaxLayers layers.
+// finite, elevation 0 with the pad ("an object elevation of 0 mm with the pad on needs the part
+// sunk into its pad ..."), or more than kMaxLayers layers.
 size_t support_layers_below(const SupportTreeOptions& options, double thickness);
 inline double support_ground_z(double z_start, double thickness, const SupportTreeOptions& options) {
   return z_start - double(support_layers_below(options, thickness)) * thickness;

@@ -5,11 +5,12 @@
 // parameterization map (another connectivity: the map's images of its face's corners,
 // interpolated, then the target face under them). Then, on the member:
 //   certified (kept): the point still lies on a surface that needs support: its xy is inside an
-//     island or overhang area of its layer on the member's own slicing (generate_support_
+//     island, overhang or far area of its layer on the member's own slicing (generate_support_
 //     points.h), or within the support radius of one; its layer is its own (the plate's planes
 //     are the source's) or, failing that, the layer whose plane is the first at or above its z
 //     or one next to that, as long as its z lies where a point of that layer may (from the plane
-//     below that layer's minus a layer to its own plus one);
+//     below that layer's minus a layer to its own plus one), and its surface does not face up
+//     (faces_up, support_points.h);
 //   otherwise dropped;
 //   added: the member's own islands and overhangs that no kept point covers get new points
 //     (generate_support_points with the kept points as existing);
