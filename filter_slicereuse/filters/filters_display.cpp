@@ -50,6 +50,11 @@ ParamList<PrinterProfile> custom_printer_params() {
              Range::between(0, 1000, "layers"),
              "Custom printer: layers after the bottom ones whose exposure steps down to the normal one (SL1's "
              "numFade).")
+      .whole(&PrinterProfile::file_version, "file_version", "Print file version", d.file_version,
+             Range::between(0, 1000, ""),
+             "Custom printer: the print file's version where its format has several: .ctb 3 or 4 (5, Chitu's "
+             "encrypted CTB, is refused: its scheme is closed), Anycubic files 516 to 518 as their extension "
+             "allows. 0 (the default): the newest the file takes.")
       .number(&PrinterProfile::offset_x_mm, "offset_x_mm", "Offset x (mm)", d.offset_x_mm, Range::any(),
               "Shift of the model along the build plate's x from the display centre, in mm (every printer).")
       .number(&PrinterProfile::offset_y_mm, "offset_y_mm", "Offset y (mm)", d.offset_y_mm, Range::any(),
@@ -88,7 +93,8 @@ PrinterProfile PrinterSettings::profile_before_elephant_foot() const {
            {"exposure_s", given.exposure_s != d.exposure_s},
            {"bottom_exposure_s", given.bottom_exposure_s != d.bottom_exposure_s},
            {"bottom_layers", given.bottom_layers != d.bottom_layers},
-           {"faded_layers", given.faded_layers != d.faded_layers}})
+           {"faded_layers", given.faded_layers != d.faded_layers},
+           {"file_version", given.file_version != d.file_version}})
     if (differs) set += (set.empty() ? "" : ", ") + std::string(name);
   if (!set.empty())
     throw Error("printer " + presets[printer].id + " sets the display and exposure, but " + set +

@@ -369,6 +369,33 @@ TEST_F(FiltersThroughAFakeHost, MakePlateJobPutsTheShownMeshesOnPlatesAndReadsIt
             std::string::npos);
 }
 
+// A custom printer chooses the print file's version (file_version): .ctb 3 or 4; Chitu's
+// encrypted version 5 is refused in words, with nothing written.
+TEST_F(FiltersThroughAFakeHost, ACustomPrinterChoosesTheCtbVersionAndTheEncryptedOneIsRefused) {
+  FakeHost host;
+  host.meshes.push_back(make_sphere(3, 48, 64));
+  const FilterSpec& job = spec_named("make_print_job");
+  const auto version = [&](const std::string& file) {
+    std::ifstream in(file, std::ios::binary);
+    uint8_t b[8] = {};
+    in.read(reinterpret_cast<char*>(b), 8);
+    return uint32_t(b[4]) | uint32_t(b[5]) << 8 | uint32_t(b[6]) << 16 | uint32_t(b[7]) << 24;
+  };
+  for (const int v : {0, 3, 4}) {
+    const std::string file = path("v" + std::to_string(v) + ".ctb");
+    job.run(defaults(job, {{"output_path", file}}, {{"layer_thickness", 0.5}, {"file_version", v}}), host);
+    EXPECT_EQ(version(file), v == 0 ? 4u : uint32_t(v));
+  }
+  EXPECT_EQ(error_of([&] {
+              job.run(defaults(job, {{"output_path", path("v5.ctb")}}, {{"layer_thickness", 0.5}, {"file_version", 5}}),
+                      host);
+            }),
+            "cannot write '" + path("v5.ctb") +
+                "': .ctb version 5 is the encrypted CTB of newer Chitu boards, whose closed scheme is not written: "
+                "choose file version 3 or 4");
+  EXPECT_FALSE(std::filesystem::exists(path("v5.ctb")));
+}
+
 // Elephant-foot compensation (elephant_foot, -1: the printer's own) shrinks the first masks,
 // faded over the faded layers (10: layers 0..8 shrink), the same in Make Print Job and in Export
 // Mask Images of the same layers.
