@@ -85,9 +85,9 @@ def test_anti_aliased_print_jobs_of_a_printer_by_reuse_equal_direct_slicing(make
         assert images == layer_pngs(d["output"])
         middle = images[sorted(images)[40]]
         assert middle[24:26] == bytes([8, 0])  # 8-bit grey
+        model = next(p["job"]["model"] for p in json.loads(sr.PRESETS.read_text())["presets"] if p["id"] == printer)
         with zipfile.ZipFile(r["output"]) as z:
-            assert f"printer_model = {'SL1S' if printer == 'prusa_sl1s_speed' else 'SL1' if printer == 'prusa_sl1' else ''}\n" \
-                in z.read("prusaslicer.ini").decode()
+            assert f"printer_model = {model}\n" in z.read("prusaslicer.ini").decode()
 
 
 def test_keep_contours_writes_each_members_contour_file(pymeshlab, make_family, tmp_path):
@@ -152,9 +152,11 @@ def test_family_py_makes_the_printers_own_print_file(make_family, tmp_path, args
         assert (model == "SL1S") == (extension == ".sl1s")
     elif extension == ".goo":
         assert output.read_bytes()[:4] == b"V3.0"
-    elif extension == ".ctb":  # Chitubox's magic number, little-endian
-        assert output.read_bytes()[:4] == bytes([0x86, 0x00, 0xFD, 0x12])
-    elif extension in (".pwmx", ".pwmb", ".pm4n", ".pm5s"):  # Photon Workshop's files
+    elif extension == ".ctb":  # Chitubox's magic number, little-endian: version 3's, or version 4's
+        version = int.from_bytes(output.read_bytes()[4:8], "little")
+        assert output.read_bytes()[:4] == bytes([0x86 if version == 3 else 0x06, 0x00 if version == 3 else 0x01,
+                                                 0xFD, 0x12]), version
+    elif extension in (".pwmx", ".pwma", ".pwmb", ".pm4n", ".pm5", ".pm5s"):  # Photon Workshop's files
         assert output.read_bytes()[:12] == b"ANYCUBIC\0\0\0\0"
     else:
         assert extension == "", extension

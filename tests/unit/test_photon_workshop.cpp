@@ -202,7 +202,8 @@ TEST_F(PhotonWorkshopFiles, RunsAreEncodedAtTheFormatsLimits) {
   EXPECT_EQ(std::vector<uint8_t>(record.begin() + 32, record.end()), data);
   const std::string entry_bytes(record.begin(), record.begin() + 32);
   EXPECT_EQ(le32(entry_bytes, 4), data.size());
-  EXPECT_EQ(le32(entry_bytes, 24), 15u + 15 + 16 + 4096 + 3 + 4095);  // every non-zero pixel, the 5s too
+  // Lit pixels: those a reader finds lit; the 5s are stored as code 0, black.
+  EXPECT_EQ(le32(entry_bytes, 24), 15u + 15 + 16 + 4096 + 4095);
 
   write_photon_workshop(path("runs.pwmx"), job, [&](size_t) -> const std::vector<uint8_t>& { return record; }, [] {
     return PhotonWorkshopSummary{0, std::vector<uint16_t>(224 * 168), std::vector<uint16_t>(320 * 190)};

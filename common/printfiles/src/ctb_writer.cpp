@@ -10,6 +10,7 @@
 #include "ctb_format.h"
 #include "goo_stack.h"
 #include "lift_fields.h"
+#include "merged_runs.h"
 #include "slicereuse/printer/print_estimate.h"
 #include "slicereuse/util/atomic_file.h"
 #include "slicereuse/util/error.h"
@@ -103,55 +104,34 @@ int check_job(const std::string& path, const CtbJob& job) {
   return version;
 }
 
-// Appends the pixels' run-length encoding: a 7-bit code per run, runs of equal codes merged.
-class CodeRuns {
- public:
-  explicit CodeRuns(std::vector<uint8_t>& out) : out_(out) {}
-
-  void pixels(uint8_t code, uint64_t n) {
-    if (n == 0) return;
-    if (pending_ > 0 && code == code_) {
-      pending_ += n;
-      return;
+// Appends a run of n pixels of a 7-bit code: the code alone for one pixel, else with the run flag
+// and the length in 1 to 4 bytes, split at kCtbMaxRun.
+void append_ctb_run(std::vector<uint8_t>& out, uint8_t code, uint64_t n) {
+  while (n > 0) {
+    const uint32_t m = uint32_t(std::min<uint64_t>(n, kCtbMaxRun));
+    n -= m;
+    if (m == 1) {
+      out.push_back(code);
+      continue;
     }
-    flush();
-    code_ = code;
-    pending_ = n;
-  }
-
-  void flush() {
-    for (uint64_t n = pending_; n > 0;) {
-      const uint32_t m = uint32_t(std::min<uint64_t>(n, kCtbMaxRun));
-      n -= m;
-      if (m == 1) {
-        out_.push_back(code_);
-        continue;
-      }
-      out_.push_back(uint8_t(code_ | kCtbRunFlag));
-      if (m <= 0x7F) {
-        out_.push_back(uint8_t(m));
-      } else if (m <= 0x3FFF) {
-        out_.push_back(uint8_t(0x80 | m >> 8));
-        out_.push_back(uint8_t(m));
-      } else if (m <= 0x1FFFFF) {
-        out_.push_back(uint8_t(0xC0 | m >> 16));
-        out_.push_back(uint8_t(m >> 8));
-        out_.push_back(uint8_t(m));
-      } else {
-        out_.push_back(uint8_t(0xE0 | m >> 24));
-        out_.push_back(uint8_t(m >> 16));
-        out_.push_back(uint8_t(m >> 8));
-        out_.push_back(uint8_t(m));
-      }
+    out.push_back(uint8_t(code | kCtbRunFlag));
+    if (m <= 0x7F) {
+      out.push_back(uint8_t(m));
+    } else if (m <= 0x3FFF) {
+      out.push_back(uint8_t(0x80 | m >> 8));
+      out.push_back(uint8_t(m));
+    } else if (m <= 0x1FFFFF) {
+      out.push_back(uint8_t(0xC0 | m >> 16));
+      out.push_back(uint8_t(m >> 8));
+      out.push_back(uint8_t(m));
+    } else {
+      out.push_back(uint8_t(0xE0 | m >> 24));
+      out.push_back(uint8_t(m >> 16));
+      out.push_back(uint8_t(m >> 8));
+      out.push_back(uint8_t(m));
     }
-    pending_ = 0;
   }
-
- private:
-  std::vector<uint8_t>& out_;
-  uint8_t code_ = 0;
-  uint64_t pending_ = 0;
-};
+}
 
 // A preview's header and its run-length RGB565 (the green's low bit dropped for the run flag):
 // one word for a pixel alone, two for two, the flagged colour and 0x3000 | (n - 1) for 3 to
@@ -314,21 +294,9 @@ std::vector<uint8_t> front(const CtbJob& job, const Layout& l, const CtbSummary&
 
 void encode_ctb_layer(const CtbJob& job, size_t k, const MaskRuns& runs, std::vector<uint8_t>& out) {
   out.clear();
-  CodeRuns rle(out);
-  uint64_t gap = 0;  // unlit pixels since the last run
-  for (int r = 0; r < runs.height; ++r) {
-    uint32_t c = 0;
-    for (uint32_t i = runs.row_begin[size_t(r)]; i < runs.row_begin[size_t(r) + 1]; ++i) {
-      const uint32_t c0 = runs.columns[2 * size_t(i)], c1 = runs.columns[2 * size_t(i) + 1];
-      rle.pixels(0, gap + (c0 - c));
-      gap = 0;
-      rle.pixels(runs.levels[size_t(i)] >> 1, c1 - c0);
-      c = c1;
-    }
-    gap += uint64_t(uint32_t(runs.width) - c);
-  }
-  rle.pixels(0, gap);
-  rle.flush();
+  for_each_merged_run(
+      runs, [](uint8_t level) { return uint8_t(level >> 1); },
+      [&](uint8_t code, uint64_t n) { append_ctb_run(out, code, n); });
   if (out.size() > std::numeric_limits<uint32_t>::max())
     throw Error(format(".ctb writer: layer %zu encodes to %zu bytes, more than a .ctb layer holds", k, out.size()));
   if (job.encryption_key != 0) CtbKeyStream(job.encryption_key, uint32_t(k)).apply(out.data(), out.size());

@@ -8,6 +8,7 @@
 #include "byte_fields.h"
 #include "goo_format.h"
 #include "lift_fields.h"
+#include "merged_runs.h"
 #include "slicereuse/printer/print_estimate.h"
 #include "slicereuse/util/atomic_file.h"
 #include "slicereuse/util/error.h"
@@ -103,26 +104,14 @@ void check_job(const std::string& path, const GooJob& job) {
                 " faded layers, more than a .goo's transition layers hold (65535)");
 }
 
-// Appends one layer's chunks (goo_format.h) for runs of pixels given in order; merges equal
-// neighbours first, so that a run of 0 that ends a row and the one that starts the next are one.
-class RunEncoder {
+// Appends one layer's chunks (goo_format.h), a run of pixels of one level at a time: a diff chunk
+// where the level is near the last chunk's, which the encoder remembers.
+class GooChunks {
  public:
-  explicit RunEncoder(std::vector<uint8_t>& out) : out_(out) {}
+  explicit GooChunks(std::vector<uint8_t>& out) : out_(out) {}
 
-  void pixels(uint8_t level, uint64_t n) {
-    if (n == 0) return;
-    if (pending_ > 0 && level == level_) {
-      pending_ += n;
-      return;
-    }
-    flush();
-    level_ = level;
-    pending_ = n;
-  }
-
-  void flush() {
-    for (uint64_t n = pending_; n > 0;) n -= chunk(level_, n);
-    pending_ = 0;
+  void run(uint8_t level, uint64_t n) {
+    while (n > 0) n -= chunk(level, n);
   }
 
  private:
@@ -148,8 +137,6 @@ class RunEncoder {
   }
 
   std::vector<uint8_t>& out_;
-  uint8_t level_ = 0;
-  uint64_t pending_ = 0;
   int previous_ = -1;  // the last chunk's level; none before the first
 };
 
@@ -173,21 +160,9 @@ void encode_goo_layer(const GooJob& job, size_t k, const MaskRuns& runs, std::ve
   w.u32(0);  // the data size, once known
   const size_t data_at = out.size();
   out.push_back(kGooLayerMagic);
-  RunEncoder rle(out);
-  uint64_t gap = 0;  // unlit pixels since the last run
-  for (int r = 0; r < runs.height; ++r) {
-    uint32_t c = 0;
-    for (uint32_t i = runs.row_begin[size_t(r)]; i < runs.row_begin[size_t(r) + 1]; ++i) {
-      const uint32_t c0 = runs.columns[2 * size_t(i)], c1 = runs.columns[2 * size_t(i) + 1];
-      rle.pixels(0, gap + (c0 - c));
-      gap = 0;
-      rle.pixels(runs.levels[size_t(i)], c1 - c0);
-      c = c1;
-    }
-    gap += uint64_t(uint32_t(runs.width) - c);
-  }
-  rle.pixels(0, gap);
-  rle.flush();
+  GooChunks chunks(out);
+  for_each_merged_run(
+      runs, [](uint8_t level) { return level; }, [&](uint8_t level, uint64_t n) { chunks.run(level, n); });
   uint8_t sum = 0;
   for (size_t i = data_at + 1; i < out.size(); ++i) sum = uint8_t(sum + out[i]);
   out.push_back(uint8_t(~sum));

@@ -9,6 +9,7 @@
 #include "byte_fields.h"
 #include "lift_fields.h"
 #include "mask_stack.h"
+#include "merged_runs.h"
 #include "photon_workshop_format.h"
 #include "slicereuse/printer/print_estimate.h"
 #include "slicereuse/util/atomic_file.h"
@@ -115,44 +116,22 @@ Target check_job(const std::string& path, const PhotonWorkshopJob& job) {
   return t;
 }
 
-// Appends the pw0Img runs for pixels given in order; merges equal codes first, so that a run
-// of 0 that ends a row and the one that starts the next are one.
-class Pw0Encoder {
- public:
-  explicit Pw0Encoder(std::vector<uint8_t>& out) : out_(out) {}
-
-  void pixels(unsigned code, uint64_t n) {
-    if (n == 0) return;
-    if (pending_ > 0 && code == code_) {
-      pending_ += n;
-      return;
+// Appends a pw0Img run of n pixels of a 4-bit code: black and white (codes 0 and 0xF) in 2 bytes
+// with a 12-bit length, grey in 1 byte with a 4-bit one, split at those lengths.
+void append_pw0_run(std::vector<uint8_t>& out, unsigned code, uint64_t n) {
+  const bool wide = code == 0 || code == 0xF;
+  const uint64_t most = wide ? kPwsMaxRun : kPwsMaxGreyRun;
+  while (n > 0) {
+    const unsigned m = unsigned(std::min(n, most));
+    if (wide) {
+      out.push_back(uint8_t(code << 4 | m >> 8));
+      out.push_back(uint8_t(m & 0xFF));
+    } else {
+      out.push_back(uint8_t(code << 4 | m));
     }
-    flush();
-    code_ = code;
-    pending_ = n;
+    n -= m;
   }
-
-  void flush() {
-    const bool wide = code_ == 0 || code_ == 0xF;
-    const uint64_t most = wide ? kPwsMaxRun : kPwsMaxGreyRun;
-    for (uint64_t n = pending_; n > 0;) {
-      const unsigned m = unsigned(std::min(n, most));
-      if (wide) {
-        out_.push_back(uint8_t(code_ << 4 | m >> 8));
-        out_.push_back(uint8_t(m & 0xFF));
-      } else {
-        out_.push_back(uint8_t(code_ << 4 | m));
-      }
-      n -= m;
-    }
-    pending_ = 0;
-  }
-
- private:
-  std::vector<uint8_t>& out_;
-  unsigned code_ = 0;
-  uint64_t pending_ = 0;
-};
+}
 
 // Layer k's moves: the bottom layers' or the others'.
 bool bottom_layer(const PrinterProfile& p, size_t k) { return k < size_t(std::max(0, p.bottom_layers)); }
@@ -312,23 +291,13 @@ void encode_pw0_layer(const PhotonWorkshopJob& job, size_t k, const MaskRuns& ru
   const size_t lit_at = out.size();
   w.u32(0);  // lit pixels, once counted
   w.u32(0);
-  Pw0Encoder rle(out);
-  uint64_t gap = 0, lit = 0;  // unlit pixels since the last run; lit pixels
-  for (int r = 0; r < runs.height; ++r) {
-    uint32_t c = 0;
-    for (uint32_t i = runs.row_begin[size_t(r)]; i < runs.row_begin[size_t(r) + 1]; ++i) {
-      const uint32_t c0 = runs.columns[2 * size_t(i)], c1 = runs.columns[2 * size_t(i) + 1];
-      const uint8_t level = runs.levels[size_t(i)];
-      rle.pixels(0, gap + (c0 - c));
-      gap = 0;
-      rle.pixels(level >> 4, c1 - c0);
-      if (level != 0) lit += c1 - c0;
-      c = c1;
-    }
-    gap += uint64_t(uint32_t(runs.width) - c);
-  }
-  rle.pixels(0, gap);
-  rle.flush();
+  uint64_t lit = 0;  // pixels a reader finds lit: those of a code other than 0
+  for_each_merged_run(
+      runs, [](uint8_t level) { return unsigned(level >> 4); },
+      [&](unsigned code, uint64_t n) {
+        append_pw0_run(out, code, n);
+        if (code != 0) lit += n;
+      });
   const uint64_t size = out.size() - kPwsLayerDefSize;
   if (size > kMaxAddress || lit > kMaxAddress)
     throw Error(format("Photon Workshop writer: layer %zu encodes to %llu bytes, more than a layer holds", k,
