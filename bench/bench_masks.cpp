@@ -5,11 +5,10 @@
 //   folder     - export_masks to <out>/masks (one PNG per layer)
 //   sl1        - export_masks to <out>/masks.sl1
 //   compare    - compare_mask_stacks(folder, sl1), which must report S = 1 and grey difference 0
-//   goo        - (only when asked for) export_masks to <out>/masks.goo (Elegoo), and, with the
-//                sl1 step, compare_mask_stacks(sl1, goo), which must report S = 1 (not timed)
-//   ctb        - (only when asked for) export_masks to <out>/masks.ctb (Chitubox), and, with the
-//                sl1 step, compare_mask_stacks(sl1, ctb), which must report S = 1 (not timed; a
-//                256-level mask's greys differ by the .ctb's 7-bit codes)
+//   goo, ctb, pwmx, pm4n, ... - (only when asked for) export_masks to <out>/masks.<step>, any
+//                print format of print_formats.h, and, with the sl1 step, compare_mask_stacks(sl1,
+//                it), which must report S = 1 (not timed; a .goo has the sl1's grey levels, a
+//                .ctb or Anycubic file the nearest it holds: their largest grey difference)
 //   layer      - (only when asked for) every layer on one thread, as an .sl1 encodes it:
 //                rasterize_layer_runs, then encode_mask_png of the runs (anti-aliased: also
 //                rasterize_layer_antialiased_png); microseconds per layer of each in thread CPU
@@ -27,7 +26,7 @@
 // Usage: bench_masks [--shape arch] [--faces 545000] [--height 14.484] [--thickness 0.001]
 //                    [--runs 3] [--out /tmp/slicereuse-bench] [--aa 0|1|0,1] [--gamma 1]
 //                    [--reference R] [--aa-reference R] [--printer ID]
-//                    [--steps rasterize,folder,sl1,compare[,goo][,ctb][,layer][,deflate]]
+//                    [--steps rasterize,folder,sl1,compare[,goo][,ctb][,pwmx]...[,layer][,deflate]]
 #include <libdeflate.h>
 #include <omp.h>
 #include <sys/resource.h>
@@ -47,6 +46,7 @@
 #include "family.h"
 #include "slicereuse/png/deflate_runs.h"
 #include "slicereuse/png/mask_png.h"
+#include "slicereuse/printer/print_formats.h"
 #include "slicereuse/printer/printer_presets.h"
 #include "slicereuse/printer/printer_profile.h"
 #include "slicereuse/printfiles/compare_mask_stacks.h"
@@ -192,12 +192,19 @@ void time_layers(const Slices& s, const PrinterProfile& profile, int runs) {
 
 }  // namespace
 
+// A print format's step: its file and its wall and CPU seconds per run.
+struct FileStep {
+  std::string name, path;
+  std::vector<double> wall, cpu;
+};
+
 // One kind of mask the steps are run for, and what they measured.
 struct Mode {
   PrinterProfile profile;
-  std::string folder, sl1, goo, ctb, reference;
-  std::vector<double> t_raster, t_folder, t_sl1, t_compare, t_goo, t_ctb;
-  std::vector<double> c_raster, c_folder, c_sl1, c_compare, c_goo, c_ctb;
+  std::string folder, sl1, reference;
+  std::vector<FileStep> files;  // the print formats asked for besides the sl1
+  std::vector<double> t_raster, t_folder, t_sl1, t_compare;
+  std::vector<double> c_raster, c_folder, c_sl1, c_compare;
   StackComparison cmp;
   const char* name() const { return profile.antialiasing ? "anti-aliased" : "binary"; }
 };
@@ -241,8 +248,9 @@ int main(int argc, char** argv) {
     const std::string suffix = m.profile.antialiasing ? "_aa" : "";
     m.folder = args.out + "/masks" + suffix;
     m.sl1 = args.out + "/masks" + suffix + ".sl1";
-    m.goo = args.out + "/masks" + suffix + ".goo";
-    m.ctb = args.out + "/masks" + suffix + ".ctb";
+    for (const PrintFormat& f : print_formats())
+      if (f.extension != ".sl1" && f.extension != ".sl1s" && wants(steps, f.extension.c_str() + 1))
+        m.files.push_back({f.extension.substr(1), args.out + "/masks" + suffix + f.extension, {}, {}});
     m.reference = m.profile.antialiasing ? aa_reference : reference;
     modes.push_back(m);
   }
@@ -275,8 +283,7 @@ int main(int argc, char** argv) {
       if (wants(steps, "folder"))
         m.t_folder.push_back(seconds_of([&] { export_masks(s, profile, m.folder); }, m.c_folder));
       if (wants(steps, "sl1")) m.t_sl1.push_back(seconds_of([&] { export_masks(s, profile, m.sl1); }, m.c_sl1));
-      if (wants(steps, "goo")) m.t_goo.push_back(seconds_of([&] { export_masks(s, profile, m.goo); }, m.c_goo));
-      if (wants(steps, "ctb")) m.t_ctb.push_back(seconds_of([&] { export_masks(s, profile, m.ctb); }, m.c_ctb));
+      for (FileStep& f : m.files) f.wall.push_back(seconds_of([&] { export_masks(s, profile, f.path); }, f.cpu));
       if (compare)
         m.t_compare.push_back(seconds_of([&] { m.cmp = compare_mask_stacks(m.folder, m.sl1, ""); }, m.c_compare));
     }
@@ -289,17 +296,12 @@ int main(int argc, char** argv) {
                   static_cast<unsigned long long>(m.cmp.differing_pixels), m.cmp.max_grey_difference);
       ok = ok && m.cmp.min_similarity == 1 && m.cmp.max_grey_difference == 0;
     }
-    if (!m.t_goo.empty() && !m.t_sl1.empty()) {
-      const StackComparison c = compare_mask_stacks(m.sl1, m.goo, "");
-      std::printf("goo against sl1: min S %.9g, %llu differing pixels\n", c.min_similarity,
-                  static_cast<unsigned long long>(c.differing_pixels));
+    for (const FileStep& f : m.files) {
+      if (m.t_sl1.empty()) break;
+      const StackComparison c = compare_mask_stacks(m.sl1, f.path, "");
+      std::printf("%s against sl1: min S %.9g, %llu differing pixels, max grey difference %d\n", f.name.c_str(),
+                  c.min_similarity, static_cast<unsigned long long>(c.differing_pixels), c.max_grey_difference);
       ok = ok && c.min_similarity == 1 && c.differing_pixels == 0;
-    }
-    if (!m.t_ctb.empty() && !m.t_sl1.empty()) {
-      const StackComparison c = compare_mask_stacks(m.sl1, m.ctb, "");
-      std::printf("ctb against sl1: min S %.9g, %llu differing pixels, max grey difference %d\n", c.min_similarity,
-                  static_cast<unsigned long long>(c.differing_pixels), c.max_grey_difference);
-      ok = ok && c.min_similarity == 1;
     }
     std::printf("%-10s %9s %12s %12s   wall seconds per run\n", "step", "seconds", "layers/s", "cpu-seconds");
     struct Row {
@@ -307,12 +309,11 @@ int main(int argc, char** argv) {
       const std::vector<double>& wall;
       const std::vector<double>& cpu;
     };
-    const Row rows[] = {{"rasterize", m.t_raster, m.c_raster},
-                        {"folder", m.t_folder, m.c_folder},
-                        {"sl1", m.t_sl1, m.c_sl1},
-                        {"compare", m.t_compare, m.c_compare},
-                        {"goo", m.t_goo, m.c_goo},
-                        {"ctb", m.t_ctb, m.c_ctb}};
+    std::vector<Row> rows = {{"rasterize", m.t_raster, m.c_raster},
+                             {"folder", m.t_folder, m.c_folder},
+                             {"sl1", m.t_sl1, m.c_sl1},
+                             {"compare", m.t_compare, m.c_compare}};
+    for (const FileStep& f : m.files) rows.push_back({f.name.c_str(), f.wall, f.cpu});
     for (const Row& row : rows) {
       if (row.wall.empty()) continue;
       const double med = median_of(row.wall);
@@ -326,8 +327,8 @@ int main(int argc, char** argv) {
       std::printf("folder %.1f MB\n", double(bytes) / 1e6);
     }
     if (!m.t_sl1.empty()) std::printf("sl1 %.1f MB\n", double(std::filesystem::file_size(m.sl1)) / 1e6);
-    if (!m.t_goo.empty()) std::printf("goo %.1f MB\n", double(std::filesystem::file_size(m.goo)) / 1e6);
-    if (!m.t_ctb.empty()) std::printf("ctb %.1f MB\n", double(std::filesystem::file_size(m.ctb)) / 1e6);
+    for (const FileStep& f : m.files)
+      std::printf("%s %.1f MB\n", f.name.c_str(), double(std::filesystem::file_size(f.path)) / 1e6);
     if (!m.reference.empty() && !m.t_sl1.empty()) {
       const StackComparison ref = compare_mask_stacks(m.reference, m.sl1, "");
       // S is taken on the binary threshold: only a grey difference of 0 means every level kept.
