@@ -664,3 +664,25 @@ def test_photon_workshop_reader_refuses_what_the_specification_does_not_allow(pr
     (tmp_path / "bad.pwmx").write_bytes(bytes(data))
     with pytest.raises(ValueError, match=re.escape(message(good))):
         pw.read_photon_workshop(tmp_path / "bad.pwmx").layer_image(0)
+
+
+# --- every way of making a file: supports, plates, a Dask worker -----------------------------
+@pytest.mark.parametrize("printer", ["elegoo_mars_2_pro", "anycubic_photon_mono_x"])
+def test_supported_plates_made_on_a_dask_worker_decode_to_their_png_folder(make_family, tmp_path, printer):
+    """family.py --plates --supports on the embedded Dask cluster (--workers 1): the printer's own
+    file of a plate of supported members decodes, header and every layer, to the PNG folder the
+    same command makes with --format png."""
+    from test_batch import family_py
+    expect = expect_of(printer)
+    members = make_family("arch", 3, faces=500, height=PART_HEIGHT)
+    made = {}
+    for fmt in (expect.extension[1:], "png"):
+        run = family_py("--workers", "1", "--plates", "--supports", "--printer", printer, "--antialiasing",
+                        "--format", fmt, "--layer-thickness", THICKNESS, *members, out=tmp_path / fmt)
+        made[fmt] = json.loads(run.stdout)
+        assert made[fmt]["failed"] == 0 and made[fmt]["engine"] == "LocalCluster of 1 worker process", made[fmt]
+    ours, pngs = made[expect.extension[1:]]["plates"], made["png"]["plates"]
+    assert len(ours) == len(pngs) == 1 and all(m.get("support_points", 0) > 0 for m in ours[0]["members"]), ours
+    layers = check_layers(ours[0]["output"], pngs[0]["output"])
+    check_header(ours[0]["output"], expect, layers)
+    assert layers > LAYERS  # the part stands on its supports and pad
