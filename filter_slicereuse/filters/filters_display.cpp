@@ -138,8 +138,8 @@ ParamList<PrinterSettings> printer_params() {
       .number(&PrinterSettings::elephant_foot, "elephant_foot", "Elephant-foot compensation (mm)",
               kPrintersElephantFoot, Range::at_least(kPrintersElephantFoot, "mm"),
               "How much the first layer (on the plate, or the pad's bottom) shrinks against elephant-foot spread, "
-              "in mm, faded to none over the faded layers as PrusaSlicer does (its elefant_foot_compensation; "
-              "features narrower than the printer's elefant_foot_min_width keep their width). -1 (the default): the printer's own, 0.2 mm on the SL1S "
+              "in mm (PrusaSlicer's elefant_foot_compensation; features narrower than the printer's "
+              "elefant_foot_min_width keep their width). -1 (the default): the printer's own, 0.2 mm on the SL1S "
               "SPEED as PrusaSlicer's profile, 0 on the others (every printer).");
   return l;
 }

@@ -3,7 +3,7 @@
 #include "filter_params.h"
 #include "filters_common.h"
 #include "slicereuse/formats/slice_files.h"
-#include "slicereuse/plates/faded_elephant_foot.h"
+#include "slicereuse/plates/first_layer.h"
 #include "slicereuse/printfiles/export_masks.h"
 #include "slicereuse/util/error.h"
 
@@ -44,8 +44,8 @@ Result run_export_masks(const ExportParams& p, Host& host) {
       throw Error(std::string("contour_file is empty and ") + e.what());
     }
   }
-  // With elephant-foot compensation, the stack as one range whose first layers are compensated
-  // (as every print job's are, plate_job.h).
+  // With elephant-foot compensation, the stack as one range whose layer 0 is compensated (as
+  // every print job's is, plate_job.h).
   const MaskExportStats stats =
       profile.elephant_foot_mm > 0 && s.layers() > 0
           ? export_masks(SliceChunks{{0, s.layers()}, s.thickness,
@@ -53,9 +53,8 @@ Result run_export_masks(const ExportParams& p, Host& host) {
                                        std::vector<SlicePart> parts(1);
                                        parts[0].slices = std::move(s);
                                        const Slices& whole = parts[0].slices;
-                                       compensate_faded_layers(parts, profile,
-                                                               {whole.z_start, whole.thickness, whole.layers(), 0,
-                                                                whole.layers()});
+                                       compensate_first_layer(parts, profile, whole.layer_z[0], whole.z_start,
+                                                              whole.thickness);
                                        return parts;
                                      }},
                          profile, p.output_path, sub_progress(progress, 0.1, 1))

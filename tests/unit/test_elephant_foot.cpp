@@ -1,11 +1,8 @@
 // Elephant-foot compensation: exact shrinking of straight contours, narrow features kept and
-// joined to the rest, compensation 0 as the identity, errors in words; faded over the first
-// layers of a stack as PrusaSlicer fades it.
+// joined to the rest, compensation 0 as the identity, errors in words.
 #include <gtest/gtest.h>
 
 #include "error_of.h"
-#include "mask_layers.h"
-#include "slicereuse/plates/faded_elephant_foot.h"
 #include "slicereuse/regions/elephant_foot.h"
 #include "slicereuse/regions/layer_region.h"
 
@@ -75,54 +72,4 @@ TEST(ElephantFoot, ZeroCompensationKeepsTheRegion) {
 TEST(ElephantFoot, BadInputInWords) {
   EXPECT_ERROR(compensated({rect(0, 0, 1, 1)}, -0.1), "the elephant-foot compensation is -0.1 mm");
   EXPECT_ERROR(compensated({rect(0, 0, 1, 1)}, 0.2, NAN), "the elephant-foot minimal width is nan mm");
-}
-
-// PrusaSlicer's fade: the full compensation on layer 0, linearly less to none on layer F - 1.
-TEST(FadedElephantFoot, FadesLinearlyOverTheFadedLayers) {
-  PrinterProfile p;
-  p.elephant_foot_mm = 0.2;
-  p.faded_layers = 10;
-  EXPECT_EQ(faded_elephant_foot_mm(p, 0, 100), 0.2);
-  EXPECT_DOUBLE_EQ(faded_elephant_foot_mm(p, 1, 100), 0.2 * 8 / 9);
-  EXPECT_DOUBLE_EQ(faded_elephant_foot_mm(p, 8, 100), 0.2 / 9);
-  EXPECT_EQ(faded_elephant_foot_mm(p, 9, 100), 0);
-  EXPECT_EQ(faded_elephant_foot_mm(p, 50, 100), 0);
-  // A stack shorter than the faded layers fades over its own layers.
-  EXPECT_DOUBLE_EQ(faded_elephant_foot_mm(p, 1, 4), 0.2 * 2 / 3);
-  EXPECT_EQ(faded_elephant_foot_mm(p, 3, 4), 0);
-  // No faded layers: layer 0 alone, fully; no compensation: none.
-  p.faded_layers = 0;
-  EXPECT_EQ(faded_elephant_foot_mm(p, 0, 100), 0.2);
-  EXPECT_EQ(faded_elephant_foot_mm(p, 1, 100), 0);
-  p.elephant_foot_mm = 0;
-  EXPECT_EQ(faded_elephant_foot_mm(p, 0, 100), 0);
-}
-
-// A range of a stack's layers, compensated where the fade reaches into it: each such layer one
-// part of its compensated region, the rest of the parts' layers as they were.
-TEST(FadedElephantFoot, ARangeIsCompensatedWhereTheFadeReachesIntoIt) {
-  PrinterProfile p;
-  p.elephant_foot_mm = 0.2;
-  p.faded_layers = 5;  // layers 0..3 shrink: 0.2, 0.15, 0.1, 0.05
-  // Two parts of a range that starts at stack layer 2: 4 layers of a 10 mm square from the
-  // range's layer 0, 2 layers of another square from its layer 1.
-  std::vector<SlicePart> parts(2);
-  parts[0].slices = test::make_slices({{test::rect(0, 0, 10, 10)}, {test::rect(0, 0, 10, 10)},
-                                       {test::rect(0, 0, 10, 10)}, {test::rect(0, 0, 10, 10)}});
-  parts[1].slices = test::make_slices({{test::rect(20, 0, 30, 10)}, {test::rect(20, 0, 30, 10)}});
-  parts[1].first = 1;
-  compensate_faded_layers(parts, p, {0.2, 0.1, 20, 2, 4});
-  // Range layers 0 and 1 (stack layers 2, 3) compensated; the rest copied out from layer 2.
-  ASSERT_GE(parts.size(), 3u);
-  EXPECT_EQ(parts[0].first, 0u);
-  EXPECT_EQ(parts[1].first, 1u);
-  EXPECT_NEAR(region_area_mm2(layer_region(LayerView(parts[0].slices, 0))), 9.8 * 9.8, 1e-9);
-  EXPECT_NEAR(region_area_mm2(layer_region(LayerView(parts[1].slices, 0))), 2 * 9.9 * 9.9, 1e-9);
-  double rest = 0;
-  for (size_t i = 2; i < parts.size(); ++i) {
-    EXPECT_EQ(parts[i].first, 2u);
-    rest += region_area_mm2(layer_region(LayerView(parts[i].slices, 0)));
-  }
-  EXPECT_NEAR(rest, 2 * 100, 1e-9);  // range layer 2: both squares, unshrunk
-  EXPECT_EQ(parts.size(), 4u);
 }

@@ -7,7 +7,7 @@
 #include <memory>
 #include <mutex>
 
-#include "slicereuse/plates/faded_elephant_foot.h"
+#include "slicereuse/plates/first_layer.h"
 #include "slicereuse/slicing/layer_chunks.h"
 #include "slicereuse/slicing/layer_planes.h"
 #include "slicereuse/slicing/slice_layers.h"
@@ -365,8 +365,9 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
       st.ranges = 0;
       st.masks = export_masks(LayerMaker{L, st.thickness, [&](size_t k, std::vector<SlicePart>& parts) {
                                            made.make(k, parts);
-                                           compensate_faded_layers(parts, profile,
-                                                                   {frame.bottom(0), frame.thickness, L, k, 1});
+                                           if (k == 0)
+                                             compensate_first_layer(parts, profile, frame.plane(0), frame.bottom(0),
+                                                                    frame.thickness);
                                          }},
                               profile, output_path, sub_progress(progress, share, 1));
       made.stats(st);
@@ -386,8 +387,8 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
                            plate_range(members, frame, first[i], first[i + 1], st, range_progress);
                        st.slicing_seconds += seconds_since(t);
                        if (o.whole_stack) o.whole_stack(parts);
-                       compensate_faded_layers(parts, profile,
-                                               {frame.bottom(0), frame.thickness, L, first[i], first[i + 1] - first[i]});
+                       if (first[i] == 0)
+                         compensate_first_layer(parts, profile, frame.plane(0), frame.bottom(0), frame.thickness);
                        return parts;
                      }};
   st.masks = export_masks(chunks, profile, output_path, progress);
