@@ -21,6 +21,7 @@
 #include "ctb_writer.h"
 #include "error_of.h"
 #include "mask_layers.h"
+#include "print_file_tests.h"
 #include "mask_stack.h"
 #include "slicereuse/printer/printer_profile.h"
 #include "slicereuse/printfiles/compare_mask_stacks.h"
@@ -39,7 +40,14 @@ namespace {
 using test::Layer;
 using test::make_slices;
 using test::raster;
+using test::le16;
+using test::le32;
+using test::f32;
+using test::part_layers;
+using test::read_bytes;
+using test::read_stack;
 using test::rect;
+using test::write_bytes;
 using test::small_display;
 using test::star;
 
@@ -49,42 +57,8 @@ constexpr size_t kLargeAt = 112, kSmallAt = kLargeAt + 32 + 2 * 400 * 300,
                  kParametersAt = kSmallAt + 32 + 2 * 200 * 125,
                  kSlicerAt = kParametersAt + 60, kNameAt = kSlicerAt + 76;
 
-std::string read_bytes(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(f), {});
-}
-
-void write_bytes(const std::string& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
-}
-
-uint32_t le32(const std::string& b, size_t at) {
-  uint32_t v = 0;
-  for (size_t i = 4; i-- > 0;) v = v << 8 | uint8_t(b[at + i]);
-  return v;
-}
-
-uint16_t le16(const std::string& b, size_t at) { return uint16_t(uint8_t(b[at]) | uint8_t(b[at + 1]) << 8); }
-
-float f32(const std::string& b, size_t at) {
-  const uint32_t v = le32(b, at);
-  float f;
-  std::memcpy(&f, &v, 4);
-  return f;
-}
-
 void put32(std::string& b, size_t at, uint32_t v) {
   for (size_t i = 0; i < 4; ++i) b[at + i] = char(v >> (8 * i));
-}
-
-// Holes, thin walls (1.5 and 0.5 pixels wide at 100 um), a star, an empty layer, and a part
-// that runs off the display.
-std::vector<Layer> part_layers() {
-  return {{rect(-5, -5, 5, 5), rect(-2, -2, 2, 2, true)},
-          {rect(-6, -6, 6, 6), rect(-5.85, -5.85, 5.85, 5.85, true), rect(-0.025, -4, 0.025, 4)},
-          {star(0.3, -0.2, 3, 7.5, 9), rect(-1, -1, 1, 1, true)},
-          {},
-          {rect(-12, -3, 3.33, 2.71), rect(-1.1, -0.9, 0.7, 1.3, true)}};
 }
 
 PrinterProfile mirrored_display() {
@@ -98,18 +72,6 @@ PrinterProfile mirrored_display() {
   p.offset_x_mm = 0.37;
   p.offset_y_mm = -1.21;
   return p;
-}
-
-// Every layer of the stack at path.
-std::vector<MaskImage> read_stack(const std::string& path) {
-  MaskStack stack(path);
-  std::vector<MaskImage> images(stack.layers());
-  std::vector<uint8_t> bytes;
-  for (size_t k = 0; k < stack.layers(); ++k) {
-    stack.read(k, bytes);
-    stack.decode(k, bytes, images[k]);
-  }
-  return images;
 }
 
 // A .ctb level: the code level >> 1 decoded as 0 or 2c + 1.

@@ -16,6 +16,7 @@
 #include "goo_reader.h"
 #include "goo_writer.h"
 #include "mask_layers.h"
+#include "print_file_tests.h"
 #include "mask_stack.h"
 #include "slicereuse/printer/printer_presets.h"
 #include "slicereuse/printer/printer_profile.h"
@@ -34,21 +35,15 @@ using test::Layer;
 using test::Loop;
 using test::make_slices;
 using test::raster;
+using test::part_layers;
+using test::read_bytes;
 using test::rect;
+using test::write_bytes;
 using test::small_display;
 using test::star;
 
 constexpr size_t kHeaderBytes = 195477;  // the specification's fields, added up
 constexpr size_t kFileTimeAt = 68, kFileTimeBytes = 24;
-
-std::string read_bytes(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(f), {});
-}
-
-void write_bytes(const std::string& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
-}
 
 uint32_t be32(const std::string& b, size_t at) {
   uint32_t v = 0;
@@ -64,16 +59,6 @@ std::pair<size_t, size_t> layer_data(const std::string& b, size_t k) {
     if (i == k) return {at + 70, size};
     at += 70 + size + 2;
   }
-}
-
-// Holes, thin walls (1.5 and 0.5 pixels wide at 100 um), a star, an empty layer, and a part
-// that runs off the display.
-std::vector<Layer> part_layers() {
-  return {{rect(-5, -5, 5, 5), rect(-2, -2, 2, 2, true)},
-          {rect(-6, -6, 6, 6), rect(-5.85, -5.85, 5.85, 5.85, true), rect(-0.025, -4, 0.025, 4)},
-          {star(0.3, -0.2, 3, 7.5, 9), rect(-1, -1, 1, 1, true)},
-          {},
-          {rect(-12, -3, 3.33, 2.71), rect(-1.1, -0.9, 0.7, 1.3, true)}};
 }
 
 // Every layer of the file, read by the specification's reader, equals rasterize_layer's image.

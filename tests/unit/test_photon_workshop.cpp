@@ -18,6 +18,7 @@
 
 #include "error_of.h"
 #include "mask_layers.h"
+#include "print_file_tests.h"
 #include "mask_stack.h"
 #include "photon_workshop_writer.h"
 #include "thumbnail_png.h"
@@ -37,33 +38,16 @@ namespace {
 using test::Layer;
 using test::make_slices;
 using test::raster;
+using test::le16;
+using test::le32;
+using test::f32;
+using test::part_layers;
+using test::read_bytes;
+using test::read_stack;
 using test::rect;
+using test::write_bytes;
 using test::small_display;
 using test::star;
-
-std::string read_bytes(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(f), {});
-}
-
-void write_bytes(const std::string& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
-}
-
-uint32_t le32(const std::string& b, size_t at) {
-  uint32_t v = 0;
-  for (size_t i = 4; i-- > 0;) v = v << 8 | uint8_t(b[at + i]);
-  return v;
-}
-
-uint16_t le16(const std::string& b, size_t at) { return uint16_t(uint8_t(b[at]) | uint8_t(b[at + 1]) << 8); }
-
-float f32(const std::string& b, size_t at) {
-  const uint32_t bits = le32(b, at);
-  float f;
-  std::memcpy(&f, &bits, 4);
-  return f;
-}
 
 std::string text(const std::string& b, size_t at, size_t n) { return std::string(b.c_str() + at, strnlen(b.c_str() + at, n)); }
 
@@ -73,16 +57,6 @@ constexpr size_t kHeaderAt = 20, kSoftwareAt = 24, kPreviewAt = 28, kColoursAt =
 
 // Layer k's LAYERDEF entry.
 size_t entry(const std::string& b, size_t k) { return le32(b, kLayerDefAt) + 20 + 32 * k; }
-
-// Holes, thin walls (1.5 and 0.5 pixels wide at 100 um), a star, an empty layer, and a part
-// that runs off the display.
-std::vector<Layer> part_layers() {
-  return {{rect(-5, -5, 5, 5), rect(-2, -2, 2, 2, true)},
-          {rect(-6, -6, 6, 6), rect(-5.85, -5.85, 5.85, 5.85, true), rect(-0.025, -4, 0.025, 4)},
-          {star(0.3, -0.2, 3, 7.5, 9), rect(-1, -1, 1, 1, true)},
-          {},
-          {rect(-12, -3, 3.33, 2.71), rect(-1.1, -0.9, 0.7, 1.3, true)}};
-}
 
 PrinterProfile mirrored_display() {
   PrinterProfile p;
@@ -94,17 +68,6 @@ PrinterProfile mirrored_display() {
   p.offset_x_mm = 0.37;
   p.offset_y_mm = -1.21;
   return p;
-}
-
-std::vector<MaskImage> read_stack(const std::string& path) {
-  MaskStack stack(path);
-  std::vector<MaskImage> images(stack.layers());
-  std::vector<uint8_t> bytes;
-  for (size_t k = 0; k < stack.layers(); ++k) {
-    stack.read(k, bytes);
-    stack.decode(k, bytes, images[k]);
-  }
-  return images;
 }
 
 // Every extension and the versions it takes: {name, file_version (0: default), version written}.
