@@ -402,24 +402,6 @@ TEST_F(PhotonWorkshopFiles, CompareMaskStacksReadsThemAgainstFoldersAndGoo) {
   EXPECT_GT(compare_mask_stacks(path("m.pm4n"), path("o.pm4n"), "").layers[0].differing_pixels, 0u);
 }
 
-TEST_F(PhotonWorkshopFiles, RangesOfLayersMakeTheSameFileByteForByte) {
-  const std::vector<Layer> layers = part_layers();
-  PrinterProfile p = mirrored_display();
-  p.antialiasing = true;
-  p.grey_levels = 16;
-  SliceChunks chunks;
-  chunks.first = {0, 2, 3, layers.size()};
-  chunks.thickness = 0.1;
-  chunks.make = [&](size_t i, const Progress&) {
-    std::vector<SlicePart> parts;
-    parts.push_back({make_slices({layers.begin() + long(chunks.first[i]), layers.begin() + long(chunks.first[i + 1])}), 0});
-    return parts;
-  };
-  export_masks(make_slices(layers), p, path("whole.pm5s"));
-  export_masks(chunks, p, path("ranged.pm5s"));
-  EXPECT_TRUE(read_bytes(path("whole.pm5s")) == read_bytes(path("ranged.pm5s")));
-}
-
 TEST_F(PhotonWorkshopFiles, BadJobsAreRefusedInWordsBeforeAnythingIsWritten) {
   const Slices s = make_slices(part_layers());
   PrinterProfile p = small_display();
@@ -459,13 +441,8 @@ TEST_F(PhotonWorkshopFiles, BadJobsAreRefusedInWordsBeforeAnythingIsWritten) {
   EXPECT_TRUE(fs::is_empty(dir));
 }
 
-TEST_F(PhotonWorkshopFiles, AFailedOrCancelledExportLeavesNothingAndKeepsAnOldFile) {
-  const Slices s = make_slices(std::vector<Layer>(300, Layer{star(0.3, -0.2, 3, 7.5, 9)}));
-  int calls = 0;
-  const Progress cancel = [&](double, const char*) { return ++calls < 3; };
-  EXPECT_THROW(export_masks(s, small_display(), path("c.pwmb"), cancel), Cancelled);
-  EXPECT_TRUE(fs::is_empty(dir));
-  // A layer that fails while the file is written.
+TEST_F(PhotonWorkshopFiles, AFailedWriteLeavesNothing) {
+  // A layer that fails while the file is written (cancelled exports: test_print_formats.cpp).
   const PhotonWorkshopJob job{small_display(), 3, 0.05};
   EXPECT_ERROR(write_photon_workshop(
                    path("f.pm5s"), job,
@@ -482,12 +459,6 @@ TEST_F(PhotonWorkshopFiles, AFailedOrCancelledExportLeavesNothingAndKeepsAnOldFi
                    [] { return PhotonWorkshopSummary{}; }),
                "layer 2 failed");
   EXPECT_TRUE(fs::is_empty(dir));
-  export_masks(make_slices(part_layers()), small_display(), path("keep.pwmb"));
-  const std::string before = read_bytes(path("keep.pwmb"));
-  calls = 0;
-  EXPECT_THROW(export_masks(s, small_display(), path("keep.pwmb"), cancel), Cancelled);
-  EXPECT_EQ(read_bytes(path("keep.pwmb")), before);
-  EXPECT_EQ(std::vector<fs::path>(fs::directory_iterator(dir), {}), std::vector<fs::path>{path("keep.pwmb")});
 }
 
 TEST_F(PhotonWorkshopFiles, MaskStackRefusesTruncatedAndCorruptFilesInWords) {
