@@ -1,6 +1,6 @@
 #pragma once
 // What the print file tests (test_goo.cpp, test_ctb.cpp, test_photon_workshop.cpp) share: the
-// layers they export, a file's bytes and its little-endian fields, and a stack's every layer
+// layers they export, a display, a file's bytes and its little-endian fields, and a stack's every layer
 // through MaskStack.
 #include <cstddef>
 #include <cstdint>
@@ -23,6 +23,21 @@ inline std::vector<Layer> part_layers() {
           {star(0.3, -0.2, 3, 7.5, 9), rect(-1, -1, 1, 1, true)},
           {},
           {rect(-12, -3, 3.33, 2.71), rect(-1.1, -0.9, 0.7, 1.3, true)}};
+}
+
+// 240 x 160 pixels of 80 x 120 um, mirrored both ways, off centre: nothing symmetric to hide a
+// swapped axis or flip.
+inline PrinterProfile mirrored_display() {
+  PrinterProfile p;
+  p.width_px = 240;
+  p.height_px = 160;
+  p.pixel_size_x_um = 80;
+  p.pixel_size_y_um = 120;
+  p.mirror_x = true;
+  p.mirror_y = true;
+  p.offset_x_mm = 0.37;
+  p.offset_y_mm = -1.21;
+  return p;
 }
 
 inline std::string read_bytes(const std::string& path) {

@@ -39,6 +39,7 @@ namespace {
 
 using test::Layer;
 using test::make_slices;
+using test::mirrored_display;
 using test::raster;
 using test::le16;
 using test::le32;
@@ -59,19 +60,6 @@ constexpr size_t kLargeAt = 112, kSmallAt = kLargeAt + 32 + 2 * 400 * 300,
 
 void put32(std::string& b, size_t at, uint32_t v) {
   for (size_t i = 0; i < 4; ++i) b[at + i] = char(v >> (8 * i));
-}
-
-PrinterProfile mirrored_display() {
-  PrinterProfile p;
-  p.width_px = 240;
-  p.height_px = 160;
-  p.pixel_size_x_um = 80;
-  p.pixel_size_y_um = 120;
-  p.mirror_x = true;
-  p.mirror_y = true;
-  p.offset_x_mm = 0.37;
-  p.offset_y_mm = -1.21;
-  return p;
 }
 
 // A .ctb level: the code level >> 1 decoded as 0 or 2c + 1.

@@ -34,6 +34,7 @@ namespace {
 using test::Layer;
 using test::Loop;
 using test::make_slices;
+using test::mirrored_display;
 using test::raster;
 using test::part_layers;
 using test::read_bytes;
@@ -64,19 +65,6 @@ std::pair<size_t, size_t> layer_data(const std::string& b, size_t k) {
 void expect_layers_equal_the_masks(const test::SpecGoo& g, const Slices& s, const PrinterProfile& p) {
   ASSERT_EQ(g.layers.size(), s.layers());
   for (size_t k = 0; k < s.layers(); ++k) EXPECT_TRUE(g.layers[k].pixels == raster(s, k, p)) << "layer " << k;
-}
-
-PrinterProfile mirrored_display() {
-  PrinterProfile p;
-  p.width_px = 240;
-  p.height_px = 160;
-  p.pixel_size_x_um = 80;
-  p.pixel_size_y_um = 120;
-  p.mirror_x = true;
-  p.mirror_y = true;
-  p.offset_x_mm = 0.37;
-  p.offset_y_mm = -1.21;
-  return p;
 }
 
 class GooFiles : public test::TempFolderTest {
