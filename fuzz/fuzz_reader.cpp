@@ -1,6 +1,7 @@
 // libFuzzer target for one file reader, chosen at build time: SLICEREUSE_FUZZ_READ names the reader
 // and its header is force-included (see fuzz/CMakeLists.txt). The readers take paths, as the plugins call them, so every input is
-// written to a file in /dev/shm first. A reader may refuse an input only with slicereuse::Error
+// written to a file in /dev/shm first, named with SLICEREUSE_FUZZ_EXTENSION for the readers
+// that go by the extension. A reader may refuse an input only with slicereuse::Error
 // (a clear message); anything else (a crash, a sanitizer report, another exception such as
 // std::bad_alloc from trusting a header, a hang) is a finding.
 #include <unistd.h>
@@ -15,7 +16,7 @@
 namespace {
 
 const std::string& input_path() {
-  static const std::string path = "/dev/shm/slicereuse_fuzz_" + std::to_string(::getpid());
+  static const std::string path = "/dev/shm/slicereuse_fuzz_" + std::to_string(::getpid()) + SLICEREUSE_FUZZ_EXTENSION;
   return path;
 }
 
