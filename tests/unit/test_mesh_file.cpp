@@ -84,7 +84,7 @@ TEST_F(MeshFileTest, AsciiPlyFansAQuadAndStepsOverOtherPropertiesAndElements) {
   const std::string ply =
       "ply\nformat ascii 1.0\ncomment made by hand\nobj_info test\n"
       "element vertex 5\nproperty float x\nproperty float y\nproperty float z\nproperty uchar red\nproperty float nx\n"
-      "element edge 1\nproperty list uchar int vertex_pair\nproperty int flags\n"
+      "element group 1\nproperty list uchar int members\nproperty int flags\n"
       "element face 2\nproperty uchar flags\nproperty list uchar int vertex_indices\nproperty float quality\n"
       "end_header\n"
       "0 0 0 255 1\n1 0 0 0 1\n1 1 0 0 1\n0 1 0.1 0 1\n5 5 5 0 0\n"

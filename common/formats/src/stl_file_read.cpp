@@ -18,39 +18,53 @@ static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "binary STL reading ass
 constexpr uint64_t kHeaderBytes = 84, kFacetBytes = 50;
 
 // Corners in, indexed vertices out: add() returns the index of the first corner equal to
-// (x, y, z) as floats, making a new vertex when there is none.
+// (x, y, z) as floats, making a new vertex when there is none. An open-addressing hash table at
+// most half full, doubled as vertices come (a closed mesh has about one vertex per 6 corners).
 class CornerUnifier {
  public:
-  explicit CornerUnifier(size_t corners) {
+  explicit CornerUnifier(size_t expected_vertices) {
     size_t n = 16;
-    while (n < 2 * corners) n *= 2;
+    while (n < 2 * expected_vertices) n *= 2;
     slots_.assign(n, 0);
-    mask_ = n - 1;
-    keys_.reserve(3 * corners);
+    keys_.reserve(3 * expected_vertices);
   }
   uint32_t add(float x, float y, float z) {
     // + 0.0f makes -0.0 into +0.0, so that the bits of equal floats are equal.
     uint32_t k[3];
     const float c[3] = {x + 0.0f, y + 0.0f, z + 0.0f};
     std::memcpy(k, c, sizeof k);
-    uint64_t h = (uint64_t(k[0]) << 32 | k[1]) * 0x9E3779B97F4A7C15ull ^ uint64_t(k[2]) * 0xC2B2AE3D27D4EB4Full;
-    h ^= h >> 29;
-    for (size_t s = size_t(h) & mask_;; s = (s + 1) & mask_) {
+    const size_t mask = slots_.size() - 1;
+    for (size_t s = hash(k) & mask;; s = (s + 1) & mask) {
       const uint32_t v = slots_[s];
       if (v == 0) {
         const uint32_t index = uint32_t(keys_.size() / 3);
-        slots_[s] = index + 1;
         keys_.insert(keys_.end(), k, k + 3);
+        slots_[s] = index + 1;
+        if (2 * size_t(index + 1) > slots_.size()) grow();
         return index;
       }
       const uint32_t* q = &keys_[3 * size_t(v - 1)];
       if (q[0] == k[0] && q[1] == k[1] && q[2] == k[2]) return v - 1;
     }
   }
+
  private:
+  static size_t hash(const uint32_t k[3]) {
+    uint64_t h = (uint64_t(k[0]) << 32 | k[1]) * 0x9E3779B97F4A7C15ull ^ uint64_t(k[2]) * 0xC2B2AE3D27D4EB4Full;
+    return size_t(h ^ (h >> 29));
+  }
+  void grow() {
+    slots_.assign(2 * slots_.size(), 0);
+    const size_t mask = slots_.size() - 1;
+    for (size_t v = 0; v < keys_.size() / 3; ++v) {
+      size_t s = hash(&keys_[3 * v]) & mask;
+      while (slots_[s] != 0) s = (s + 1) & mask;
+      slots_[s] = uint32_t(v + 1);
+    }
+  }
+
   std::vector<uint32_t> slots_;  // 0: empty, else vertex index + 1
-  size_t mask_;
-  std::vector<uint32_t> keys_;
+  std::vector<uint32_t> keys_;   // the vertices' floats as bits, -0.0 made +0.0
 };
 
 // Adds a corner to the mesh: its vertex index to F and, when it is a new vertex, its own floats
@@ -75,8 +89,8 @@ Mesh read_binary(const MeshBytes& in, uint32_t facets) {
   if (in.size() < need)
     in.fail("binary STL of " + std::to_string(facets) + " facets needs " + std::to_string(need) +
             " bytes but the file has " + std::to_string(in.size()) + " (truncated)");
-  StlBuilder s{in, CornerUnifier(3 * size_t(facets)), {}};
-  s.mesh.V.reserve(3 * 3 * size_t(facets) / 2);
+  StlBuilder s{in, CornerUnifier(size_t(facets) / 2 + 3), {}};
+  s.mesh.V.reserve(3 * (size_t(facets) / 2 + 3));
   s.mesh.F.reserve(3 * size_t(facets));
   const char* p = in.b + kHeaderBytes;
   for (uint32_t f = 0; f < facets; ++f, p += kFacetBytes) {
@@ -103,8 +117,8 @@ std::string_view next_token(const char*& p, const char* e) {
 Mesh read_ascii(const MeshBytes& in) {
   const char* p = static_cast<const char*>(std::memchr(in.b, '\n', in.size()));
   p = p ? p + 1 : in.e;  // the first line ("solid name") is skipped, as vcg does
-  // A facet takes at least 60 bytes of text, so this never reserves more than the file holds.
-  StlBuilder s{in, CornerUnifier(3 * (in.size() / 60 + 1)), {}};
+  // A facet takes about 250 bytes of text and a closed mesh has half as many vertices as facets.
+  StlBuilder s{in, CornerUnifier(in.size() / 500 + 3), {}};
   auto expect = [&](std::string_view word) {
     const char* at = p;
     const std::string_view t = next_token(p, in.e);
