@@ -32,7 +32,8 @@ stderr.
 
 Members are tasks of a Dask cluster (python/slicereuse_batch.py): by default an embedded
 LocalCluster of --workers worker processes on this machine (default: one per two cores, each
-with two threads, the best measured here; --workers 0: everything in this process); --scheduler an existing cluster (`dask scheduler` and `dask worker`
+with two threads, the best measured here, and on two cores or fewer everything in this process, as
+with --workers 0: one worker process would only add its start-up); --scheduler an existing cluster (`dask scheduler` and `dask worker`
 elsewhere, README "Family batches on a cluster"), whose workers write to DIR at the same path.
 Outputs appear complete or not at all; --resume skips members whose outputs an earlier run made
 complete and valid (checked by content, with the same inputs and parameters). A member that
@@ -93,7 +94,8 @@ def main():
     ap.add_argument("--spacing", type=float, default=2.0, help="--plates: spacing between members in mm")
     ap.add_argument("--placements", help="--plates: a placements file to use instead of arranging")
     ap.add_argument("--workers", type=int, help="worker processes of the embedded Dask LocalCluster "
-                    "(default: one per two cores); 0: make everything in this process")
+                    "(default: one per two cores; on two cores or fewer, this process); 0: make everything in "
+                    "this process")
     ap.add_argument("--scheduler", help="run on this Dask cluster instead (tcp://HOST:PORT)")
     ap.add_argument("--send-encoding", action="store_true",
                     help="send the source's encoding to each worker once, instead of workers reading it from --out "

@@ -47,8 +47,6 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from distributed import WorkerPlugin
-
 RECORDS = ".slicereuse-batch"
 _RECORD_VERSION = 1
 IN_PROCESS = "in-process"
@@ -267,15 +265,19 @@ class InProcess:
         _forget_shared(release)
 
 
-class _Setup(WorkerPlugin):
-    """A Dask worker plugin: runs setup() once in each worker process, when it starts."""
-    name = "slicereuse-setup"
+def _setup_plugin(setup):
+    """A Dask worker plugin that runs setup() once in each worker process, when it starts.
+    distributed is imported only here and where a cluster is used: importing it costs a job
+    made in this process 0.2 s."""
+    from distributed import WorkerPlugin
 
-    def __init__(self, setup):
-        self._setup = setup
+    class Setup(WorkerPlugin):
+        name = "slicereuse-setup"
 
-    def setup(self, worker):
-        self._setup()
+        def setup(self, worker):
+            setup()
+
+    return Setup()
 
 
 class OnDask:
@@ -285,7 +287,7 @@ class OnDask:
         self.client = client
         self.description = description
         if setup:
-            client.register_plugin(_Setup(setup))
+            client.register_plugin(_setup_plugin(setup))
 
     def share(self, path, send=False):
         """path for the tasks: every worker sees the output folder, so it reads the file there
@@ -335,13 +337,15 @@ def failed_entry(job, message):
 def engine(workers=None, scheduler=None, setup=None):
     """The engine jobs run on: scheduler (an address, "tcp://host:port"): that Dask cluster;
     else workers == 0: this process; else an embedded LocalCluster of workers worker processes
-    (None: default_workers()). setup: run once in each worker process when it starts."""
+    (None: default_workers(), and this process when that is one: a single worker process would
+    only add its start-up, about a second, to the job). setup: run once in each worker process
+    when it starts."""
     if scheduler:
         from distributed import Client
         with Client(scheduler, timeout="30s") as client:
             yield OnDask(client, f"Dask scheduler {scheduler}", setup)
         return
-    if workers == 0:
+    if workers == 0 or (workers is None and default_workers() == 1):
         yield InProcess()
         return
     import logging

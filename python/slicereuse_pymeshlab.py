@@ -73,11 +73,6 @@ def printer_extension(printer=None):
     return presets[preset]["extension"]
 
 
-def _load_mesh(ms, path):
-    ms.load_new_mesh(str(path))
-    return ms.current_mesh_id()
-
-
 def _check_files(paths):
     for path in paths:
         if not Path(path).is_file():
@@ -198,8 +193,7 @@ def _generate_source_points(source, out, layer_thickness, epoch, resume):
 
 def _make_source_points(job, _shared):
     with _meshset() as ms:
-        _load_mesh(ms, job.mesh)
-        r = ms.apply_filter("generate_support_points", layer_thickness=job.layer_thickness,
+        r = ms.apply_filter("generate_support_points", mesh_file=job.mesh, layer_thickness=job.layer_thickness,
                             support_points_file=job.outputs[0])
     return {"support_points": r["points"]}
 
@@ -209,10 +203,11 @@ LOWEST_VERTEX = -1e30
 
 
 def _lowest_vertex(path):
-    """The lowest vertex's z of the mesh at path: where its slicing (and encoding) starts."""
+    """The lowest vertex's z of the mesh at path: where its slicing (and encoding) starts; the
+    slicing filter's mesh_z_min, the mesh read straight from its file and cut by a single plane."""
     with _meshset() as ms:
-        _load_mesh(ms, path)
-        return ms.current_mesh().bounding_box().min()[2]
+        return ms.apply_filter("slice_mesh_with_encoding", mesh_file=str(path), layer_thickness=1e6, contour_file="",
+                               encoding_file="")["mesh_z_min"]
 
 
 def _supports_identity(supports):
@@ -239,8 +234,9 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     printer_extension(profile's printer)).
 
     Default: slices source once with encoding (out/<source stem>_enc.srb), then for each
-    target loads it and runs make_print_job, which transfers the encoding (kept in memory by
-    the plugin across members) and writes the masks, with no contour file in between.
+    target runs make_print_job, which reads it from its file (no MeshLab layer), transfers the
+    encoding (kept in memory by the plugin across members) and writes the masks, with no contour
+    file in between.
     direct=True: the same outputs from slicing every target directly (the baseline), each
     from its own lowest vertex: the members of a family sit on one build plate (the same lowest
     z, as the source's), which is where transfer puts their layers too.
@@ -276,8 +272,8 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     seconds cover loading it, transferring or slicing it and writing its print file; "worker"
     made it ("in-process", or the Dask worker's name); "resumed": made by an earlier run;
     "source_seconds": of "seconds", slicing the source (0 when kept or direct).
-    details=True adds the filter's own "slicing_seconds" (transfer or slicing) and
-    "masks_seconds" per target, and "cpu_seconds", the process's CPU time (all threads) for the
+    details=True adds the filter's own "read_seconds" (reading the member's file),
+    "slicing_seconds" (transfer or slicing) and "masks_seconds" per target, and "cpu_seconds", the process's CPU time (all threads) for the
     same span as "seconds" (for benchmarks on a shared machine, where CPU time is less disturbed
     than wall time). progress(step, steps, text) is called after each step."""
     _check_files([source, *targets])
@@ -352,74 +348,39 @@ _failed_meshsets = []
 # The members the plates' arrangement loaded in this process, kept for the plates' tasks that
 # run here (each then loads none of its members, and gives them back when made):
 # {"ms": MeshSet, "ids": {path: mesh id}, "identity": {path: batch.file_identity(path)}}.
-_arranged = None
-
-
 @contextlib.contextmanager
-def _meshset(ms=None):
-    """A MeshSet for one job (ms, or a new one). One whose filter failed is kept alive until the
-    process ends: pymeshlab 2025.7.post1 writes into it later otherwise (see README); if it held
-    the arranged members, they are no longer used."""
-    global _arranged
-    ms = _pymeshlab.MeshSet() if ms is None else ms
+def _meshset():
+    """A new MeshSet for one job. One whose filter failed is kept alive until the process ends:
+    pymeshlab 2025.7.post1 writes into it later otherwise (see README)."""
+    ms = _pymeshlab.MeshSet()
     try:
         yield ms
     except Exception as e:
         _failed_meshsets.append(ms)
-        if _arranged is not None and _arranged["ms"] is ms:
-            _arranged = None
         if isinstance(e, _pymeshlab.PyMeshLabException):
             # The filter's own message, without pymeshlab's "Failed to apply filter: name\nDetails: ".
             raise RuntimeError(str(e).split("\nDetails: ", 1)[-1]) from None
         raise
 
 
-def _arranged_members(paths):
-    """The kept MeshSet of the arrangement with paths' members shown and the others hidden (a
-    plate filter's visible_only members), or None when one of them is not kept or its file
-    changed since it was loaded."""
-    kept = _arranged
-    if kept is None or not all(p in kept["ids"] and batch.file_identity(p) == kept["identity"][p] for p in paths):
-        return None
-    for p, i in kept["ids"].items():
-        kept["ms"].set_mesh_visibility(i, p in paths)
-    return kept["ms"]
-
-
-def _forget_arranged(paths):
-    """Gives back the kept members of paths (their plate is made)."""
-    global _arranged
-    if _arranged is None:
-        return
-    ms, ids = _arranged["ms"], _arranged["ids"]
-    for p in paths:
-        if p in ids:
-            ms.set_current_mesh(ids.pop(p))
-            ms.delete_current_mesh()
-    if not ids:
-        _arranged = None
-
-
 def _make_encoding(job, _shared):
     with _meshset() as ms:
-        _load_mesh(ms, job.mesh)
-        ms.apply_filter("slice_mesh_with_encoding", layer_thickness=job.layer_thickness, contour_file="",
-                        encoding_file=job.outputs[0], file_format=int(job.binary))
+        ms.apply_filter("slice_mesh_with_encoding", mesh_file=job.mesh, layer_thickness=job.layer_thickness,
+                        contour_file="", encoding_file=job.outputs[0], file_format=int(job.binary))
     return {}
 
 
 def _make_member(job, encoding):
-    """One member's print job (a family() task): loads it and runs make_print_job by transfer of
-    encoding (a path; "" slices it directly); with job.check, also slices it directly into that
-    file and compares."""
+    """One member's print job (a family() task): make_print_job reads it from its file (no layer)
+    and transfers encoding (a path; "" slices it directly); with job.check, also slices it
+    directly into that file and compares."""
     with _meshset() as ms:
         t0, c0 = time.perf_counter(), time.process_time()
-        _load_mesh(ms, job.target)
         # z_start is left at the filter's default: the mesh's lowest vertex.
         supports = _support_parameters(job.supports)
-        r = ms.apply_filter("make_print_job", encoding_file=encoding, layer_thickness=job.layer_thickness,
-                            contour_file=job.contours, output_path=job.output, strict=job.strict, **supports,
-                            **job.profile)
+        r = ms.apply_filter("make_print_job", mesh_file=job.target, encoding_file=encoding,
+                            layer_thickness=job.layer_thickness, contour_file=job.contours, output_path=job.output,
+                            strict=job.strict, **supports, **job.profile)
         entry = {"layers": r["layers"], "points": r["points"], "resliced_layers": r["resliced_layers"],
                  "seconds": time.perf_counter() - t0, "output": job.output,
                  "method": "reuse" if r["reused"] else "direct"}
@@ -428,11 +389,12 @@ def _make_member(job, encoding):
         if encoding and not r["reused"]:
             entry["direct_reason"] = NOT_OF_THE_FAMILY
         if job.details:
-            entry.update(slicing_seconds=r["slicing_seconds"], masks_seconds=r["masks_seconds"],
+            entry.update(read_seconds=r["read_seconds"], slicing_seconds=r["slicing_seconds"],
+                         masks_seconds=r["masks_seconds"],
                          cpu_seconds=time.process_time() - c0)
         if job.check:
             # The same supports (the same points), so that only the layers' making differs.
-            ms.apply_filter("make_print_job", encoding_file="", layer_thickness=job.layer_thickness,
+            ms.apply_filter("make_print_job", mesh_file=job.target, encoding_file="", layer_thickness=job.layer_thickness,
                             contour_file="", output_path=job.check, **supports, **job.profile)
             c = ms.apply_filter("compare_mask_stacks", stack_a=job.output, stack_b=job.check, report_file="")
             entry.update(min_similarity=c["min_similarity"], max_grey_difference=c["max_grey_difference"])
@@ -440,10 +402,7 @@ def _make_member(job, encoding):
 
 
 def _free_cached_memory():
-    """The plugin's cached encoding, and members kept from an arrangement, are not needed after a
-    batch's last task."""
-    global _arranged
-    _arranged = None
+    """The plugin's cached encoding is not needed after a batch's last task."""
     load().MeshSet().apply_filter("free_cached_memory")
 
 
@@ -461,8 +420,8 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
     lowest vertex of all targets (the family's members sit on one build plate, the source's).
     First all targets are arranged (arrange_on_plates) or, with placements (a placements file, its
     members named by file name), placed as it says, as a task on the engine; then every plate is
-    a task (make_plate_job with that plate only): in the process that arranged, it uses the
-    members loaded there (each member is loaded once), elsewhere it loads its own. Workers,
+    a task (make_plate_job with that plate only). Both read the members straight from their
+    files (the filters' member_files), without a MeshLab layer each. Workers,
     scheduler, resume and strict as for family(). verify=True: also makes each plate by direct
     slicing into out/direct/, under the plate's file name, and compares (min_similarity 1 and
     max_grey_difference 0 mean identical); not counted in a plate's seconds.
@@ -509,8 +468,6 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
                                           profile=profile, extension=extension, layer_thickness=layer_thickness,
                                           supports=_supports_identity(member_supports)))
     with batch.engine(workers, scheduler, setup=load) as engine:
-        # Arranged on the engine, where the plates are made: the process that arranges keeps the
-        # members it loaded, and its plates' tasks use them instead of loading them again.
         arranged = resume and batch.valid_record(arrange)
         if not arranged:
             arranged = next(engine.submit_all(_arrange, [arrange], ""))[1]
@@ -550,24 +507,16 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
 
 
 def _arrange(job, _shared):
-    """The plates' placements (a plates() task, on the engine): every target loaded, arranged by
-    arrange_on_plates or placed as job.placements says, into job.outputs[0] with the layout
-    pictures; also the lowest vertex of all targets, where direct slicing of every plate starts.
-    The loaded targets are kept in this process for its plates' tasks (_arranged)."""
-    global _arranged
-    _arranged = None
-    ids = {}
+    """The plates' placements (a plates() task, on the engine): every target read from its file,
+    arranged by arrange_on_plates or placed as job.placements says, into job.outputs[0] with the
+    layout pictures; also the lowest vertex of all targets, where direct slicing of every plate
+    starts."""
     with _meshset() as ms:
-        lowest = float("inf")
-        for t in job.targets:
-            ids[t] = _load_mesh(ms, t)
-            lowest = min(lowest, ms.current_mesh().bounding_box().min()[2])
-        r = ms.apply_filter("arrange_on_plates", spacing_mm=job.spacing_mm, placements_file=job.placements,
-                            placements_output=job.outputs[0], output_path=job.output,
-                            layer_thickness=job.layer_thickness, z_start=job.z_start,
+        r = ms.apply_filter("arrange_on_plates", member_files=";".join(job.targets), spacing_mm=job.spacing_mm,
+                            placements_file=job.placements, placements_output=job.outputs[0],
+                            output_path=job.output, layer_thickness=job.layer_thickness, z_start=job.z_start,
                             **_support_parameters(job.supports), **job.profile)
-    _arranged = {"ms": ms, "ids": ids, "identity": {t: batch.file_identity(t) for t in ids}}
-    return {"members": r["members"], "arrange_seconds": r["arrange_seconds"], "z_start": lowest}
+    return {"members": r["members"], "arrange_seconds": r["arrange_seconds"], "z_start": r["z_min"]}
 
 
 # Why a member given the source's encoding was sliced directly. pymeshlab returns the filters'
@@ -590,19 +539,15 @@ def _plate_member(member, encoding, result):
 
 
 def _make_plate(job, encoding):
-    """One plate's print file (a plates() task): its members (kept from the arrangement when it
-    ran in this process, else loaded) made into that plate by transfer of encoding (a path; ""
+    """One plate's print file (a plates() task): its members read from their files by
+    make_plate_job (no layer each) and made into that plate by transfer of encoding (a path; ""
     slices directly from job.z_start); with job.check_output, also by direct slicing into that
     pattern's plate, compared. Each member says how it was made: "direct" when there is no
     encoding or the filter could not reuse it."""
     t0 = time.perf_counter()
-    kept = _arranged_members(job.paths)
-    with _meshset(kept) as ms:
-        if kept is None:
-            for path in job.paths:
-                _load_mesh(ms, path)
-        common = dict(layer_thickness=job.layer_thickness, z_start=job.z_start, placements_file=job.summary,
-                      plate=job.plate, placements_output="", visible_only=True, strict=job.strict,
+    with _meshset() as ms:
+        common = dict(member_files=";".join(job.paths), layer_thickness=job.layer_thickness, z_start=job.z_start,
+                      placements_file=job.summary, plate=job.plate, placements_output="", strict=job.strict,
                       **_support_parameters(job.supports), **job.profile)
         r = ms.apply_filter("make_plate_job", encoding_file=encoding, output_path=job.plate_output, **common)
         members = [_plate_member(m, encoding, r) for m in job.base["members"]]
@@ -615,8 +560,6 @@ def _make_plate(job, encoding):
             c = ms.apply_filter("compare_mask_stacks", stack_a=job.outputs[0], stack_b=job.outputs[1],
                                 report_file="")
             entry.update(min_similarity=c["min_similarity"], max_grey_difference=c["max_grey_difference"])
-    if kept is not None:
-        _forget_arranged(job.paths)
     return entry
 
 

@@ -130,6 +130,25 @@ std::vector<MemberSupports> job_member_supports(const std::vector<const Mesh*>& 
 void add_support_figures(const MemberSupports& s, const std::string& suffix, Result& result);
 inline double support_seconds(const MemberSupports& s) { return s.points_seconds + s.tree_seconds; }
 
+// The mesh_file parameter of the filters that work on one mesh: the mesh read straight from a
+// file instead of the current mesh (a batch's way, without a layer).
+template <class P>
+ParamList<P>& add_mesh_file(ParamList<P>& l, std::string P::*field) {
+  return l.file(field, ParamType::FileOpen, "mesh_file", "Mesh file", "*.stl *.ply *.obj", nullptr,
+                "Instead of the current mesh: a mesh file (STL, PLY or OBJ), read straight into the filter "
+                "without a layer (a batch's way). Empty (the default): the current mesh.");
+}
+
+// The mesh such a filter works on, its name (the layer's, or the file's) and the seconds reading
+// the file took (0 for the current mesh). Throws Error when there is no current mesh or the file
+// cannot be read.
+struct JobMesh {
+  Mesh mesh;
+  std::string name;
+  double read_seconds = 0;
+};
+JobMesh job_mesh(const std::string& mesh_file, Host& host);
+
 // The slicing options of the layer_thickness and z_start parameters (z_start_option: at or
 // below kLowestVertexZStartAtOrBelow, the mesh's lowest vertex).
 SliceOptions slice_options(double layer_thickness, double z_start);

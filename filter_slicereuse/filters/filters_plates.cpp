@@ -3,6 +3,8 @@
 // written, nothing sliced. "Make Plate Job": the same, then each plate's print file (or only one
 // plate's: what family.py's per-plate tasks run) by reuse of a source's encoding or by direct
 // slicing, its layout picture beside it. Both share load_members and arrange_members.
+#include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "filter_params.h"
@@ -19,6 +21,7 @@ namespace {
 
 struct PlateJobParams {
   bool visible_only;
+  std::vector<std::string> member_files;
   JobLayers layers;
   JobSupports supports;
   double spacing_mm;
@@ -32,10 +35,14 @@ struct PlateJobParams {
 
 // The parameters both filters have, with the same names, labels and tooltips.
 template <class P>
-void add_visible_only(ParamList<P>& l) {
+void add_members(ParamList<P>& l) {
   l.flag(&P::visible_only, "visible_only", "Visible meshes only", true,
          "The members are the loaded meshes with faces that are shown (the eye in the layer dialog); off: every "
-         "loaded mesh with faces. pymeshlab and meshlabserver show every mesh they load.");
+         "loaded mesh with faces. pymeshlab and meshlabserver show every mesh they load.")
+      .file_list(&P::member_files, "member_files", "Member files",
+                 "Instead of the loaded meshes: the members' mesh files (STL, PLY or OBJ), separated by ';', read "
+                 "straight into the job in parallel, without a layer each (a batch's way), each named by its file "
+                 "name. Empty (the default): the loaded meshes.");
 }
 
 template <class P>
@@ -62,7 +69,7 @@ size_t first_plate(const PlateJobParams& p) { return p.plate > 0 ? size_t(p.plat
 
 ParamList<PlateJobParams> plate_job_params() {
   ParamList<PlateJobParams> l;
-  add_visible_only(l);
+  add_members(l);
   l.include(&PlateJobParams::layers,
             job_layer_params("Encoding file written by Slice Mesh with Encoding for a member of the family: every "
                              "member's layers are transferred from it (exact). Empty: every member is sliced "
@@ -96,7 +103,7 @@ std::vector<std::string> unique_names(const std::vector<Host::NamedMesh>& meshes
   return names;
 }
 
-// The members and where they go: the loaded meshes with faces (shown only, with visible_only),
+// The members and where they go: the member files, or the loaded meshes with faces (shown only, with visible_only),
 // named by unique_names (load_members), arranged or placed as the placements file says (plate > 0:
 // only that plate of it, whose members are the loaded meshes) (arrange_members).
 struct PlatePlan {
@@ -106,12 +113,15 @@ struct PlatePlan {
   Platform platform;
   Arrangement arrangement;
   double arrange_seconds = 0;
+  double read_seconds = 0;  // reading the member files
 };
 
 template <class P>
 PlatePlan load_members(const P& p, const PrinterProfile& profile, Host& host) {
   PlatePlan plan;
-  plan.loaded = host.meshes_with_faces(p.visible_only);
+  const auto start = std::chrono::steady_clock::now();
+  plan.loaded = p.member_files.empty() ? host.meshes_with_faces(p.visible_only) : host.read_mesh_files(p.member_files);
+  if (!p.member_files.empty()) plan.read_seconds = seconds_since(start);
   if (plan.loaded.empty())
     throw Error(p.visible_only ? "no shown mesh with faces: show (or load) the members to put on the plates"
                                : "no loaded mesh has faces: load the members to put on the plates");
@@ -278,6 +288,7 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
                  {"direct_members", int64_t(direct_members)},
                  {"encoding_cached", int64_t(cached)},
                  {"arrange_seconds", arrange_seconds},
+                 {"read_seconds", plan.read_seconds},
                  {"slicing_seconds", total.slicing_seconds},
                  {"seconds", seconds}});
   for (size_t k = 0; k < plates; ++k) result[format("area_used_%zu", first + k)] = arrangement.area_used[k];
@@ -292,6 +303,7 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
 
 struct ArrangeParams {
   bool visible_only;
+  std::vector<std::string> member_files;
   double layer_thickness;
   double z_start;
   JobSupports supports;
@@ -305,7 +317,7 @@ struct ArrangeParams {
 
 ParamList<ArrangeParams> arrange_params() {
   ParamList<ArrangeParams> l;
-  add_visible_only(l);
+  add_members(l);
   l.number(&ArrangeParams::layer_thickness, "layer_thickness", "Layer thickness (mm)", 0.1, Range::above(0, "mm"),
            "With supports: the layers the plate job will slice, which the supports are built for, in mm.")
       .number(&ArrangeParams::z_start, "z_start", "Start height (mm)", kLowestVertexZStart, Range::any(),
@@ -351,9 +363,13 @@ Result run_arrange(const ArrangeParams& p, Host& host) {
   host.log(format("Arrange on Plates: %zu members on %zu plates (%s %.3f s), placements in %s", plan.members.size(),
                   plates, p.placements_file.empty() ? "arranged in" : "placed by the file in", plan.arrange_seconds,
                   p.placements_output.c_str()));
+  double z_min = INFINITY;
+  for (const Mesh* m : plan.members) z_min = std::min(z_min, z_range(*m).min);
   Result result = {{"plates", int64_t(plates)},
                    {"members", int64_t(plan.members.size())},
+                   {"z_min", z_min},
                    {"arrange_seconds", plan.arrange_seconds},
+                   {"read_seconds", plan.read_seconds},
                    {"seconds", seconds_since(start)}};
   for (size_t k = 0; k < plates; ++k) result[format("area_used_%zu", k + 1)] = plan.arrangement.area_used[k];
   return result;
@@ -376,7 +392,8 @@ FilterSpec arrange_plates_filter() {
       kReference;
   return typed_filter({FilterId::ArrangePlates, "Arrange on Plates", "arrange_on_plates", description, Arity::None,
                        kLayerClass, false},
-                      arrange_params(), run_arrange, {"plates", "members", "arrange_seconds", "seconds", "area_used_*"});
+                      arrange_params(), run_arrange,
+                      {"plates", "members", "z_min", "arrange_seconds", "read_seconds", "seconds", "area_used_*"});
 }
 
 FilterSpec plate_job_filter() {
@@ -399,7 +416,7 @@ FilterSpec plate_job_filter() {
                        kLayerClass, false},
                       plate_job_params(), run_plate_job,
                       {"plates", "members", "layers", "points", "transferred_layers", "resliced_layers",
-                       "direct_members", "encoding_cached", "arrange_seconds", "slicing_seconds", "seconds",
+                       "direct_members", "encoding_cached", "arrange_seconds", "read_seconds", "slicing_seconds", "seconds",
                        "support_seconds", "area_used_*", "output_*", "layout_*", "direct_reason_*",
                        "sliced_directly_*", "support_points_*", "kept_*", "moved_*", "added_*", "dropped_*"});
 }

@@ -10,6 +10,7 @@ namespace slicereuse::plugin {
 namespace {
 
 struct PrintJobParams {
+  std::string mesh_file;
   JobLayers layers;
   JobSupports supports;
   std::string contour_file;
@@ -19,7 +20,8 @@ struct PrintJobParams {
 
 ParamList<PrintJobParams> print_job_params() {
   ParamList<PrintJobParams> l;
-  l.include(&PrintJobParams::layers,
+  add_mesh_file(l, &PrintJobParams::mesh_file)
+      .include(&PrintJobParams::layers,
             job_layer_params("Encoding file written by Slice Mesh with Encoding for a member of the family: the "
                              "current mesh's layers are transferred from it (exact). Empty: slice the current mesh "
                              "directly."))
@@ -41,10 +43,11 @@ Result run_print_job(const PrintJobParams& p, Host& host) {
   log_printer(host, "Make Print Job", p.printer);
 
   keep_buffers_for_the_next_job();
-  const std::vector<Mesh> member{host.current_mesh()};
+  JobMesh job = job_mesh(p.mesh_file, host);
+  const std::vector<Mesh> member{std::move(job.mesh)};
   const Progress progress = host.progress();
   PlateJobOptions o = plate_job_options(p.layers);
-  o.names = {"the current mesh"};
+  o.names = {p.mesh_file.empty() ? "the current mesh" : job.name};
   bool cached = false;
   std::shared_ptr<const CachedEncoding> entry;
   if (!p.layers.encoding_file.empty()) {
@@ -97,6 +100,7 @@ Result run_print_job(const PrintJobParams& p, Host& host) {
                    {"reused", int64_t(entry && why.empty())},
                    {"direct_reason", why},
                    {"output_path", p.output_path},
+                   {"read_seconds", job.read_seconds},
                    {"slicing_seconds", st.slicing_seconds},
                    {"masks_seconds", masks_seconds},
                    {"support_seconds", support_seconds(sup)},
@@ -110,7 +114,7 @@ Result run_print_job(const PrintJobParams& p, Host& host) {
 
 FilterSpec print_job_filter() {
   const std::string description = std::string(
-      "<p>Makes the current mesh's print job in one step, in memory: its layers, "
+      "<p>Makes the current mesh's print job (or a mesh file's, read without a layer) in one step, in memory: its layers, "
       "either transferred from a family member's encoding (as <i>Transfer Slicing "
       "to Mesh</i> in exact mode, so the result equals direct slicing) or sliced "
       "directly when no encoding file is given, then its masks (as <i>Export Mask "
@@ -133,11 +137,11 @@ FilterSpec print_job_filter() {
       "it.</p>") +
       kReference;
   return typed_filter({FilterId::MakePrintJob, "Make Print Job", "make_print_job", description,
-                       Arity::CurrentMesh, kLayerClass, true},
+                       Arity::None, kLayerClass, false},
                       print_job_params(), run_print_job,
                       with_display_keys({"layers", "points", "transferred_layers", "resliced_layers", "encoding_cached",
                                          "layer_ranges", "reused", "direct_reason", "output_path", "support_points", "kept",
-                                         "moved", "added", "dropped", "slicing_seconds", "support_seconds",
+                                         "moved", "added", "dropped", "read_seconds", "slicing_seconds", "support_seconds",
                                          "masks_seconds", "seconds"}));
 }
 

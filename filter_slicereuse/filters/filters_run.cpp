@@ -35,6 +35,13 @@ SliceOptions slice_options(double layer_thickness, double z_start) {
   return options;
 }
 
+JobMesh job_mesh(const std::string& mesh_file, Host& host) {
+  if (mesh_file.empty()) return {host.current_mesh(), host.current_mesh_name(), 0};
+  const auto start = std::chrono::steady_clock::now();
+  Host::NamedMesh read = std::move(host.read_mesh_files({mesh_file}).at(0));
+  return {std::move(read.mesh), std::move(read.name), seconds_since(start)};
+}
+
 void check_outputs(const std::vector<std::pair<std::string, std::string>>& named_paths) {
   namespace fs = std::filesystem;
   std::vector<std::pair<std::string, fs::path>> seen;

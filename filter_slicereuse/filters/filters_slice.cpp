@@ -12,6 +12,7 @@ namespace slicereuse::plugin {
 namespace {
 
 struct SliceParams {
+  std::string mesh_file;
   double layer_thickness;
   double z_start;
   std::string contour_file;
@@ -22,7 +23,8 @@ struct SliceParams {
 
 ParamList<SliceParams> slice_params() {
   ParamList<SliceParams> l;
-  l.number(&SliceParams::layer_thickness, "layer_thickness", "Layer thickness (mm)", 0.1, Range::above(0, "mm"),
+  add_mesh_file(l, &SliceParams::mesh_file)
+      .number(&SliceParams::layer_thickness, "layer_thickness", "Layer thickness (mm)", 0.1, Range::above(0, "mm"),
            "Distance between consecutive slicing planes, in mm; must be greater than 0.")
       .number(&SliceParams::z_start, "z_start", "Start height (mm)", kLowestVertexZStart, Range::any(),
               "Height of the bottom of the first layer, in mm. Any value at or below -1e29 (the default, -1e30) "
@@ -70,7 +72,8 @@ Result run_slice(const SliceParams& p, Host& host) {
   const auto start = std::chrono::steady_clock::now();
   const SliceOptions options = slice_options(p.layer_thickness, p.z_start);
 
-  const Mesh mesh = host.current_mesh();
+  const JobMesh job = job_mesh(p.mesh_file, host);
+  const Mesh& mesh = job.mesh;
   if (mesh.faces() == 0) throw Error("the current mesh has no faces; there is nothing to slice");
 
   const Progress progress = host.progress();
@@ -120,6 +123,7 @@ Result run_slice(const SliceParams& p, Host& host) {
           {"z_start", s.z_start},
           {"mesh_z_min", z.min},
           {"mesh_z_max", z.max},
+          {"read_seconds", job.read_seconds},
           {"slicing_seconds", slicing_seconds},
           {"seconds", seconds}};
 }
@@ -128,7 +132,7 @@ Result run_slice(const SliceParams& p, Host& host) {
 
 FilterSpec slice_filter() {
   const std::string description = std::string(
-      "<p>Slices the current mesh into horizontal layers of closed contours for "
+      "<p>Slices the current mesh (or a mesh file, read without a layer) into horizontal layers of closed contours for "
       "layer-based 3D printing, and records for every contour point its "
       "<i>encoding</i>: the mesh face it lies on and its area (barycentric) "
       "coordinates there. The encoding lets <i>Transfer Slicing to Mesh</i> produce "
@@ -145,11 +149,11 @@ FilterSpec slice_filter() {
       "adds a few layers' contours as a new edge-mesh layer to look at.</p>") +
       kReference;
   return typed_filter({FilterId::SliceWithEncoding, "Slice Mesh with Encoding", "slice_mesh_with_encoding",
-                       description, Arity::CurrentMesh, kLayerClass, true},
+                       description, Arity::None, kLayerClass, false},
                       slice_params(), run_slice,
                       {"layers", "contours", "points", "open_contours", "duplicate_faces", "zero_area_faces",
                        "repeated_vertex_faces", "boundary_edges", "non_manifold_edges", "z_start", "mesh_z_min",
-                       "mesh_z_max", "slicing_seconds", "seconds"});
+                       "mesh_z_max", "read_seconds", "slicing_seconds", "seconds"});
 }
 
 }  // namespace slicereuse::plugin

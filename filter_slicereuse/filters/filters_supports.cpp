@@ -41,6 +41,7 @@ size_t count_kind(const SupportPoints& points, SupportKind kind) {
 // ---- Generate Support Points ---------------------------------------------------------------
 
 struct GenerateParams {
+  std::string mesh_file;
   double layer_thickness;
   double z_start;
   SupportPointParams points;
@@ -50,6 +51,7 @@ struct GenerateParams {
 
 ParamList<GenerateParams> generate_params() {
   ParamList<GenerateParams> l;
+  add_mesh_file(l, &GenerateParams::mesh_file);
   add_planes(l);
   l.include(&GenerateParams::points, support_point_params())
       .number(&GenerateParams::object_elevation, "object_elevation", "Object elevation (mm)",
@@ -65,7 +67,8 @@ ParamList<GenerateParams> generate_params() {
 
 Result run_generate(const GenerateParams& p, Host& host) {
   const auto start = std::chrono::steady_clock::now();
-  const Mesh mesh = host.current_mesh();
+  const JobMesh job = job_mesh(p.mesh_file, host);
+  const Mesh& mesh = job.mesh;
   const Progress progress = host.progress();
   SliceOptions slicing = slice_options(p.layer_thickness, p.z_start);
   const Slices s = slice_layers(mesh, slicing, sub_progress(progress, 0, 0.4));
@@ -73,7 +76,7 @@ Result run_generate(const GenerateParams& p, Host& host) {
       generate_support_points(mesh, s, support_point_options(p.points, p.object_elevation), nullptr,
                               sub_progress(progress, 0.4, 1));
   if (!p.points_output.empty()) write_support_points(p.points_output, points);
-  add_points_layer(host, host.current_mesh_name(), points);
+  add_points_layer(host, job.name, points);
   const size_t islands = count_kind(points, SupportKind::Island);
   const double seconds = seconds_since(start);
   host.log(format("Generate Support Points: %zu points (%zu on islands, %zu on overhangs) on %zu layers, %.3f s",
@@ -203,7 +206,8 @@ Result run_build(const BuildParams& p, Host& host) {
 
 FilterSpec generate_support_points_filter() {
   const std::string description = std::string(
-      "<p>Finds where the current mesh needs support to be printed layer by layer, from its slicing: "
+      "<p>Finds where the current mesh (or a mesh file, read without a layer) needs support to be printed layer by "
+      "layer, from its slicing: "
       "<i>islands</i> (a region of a layer that rests on nothing below) and <i>overhangs</i> (the part of a "
       "layer reaching farther than the self-supporting distance beyond the layer below), and places support "
       "points on them, at most the minimal distance apart and denser with <i>density</i>, in the manner of "
@@ -214,7 +218,7 @@ FilterSpec generate_support_points_filter() {
       "points</i>, where they can be selected and deleted with MeshLab's tools before <i>Build Supports</i>.</p>") +
       kReference;
   return typed_filter({FilterId::GenerateSupportPoints, "Generate Support Points", "generate_support_points",
-                       description, Arity::CurrentMesh, kLayerClass, true},
+                       description, Arity::None, kLayerClass, false},
                       generate_params(), run_generate, {"points", "islands", "overhangs", "seconds"});
 }
 

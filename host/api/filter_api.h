@@ -93,6 +93,11 @@ class Host {
     Mesh mesh;
   };
   virtual std::vector<NamedMesh> meshes_with_faces(bool visible_only) = 0;
+  // Mesh files (read_mesh_file, mesh_file.h: STL, PLY, OBJ) read straight into Meshes, on all
+  // cores, without a layer each, each named by its file name as the host names a loaded layer.
+  // Coordinates are rounded to the host's own (float in 2020.09), so that a member read here is
+  // the mesh the host's loader would give. Throws Error naming the file that cannot be read.
+  virtual std::vector<NamedMesh> read_mesh_files(const std::vector<std::string>& paths) = 0;
   // The current layer's contours when it is a contour layer (a .ctr, .srb or .cli file opened
   // through the io_encoding plugin; see contour_layer.h); throws Error if it is not.
   virtual Slices current_contour_layer() = 0;

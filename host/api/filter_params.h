@@ -13,6 +13,8 @@
 //               Range::above(0, "mm"), "Distance between planes.")
 //       .file(&SliceParams::contour_file, ParamType::FileSave, "contour_file", ...);
 //   const SliceParams p = list.read(values);  // Error naming the parameter on a bad value
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -99,6 +101,23 @@ class ParamList {
     return add(s, [field, name, when_empty](P& p, const ParamValues& v) {
       p.*field = v.text(name);
       if (when_empty && (p.*field).empty()) throw Error(std::string(name) + " is empty: " + when_empty);
+    });
+  }
+
+  // A list of files to read, as one text (type String): names separated by ';', blanks around
+  // each ignored, empty names skipped; empty: none.
+  ParamList& file_list(std::vector<std::string> P::*field, const char* name, const char* label, const char* tooltip) {
+    return add(spec(name, ParamType::String, label, tooltip, 0), [field, name](P& p, const ParamValues& v) {
+      const std::string& text = v.text(name);
+      (p.*field).clear();
+      for (size_t a = 0; a <= text.size();) {
+        size_t b = std::min(text.find(';', a), text.size());
+        size_t first = a, last = b;
+        while (first < last && std::isspace((unsigned char)text[first])) ++first;
+        while (last > first && std::isspace((unsigned char)text[last - 1])) --last;
+        if (last > first) (p.*field).push_back(text.substr(first, last - first));
+        a = b + 1;
+      }
     });
   }
 

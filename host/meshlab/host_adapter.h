@@ -30,10 +30,12 @@
 // the same values, except texts, which pymeshlab cannot return (they are in the line only).
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <new>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <QString>
@@ -43,6 +45,7 @@
 #include "contour_layer.h"
 #include "filter_api.h"
 #include "mesh_convert.h"
+#include "slicereuse/formats/mesh_file.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/json_string.h"
 #include "slicereuse/util/parallel_blocks.h"
@@ -194,6 +197,21 @@ class DocumentHost : public Host {
     std::vector<NamedMesh> out(chosen.size());
     for (size_t i = 0; i < chosen.size(); ++i) out[i].name = chosen[i]->label().toStdString();
     parallel_blocks(chosen.size(), [&](size_t i) { out[i].mesh = mesh_from_vcg(chosen[i]->cm); }, {}, "reading meshes");
+    return out;
+  }
+
+  std::vector<NamedMesh> read_mesh_files(const std::vector<std::string>& paths) override {
+    std::vector<NamedMesh> out(paths.size());
+    parallel_blocks(
+        paths.size(),
+        [&](size_t i) {
+          out[i].name = std::filesystem::path(paths[i]).filename().string();
+          out[i].mesh = read_mesh_file(paths[i]);
+          using Scalar = typename CMeshO::ScalarType;
+          if constexpr (!std::is_same_v<Scalar, double>)
+            for (double& x : out[i].mesh.V) x = double(Scalar(x));
+        },
+        progress_of(cb_), "reading mesh files");
     return out;
   }
 

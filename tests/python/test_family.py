@@ -8,6 +8,7 @@ import zipfile
 
 import pytest
 
+import slicereuse_batch as batch
 import slicereuse_pymeshlab as sr
 from conftest import ROOT, THICKNESS, raises_filter_error
 from test_batch import family_py
@@ -114,7 +115,10 @@ def test_cli_prints_one_json_object(make_family, tmp_path):
     assert out.returncode == 0, out.stderr
     result = json.loads(out.stdout)
     assert set(result) == {"source", "seconds", "source_seconds", "engine", "failed", "targets"}
-    assert result["failed"] == 0 and result["engine"].startswith("LocalCluster of ")
+    # The default engine: this process where one worker process would be all (2 cores or fewer).
+    n = batch.default_workers()
+    engine = batch.IN_PROCESS if n == 1 else f"LocalCluster of {n} worker processes"
+    assert result["failed"] == 0 and result["engine"] == engine
     assert len(result["targets"]) == 2
     for t in result["targets"]:
         assert set(t) == TARGET_KEYS | {"min_similarity", "max_grey_difference"}

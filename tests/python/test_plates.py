@@ -205,42 +205,81 @@ def test_family_py_plates_verifies_every_plate(make_family, tmp_path):
         assert_layout_shows((tmp_path / p["layout"]).read_bytes(), written, plate, {m.name: m for m in members})
 
 
-def test_plates_use_the_members_the_arrangement_loaded(pymeshlab, make_family, tmp_path, monkeypatch):
-    """In the process that arranged them, the plates' tasks make each plate from the members the
-    arrangement loaded (each member loaded once in all) and give them back; the print files are
-    those of plates whose members are loaded afresh, byte for byte."""
+def test_the_batch_reads_every_member_from_its_file(pymeshlab, make_family, tmp_path, monkeypatch):
+    """plates() loads no mesh into a MeshSet: the arrangement and every plate read the members
+    straight from their files (member_files), and so do the source's slicing and its support
+    points; the plates are those of the same members loaded as layers, byte for byte."""
     monkeypatch.setenv("SOURCE_DATE_EPOCH", "1764000000")
     members = make_family("arch", 8)
     loads = []
-    load_mesh = sr._load_mesh
-    monkeypatch.setattr(sr, "_load_mesh", lambda ms, path: loads.append(path) or load_mesh(ms, path))
-    args = dict(layer_thickness=THICKNESS, profile={"printer": "method", "antialiasing": True}, extension=".sl1",
-                workers=0)
-    kept = sr.plates(members[0], members[1:], out=tmp_path / "kept", **args)
-    assert kept["failed"] == 0 and len(kept["plates"]) >= 2
-    assert sorted(map(str, loads)) == sorted(map(str, members)), "the source once (its encoding), every member once (arranged)"
-    assert sr._arranged is None
-    loads.clear()
-    monkeypatch.setattr(sr, "_arranged_members", lambda paths: None)
-    fresh = sr.plates(members[0], members[1:], out=tmp_path / "fresh", **args)
-    assert len(loads) == 1 + 2 * (len(members) - 1), "the source, every member arranged, then loaded again"
-    assert [p["members"] for p in fresh["plates"]] == [p["members"] for p in kept["plates"]]
-    for a, b in zip(kept["plates"], fresh["plates"]):
-        assert (tmp_path / "kept" / a["output"]).read_bytes() == (tmp_path / "fresh" / b["output"]).read_bytes()
+    monkeypatch.setattr(pymeshlab.MeshSet, "load_new_mesh", lambda ms, path, **kw: loads.append(path))
+    r = sr.plates(members[0], members[1:], out=tmp_path / "batch", layer_thickness=THICKNESS,
+                  profile={"printer": "method", "antialiasing": True}, extension=".sl1", workers=0, supports=True)
+    monkeypatch.undo()
+    assert r["failed"] == 0 and len(r["plates"]) >= 2 and loads == [], (r, loads)
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "1764000000")
+    ms = pymeshlab.MeshSet()
+    for m in members[1:]:
+        ms.load_new_mesh(str(m))
+    common = dict(layer_thickness=THICKNESS, placements_file=str(tmp_path / "batch" / "plates.json"),
+                  placements_output="", printer=0, antialiasing=True, supports=2,
+                  support_points_file=str(tmp_path / "batch" / "member_000_supports.srp"),
+                  z_start=ms.apply_filter("slice_mesh_with_encoding", mesh_file=str(members[0]), layer_thickness=1e6,
+                                          contour_file="", encoding_file="")["mesh_z_min"])
+    encoding = str(tmp_path / "batch" / "member_000_enc.srb")
+    (tmp_path / "layers").mkdir()
+    layers = ms.apply_filter("make_plate_job", encoding_file=encoding, output_path=str(tmp_path / "layers" / "plate.sl1"),
+                             **common)
+    assert layers["plates"] == len(r["plates"]) and layers["read_seconds"] == 0
+    for k, p in enumerate(r["plates"], 1):
+        assert (tmp_path / "layers" / f"plate_{k}.sl1").read_bytes() == Path(p["output"]).read_bytes(), k
 
 
-def test_a_failing_plate_gives_up_the_kept_members_and_the_others_are_made(pymeshlab, make_family, tmp_path,
-                                                                          monkeypatch):
-    """With strict, a plate that cannot be made from the kept members (one of them is another
-    mesh's connectivity, with no map) fails with the filter's message; its MeshSet is kept alive as a
-    failed one (pymeshlab writes into it later), no plate after it uses it, and every other plate
-    is made from freshly loaded members, equal to direct slicing."""
+@pytest.mark.parametrize("fmt", ["stl", "ascii.stl", "obj", "ply"])
+def test_member_files_give_the_masks_of_loaded_layers(pymeshlab, make_family, tmp_path, monkeypatch, fmt):
+    """The two ways members reach a job, as layers loaded by pymeshlab and as files the job reads
+    itself, give the same print files byte for byte, from binary and ASCII STL, OBJ and PLY
+    files (written by pymeshlab); reading is reported, and the layers' way reads nothing."""
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "1764000000")
+    plys = make_family("arch", 4)
+    files = []
+    for ply in plys:
+        ms = pymeshlab.MeshSet()
+        ms.load_new_mesh(str(ply))
+        files.append(tmp_path / f"{ply.stem}.{fmt}")
+        ms.save_current_mesh(str(files[-1]), **({"binary": False} if fmt == "ascii.stl" else {}))
+    ms = pymeshlab.MeshSet()
+    ms.apply_filter("slice_mesh_with_encoding", mesh_file=str(files[0]), layer_thickness=THICKNESS, contour_file="",
+                    encoding_file=str(tmp_path / "enc.srb"), file_format=1)
+    for f in files[1:]:
+        ms.load_new_mesh(str(f))
+    common = dict(encoding_file=str(tmp_path / "enc.srb"), layer_thickness=THICKNESS, placements_output="",
+                  printer=0, antialiasing=True)
+    for way in ("layers", "read", "current", "file"):  # the same file names, as the archive holds its own
+        (tmp_path / way).mkdir()
+    layers = ms.apply_filter("make_plate_job", output_path=str(tmp_path / "layers" / "plate.sl1"), **common)
+    read = pymeshlab.MeshSet().apply_filter("make_plate_job", member_files=";".join(map(str, files[1:])),
+                                            output_path=str(tmp_path / "read" / "plate.sl1"), **common)
+    assert layers["read_seconds"] == 0 < read["read_seconds"]
+    assert layers["plates"] == read["plates"] >= 1 and read["direct_members"] == 0
+    for k in range(1, read["plates"] + 1):
+        assert (tmp_path / "layers" / f"plate_{k}.sl1").read_bytes() == (tmp_path / "read" / f"plate_{k}.sl1").read_bytes()
+    ms.set_current_mesh(ms.mesh_number() - 1)
+    job = dict(encoding_file=str(tmp_path / "enc.srb"), layer_thickness=THICKNESS, contour_file="", printer=0)
+    current = ms.apply_filter("make_print_job", output_path=str(tmp_path / "current" / "job.sl1"), **job)
+    alone = pymeshlab.MeshSet().apply_filter("make_print_job", mesh_file=str(files[-1]),
+                                             output_path=str(tmp_path / "file" / "job.sl1"), **job)
+    assert current["reused"] == alone["reused"] == 1 and alone["read_seconds"] > 0
+    assert (tmp_path / "current" / "job.sl1").read_bytes() == (tmp_path / "file" / "job.sl1").read_bytes()
+
+
+def test_a_failing_plate_is_reported_and_the_others_are_made(pymeshlab, make_family, tmp_path):
+    """With strict, a plate with a member of another connectivity (no map) fails with the
+    filter's message and writes nothing; its MeshSet is kept alive as a failed one (pymeshlab
+    writes into it later); every other plate is made, equal to direct slicing."""
     members = make_family("arch", 8)
     other = tmp_path / "ear.ply"  # not of the arch's family
     other.write_bytes(make_family("ear", 2)[1].read_bytes())
-    loads = []
-    load_mesh = sr._load_mesh
-    monkeypatch.setattr(sr, "_load_mesh", lambda ms, path: loads.append(str(path)) or load_mesh(ms, path))
     failed_before = len(sr._failed_meshsets)
     r = sr.plates(members[0], [*members[1:], other], out=tmp_path / "out", layer_thickness=THICKNESS,
                   profile={"printer": "method"}, verify=True, strict=True, workers=0)
@@ -250,10 +289,7 @@ def test_a_failing_plate_gives_up_the_kept_members_and_the_others_are_made(pymes
     assert not (tmp_path / "out" / Path(bad["output"]).name).exists()
     made = [p for p in r["plates"] if "error" not in p]
     assert all(p["min_similarity"] == 1.0 and p["max_grey_difference"] == 0 for p in made), made
-    # Plates after the failed one loaded their own members; none is loaded twice before it.
-    after = [m["name"] for p in r["plates"][r["plates"].index(bad) + 1:] for m in p["members"]]
-    assert sorted(Path(x).name for x in loads[1 + len(members):]) == sorted(after)
-    assert len(sr._failed_meshsets) == failed_before + 1 and sr._arranged is None
+    assert len(sr._failed_meshsets) == failed_before + 1
 
 
 def test_meshlabserver_arranges_then_makes_each_plate_alone(meshlabserver, make_family, tmp_path):

@@ -2,12 +2,14 @@
 // The filters' test host: FakeHost, a document of meshes as MeshLab would hold them, without
 // MeshLab; and what the filter tests ask of a spec and a result.
 #include <cstdint>
+#include <filesystem>
 #include <map>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "filter_api.h"
+#include "slicereuse/formats/mesh_file.h"
 #include "slicereuse/util/error.h"
 
 namespace slicereuse::plugin {
@@ -37,6 +39,12 @@ class FakeHost : public Host {
     std::vector<NamedMesh> out;
     for (size_t i = 0; i < meshes.size(); ++i)
       if (meshes[i].faces() > 0 && !(visible_only && hidden.count(i))) out.push_back({"mesh" + std::to_string(i), meshes[i]});
+    return out;
+  }
+  // Read as the 2025 host reads them (double coordinates), named by file name.
+  std::vector<NamedMesh> read_mesh_files(const std::vector<std::string>& paths) override {
+    std::vector<NamedMesh> out;
+    for (const std::string& p : paths) out.push_back({std::filesystem::path(p).filename().string(), read_mesh_file(p)});
     return out;
   }
   Slices current_contour_layer() override { throw Error("the layer is not a contour layer"); }

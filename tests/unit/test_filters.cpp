@@ -16,6 +16,7 @@
 #include "fake_host.h"
 #include "filter_api.h"
 #include "mask_stack.h"
+#include "mesh_file_writers.h"
 #include "shapes.h"
 #include "shuffle_mesh.h"
 #include "slicereuse/formats/slice_files.h"
@@ -167,7 +168,7 @@ TEST_F(FiltersThroughAFakeHost, EveryFilterRunsAndReturnsEveryFigureItLogs) {
   const Slices direct = slice_layers(host.meshes[0], options);
   EXPECT_EQ(keys_of(slice), (std::set<std::string>{"layers", "contours", "points", "open_contours", "duplicate_faces",
                                                    "zero_area_faces", "repeated_vertex_faces", "boundary_edges",
-                                                   "non_manifold_edges", "z_start", "mesh_z_min", "mesh_z_max",
+                                                   "non_manifold_edges", "z_start", "mesh_z_min", "mesh_z_max", "read_seconds",
                                                    "slicing_seconds", "seconds"}));
   EXPECT_EQ(count(slice, "layers"), int64_t(direct.layers()));
   EXPECT_EQ(count(slice, "points"), int64_t(direct.points()));
@@ -207,7 +208,7 @@ TEST_F(FiltersThroughAFakeHost, EveryFilterRunsAndReturnsEveryFigureItLogs) {
   std::set<std::string> job_keys = display;
   job_keys.insert({"layers", "points", "transferred_layers", "resliced_layers", "encoding_cached", "layer_ranges",
                    "reused", "direct_reason", "output_path", "support_points", "kept", "moved", "added", "dropped",
-                   "slicing_seconds", "support_seconds", "masks_seconds", "seconds"});
+                   "read_seconds", "slicing_seconds", "support_seconds", "masks_seconds", "seconds"});
   EXPECT_EQ(keys_of(job), job_keys);
   for (const char* none : {"support_points", "kept", "moved", "added", "dropped"}) EXPECT_EQ(count(job, none), 0);
   EXPECT_EQ(count(job, "transferred_layers"), int64_t(direct.layers()));
@@ -276,8 +277,9 @@ TEST_F(FiltersThroughAFakeHost, MakePlateJobPutsTheShownMeshesOnPlatesAndReadsIt
       host);
   EXPECT_EQ(keys_of(plate), (std::set<std::string>{"plates", "members", "layers", "points", "transferred_layers",
                                                    "resliced_layers", "direct_members", "encoding_cached",
-                                                   "arrange_seconds", "slicing_seconds", "support_seconds", "seconds",
-                                                   "area_used_1", "output_1", "layout_1"}));
+                                                   "arrange_seconds", "read_seconds", "slicing_seconds",
+                                                   "support_seconds", "seconds", "area_used_1", "output_1",
+                                                   "layout_1"}));
   EXPECT_EQ(std::get<std::string>(plate.at("output_1")), path("plate_1.sl1"));
   EXPECT_EQ(std::get<std::string>(plate.at("layout_1")), path("plate_1_layout.png"));
   EXPECT_EQ(count(plate, "direct_members"), 0);
@@ -313,7 +315,8 @@ TEST_F(FiltersThroughAFakeHost, MakePlateJobPutsTheShownMeshesOnPlatesAndReadsIt
   const Result arranged = arrange_spec.run(
       defaults(arrange_spec, {{"placements_output", path("arranged.json")}, {"output_path", path("arranged.sl1")}}),
       host);
-  EXPECT_EQ(keys_of(arranged), (std::set<std::string>{"plates", "members", "arrange_seconds", "seconds", "area_used_1"}));
+  EXPECT_EQ(keys_of(arranged), (std::set<std::string>{"plates", "members", "z_min", "arrange_seconds", "read_seconds",
+                                                      "seconds", "area_used_1"}));
   EXPECT_EQ(count(arranged, "members"), 2);
   EXPECT_EQ(std::get<double>(arranged.at("area_used_1")), std::get<double>(plate.at("area_used_1")));
   EXPECT_EQ(test::slurp(path("arranged_1_layout.png")), test::slurp(path("plate_1_layout.png")));
@@ -366,6 +369,68 @@ TEST_F(FiltersThroughAFakeHost, MakePlateJobPutsTheShownMeshesOnPlatesAndReadsIt
   EXPECT_NE(test::error_of([&] { plate_spec.run(defaults(plate_spec, {{"output_path", path("none.sl1")}}), host); })
                 .find("no shown mesh with faces"),
             std::string::npos);
+}
+
+// The jobs' member files (a batch's way): the source sliced from its file with no mesh loaded at
+// all, then a member's plate and print job read from its file give the masks the same member
+// gives loaded as a layer, named by its file name; a missing file is refused naming it.
+TEST_F(FiltersThroughAFakeHost, JobsReadMemberFilesAsTheLoadedMeshes) {
+  FakeHost host;
+  const Mesh source = make_sphere(1, 24, 32);
+  Mesh member = source;
+  for (size_t i = 0; i < member.V.size(); i += 3) member.V[i] = 1.1 * member.V[i] + 0.05 * member.V[i + 2];
+  // OBJ holds every double exactly (the shortest text), so the files are the meshes bit for bit.
+  test::write_mesh_file(path("source.obj"), source, test::MeshFileKind::Obj);
+  test::write_mesh_file(path("member.obj"), member, test::MeshFileKind::Obj);
+  const FilterSpec& slice_spec = spec_named("slice_mesh_with_encoding");
+  const Result sliced = slice_spec.run(
+      defaults(slice_spec, {{"mesh_file", path("source.obj")}, {"encoding_file", path("s.srb")}}), host);
+  EXPECT_GT(std::get<double>(sliced.at("read_seconds")), 0);
+
+  host.meshes = {member};
+  const FilterSpec& plate_spec = spec_named("make_plate_job");
+  const FilterSpec& compare_spec = spec_named("compare_mask_stacks");
+  const auto same_masks = [&](const std::string& a, const std::string& b) {
+    const Result c = compare_spec.run(defaults(compare_spec, {{"stack_a", a}, {"stack_b", b}}), host);
+    EXPECT_EQ(std::get<double>(c.at("min_similarity")), 1.0) << a;
+    EXPECT_EQ(count(c, "max_grey_difference"), 0) << a;
+  };
+  const Result layers = plate_spec.run(
+      defaults(plate_spec, {{"encoding_file", path("s.srb")}, {"output_path", path("layers.sl1")}}), host);
+  const Result read = plate_spec.run(defaults(plate_spec, {{"encoding_file", path("s.srb")},
+                                                           {"member_files", " ; " + path("member.obj") + " ;"},
+                                                           {"output_path", path("read.sl1")},
+                                                           {"placements_output", path("read.json")}}),
+                                     host);
+  EXPECT_EQ(std::get<double>(layers.at("read_seconds")), 0);
+  EXPECT_GT(std::get<double>(read.at("read_seconds")), 0);
+  EXPECT_EQ(count(read, "members"), 1);
+  EXPECT_EQ(count(read, "transferred_layers"), count(layers, "transferred_layers"));
+  EXPECT_EQ(count(read, "resliced_layers"), 0);
+  same_masks(path("layers_1.sl1"), path("read_1.sl1"));
+  EXPECT_NE(test::slurp(path("read.json")).find("\"name\": \"member.obj\""), std::string::npos);
+
+  const FilterSpec& job_spec = spec_named("make_print_job");
+  const Result current =
+      job_spec.run(defaults(job_spec, {{"encoding_file", path("s.srb")}, {"output_path", path("current.sl1")}}), host);
+  host.meshes.clear();
+  const Result file = job_spec.run(defaults(job_spec, {{"mesh_file", path("member.obj")},
+                                                       {"encoding_file", path("s.srb")},
+                                                       {"output_path", path("file.sl1")}}),
+                                   host);
+  EXPECT_EQ(count(current, "reused"), 1);
+  EXPECT_EQ(count(file, "reused"), 1);
+  same_masks(path("current.sl1"), path("file.sl1"));
+
+  EXPECT_EQ(test::error_of([&] { job_spec.run(defaults(job_spec, {{"output_path", path("none.sl1")}}), host); }),
+            "there is no current mesh: open a mesh first");
+  const std::string missing = test::error_of([&] {
+    plate_spec.run(defaults(plate_spec, {{"member_files", path("member.obj") + ";" + path("gone.stl")},
+                                         {"output_path", path("gone.sl1")}}),
+                   host);
+  });
+  EXPECT_NE(missing.find(path("gone.stl")), std::string::npos) << missing;
+  EXPECT_FALSE(std::filesystem::exists(path("gone_1.sl1")));
 }
 
 // A custom printer chooses the print file's version (file_version): .ctb 3 or 4; Chitu's

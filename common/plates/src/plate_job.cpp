@@ -75,18 +75,23 @@ struct PlateMember {
 // sample fail the whole certificate), those the whole certificate refuses too, found now, so that
 // all are sliced in one pass (slicing one plane costs about as much as slicing them all: the
 // faces are sorted first). When that is more than half of them, every layer is sliced, as
-// transfer_contours does (transfer_layers.h): transferring the rest would cost more.
+// transfer_contours does (transfer_layers.h): transferring the rest would cost more. That is
+// known as soon as more than half fail: a member changed in z everywhere fails the counts on most
+// layers, and then no layer's whole certificate is checked.
 DirectLayers layers_to_slice(const PlateMember& p) {
   DirectLayers d;
   d.at.assign(p.layers(), kNotDirect);
   if (p.transfer) {
     const ExactTransfer& t = *p.transfer;
-    bool changed = false;
-    for (size_t k = 0; k < t.layers(); ++k) changed |= !t.transferable(k);
-    for (size_t k = 0; k < t.layers(); ++k)
-      if (!t.transferable(k) || (changed && !t.certified(k))) d.add(k, t.plane(k));
-    if (2 * d.planes.size() <= t.layers()) return d;
+    size_t refused = 0;
+    for (size_t k = 0; k < t.layers(); ++k) refused += !t.transferable(k);
+    for (size_t k = 0; refused > 0 && 2 * d.planes.size() <= t.layers() && 2 * refused <= t.layers() &&
+                       k < t.layers();
+         ++k)
+      if (!t.transferable(k) || !t.certified(k)) d.add(k, t.plane(k));
+    if (2 * d.planes.size() <= t.layers() && 2 * refused <= t.layers()) return d;
     d.planes.clear();
+    d.at.assign(p.layers(), kNotDirect);
   }
   for (size_t k = 0; k < p.layers(); ++k) d.add(k, p.transfer ? p.transfer->plane(k) : p.planes[k]);
   return d;
