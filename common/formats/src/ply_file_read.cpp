@@ -120,7 +120,7 @@ Header parse_header(const MeshBytes& in) {
       Element el;
       el.name = std::string(word(q, end));
       const std::string_view n = word(q, end);
-      int64_t count;
+      int64_t count = 0;
       if (el.name.empty() || !parse_integer(n.data(), n.data() + n.size(), count) || count < 0)
         fail("expected 'element <name> <count>'");
       el.count = uint64_t(count);
