@@ -445,8 +445,8 @@ class AsciiBody {
   void check_room(const Element& el) const {
     const uint64_t left = uint64_t(in_.e - p_), values = el.props.size();
     if (values != 0 && el.count > (left / 2 + 1) / values)
-      in_.fail("the " + el.name + " element's " + std::to_string(el.count) + " items of " + std::to_string(values) +
-               " values cannot fit in the " + std::to_string(left) + " bytes left after line " +
+      in_.fail("the " + el.name + " element's " + std::to_string(el.count) + " items (" + std::to_string(values) +
+               " values each) cannot fit in the " + std::to_string(left) + " bytes left after line " +
                std::to_string(in_.line_of(p_)) + " (truncated)");
   }
 
