@@ -171,6 +171,16 @@ TEST_F(MeshFileTest, RefusesTruncatedBinaryStl) {
   EXPECT_ERROR(read_mesh_file(write("shorter.stl", stl)), "more than 5% off the 5084 bytes");
 }
 
+TEST_F(MeshFileTest, BinaryStlWithinFivePercentOfItsCountReadsTheCountedFacets) {
+  // 100 facets, of which the count says 98: a byte above 127 (in 1.0f) makes it binary, as in vcg.
+  std::vector<std::vector<float>> facets;
+  for (int f = 0; f < 100; ++f) facets.push_back({float(f), 0, 0, float(f), 1, 0, float(f), 0, 1});
+  const Mesh m = read_mesh_file(write("long.stl", binary_stl(facets, 98)));
+  EXPECT_EQ(m.faces(), 98u);
+  EXPECT_EQ(m.vertices(), 3u * 98);
+  EXPECT_EQ(m.V[3 * (3 * 97)], 97.0);
+}
+
 TEST_F(MeshFileTest, RefusesTruncatedBinaryPly) {
   std::string ply =
       "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
@@ -188,7 +198,7 @@ TEST_F(MeshFileTest, RefusesCountsLargerThanTheFile) {
   const std::string ascii =
       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
       "element face 900000000000\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
-  EXPECT_ERROR(read_mesh_file(write("lie_ascii.ply", ascii)), "900000000000 items of 1 values cannot fit");
+  EXPECT_ERROR(read_mesh_file(write("lie_ascii.ply", ascii)), "900000000000 items (1 values each) cannot fit");
 }
 
 TEST_F(MeshFileTest, RefusesFaceIndicesOutOfRange) {

@@ -120,7 +120,7 @@ Header parse_header(const MeshBytes& in) {
       Element el;
       el.name = std::string(word(q, end));
       const std::string_view n = word(q, end);
-      int64_t count;
+      int64_t count = 0;
       if (el.name.empty() || !parse_integer(n.data(), n.data() + n.size(), count) || count < 0)
         fail("expected 'element <name> <count>'");
       el.count = uint64_t(count);
@@ -284,17 +284,20 @@ class BinaryBody {
                " are left after byte " + std::to_string(p_ - in_.b) + " (truncated)");
   }
 
-  // Moves past one property of the item at p_, checking each step against the end.
+  // Moves past one property of the item at p_, checking each step against the end; returns
+  // where the property starts.
   const char* step(const Property& prop, uint64_t item, const Element& el) {
+    const char* at = p_;
     const size_t cs = type_size(prop.list ? prop.count_type : prop.type);
     need(cs, item, el);
-    if (!prop.list) return p_ += cs, p_ - cs;
-    const int64_t n = binary_integer(p_, prop.count_type, big_);
-    const char* at = p_;
     p_ += cs;
+    if (!prop.list) return at;
+    const int64_t n = binary_integer(at, prop.count_type, big_);
     if (n < 0) in_.fail(where(at) + el.name + " " + std::to_string(item) + " has a list of " + std::to_string(n) + " items");
-    if (uint64_t(n) > uint64_t(in_.e - p_) / type_size(prop.type)) need(uint64_t(in_.e - p_) + 1, item, el);
-    p_ += size_t(n) * type_size(prop.type);
+    // n items fit when n <= left / size: this test cannot overflow, unlike n * size.
+    const size_t is = type_size(prop.type);
+    if (uint64_t(n) > uint64_t(in_.e - p_) / is) need(uint64_t(in_.e - p_) + 1, item, el);
+    p_ += size_t(n) * is;
     return at;
   }
   void need(uint64_t bytes, uint64_t item, const Element& el) const {
@@ -445,8 +448,8 @@ class AsciiBody {
   void check_room(const Element& el) const {
     const uint64_t left = uint64_t(in_.e - p_), values = el.props.size();
     if (values != 0 && el.count > (left / 2 + 1) / values)
-      in_.fail("the " + el.name + " element's " + std::to_string(el.count) + " items of " + std::to_string(values) +
-               " values cannot fit in the " + std::to_string(left) + " bytes left after line " +
+      in_.fail("the " + el.name + " element's " + std::to_string(el.count) + " items (" + std::to_string(values) +
+               " values each) cannot fit in the " + std::to_string(left) + " bytes left after line " +
                std::to_string(in_.line_of(p_)) + " (truncated)");
   }
 

@@ -120,14 +120,12 @@ Mesh read_ascii(const MeshBytes& in) {
   // A facet takes about 250 bytes of text and a closed mesh has half as many vertices as facets.
   StlBuilder s{in, CornerUnifier(in.size() / 500 + 3), {}};
   auto expect = [&](std::string_view word) {
-    const char* at = p;
     const std::string_view t = next_token(p, in.e);
     if (t != word)
-      in.fail_at_line(at, "expected '" + std::string(word) + "', found " +
+      in.fail_at_line(t.data(), "expected '" + std::string(word) + "', found " +
                               (t.empty() ? std::string("the end of the file") : quote_token(t.data(), in.e)));
   };
   for (;;) {
-    const char* at = p;
     const std::string_view t = next_token(p, in.e);
     if (t.empty()) break;
     if (t == "endsolid" || t == "solid") {  // a solid's name runs to the end of its line
@@ -138,7 +136,7 @@ Mesh read_ascii(const MeshBytes& in) {
     if (t != "facet") in.fail_at_line(t.data(), "expected 'facet', 'endsolid' or 'solid', found " + quote_token(t.data(), in.e));
     expect("normal");
     for (int k = 0; k < 3; ++k)
-      if (next_token(p, in.e).empty()) in.fail_at_line(at, "the facet's normal is cut short by the end of the file");
+      if (next_token(p, in.e).empty()) in.fail_at_line(t.data(), "the facet's normal is cut short by the end of the file");
     expect("outer");
     expect("loop");
     for (int k = 0; k < 3; ++k) {
@@ -163,7 +161,7 @@ Mesh read_ascii(const MeshBytes& in) {
 
 Mesh read_stl_mesh(const MeshBytes& in) {
   if (in.size() < kHeaderBytes)
-    in.fail("the file has " + std::to_string(in.size()) + " bytes, fewer than the 84 any STL file has");
+    in.fail("the file has " + std::to_string(in.size()) + " bytes: MeshLab takes no STL file shorter than 84");
   uint32_t facets;
   std::memcpy(&facets, in.b + 80, 4);
   const uint64_t expected = kHeaderBytes + kFacetBytes * uint64_t(facets);
