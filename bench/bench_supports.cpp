@@ -11,6 +11,7 @@
 
 #include "bench_args.h"
 #include "family.h"
+#include "slicereuse/formats/mesh_file.h"
 #include "slicereuse/supports/generate_support_points.h"
 #include "slicereuse/supports/support_tree.h"
 #include "slicereuse/supports/transfer_support_points.h"
@@ -65,7 +66,7 @@ int main(int argc, char** argv) {
     if (family_dir.empty()) return test::make_family_member(base, args.family, i);
     char name[32];
     std::snprintf(name, sizeof name, "/member_%03d.ply", i);
-    return test::read_ply(family_dir + name);
+    return read_mesh_file(family_dir + name);
   };
   SlicedBase sliced;
   if (family_dir.empty()) {

@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "shapes.h"
+#include "slicereuse/formats/mesh_file.h"
 #include "slicereuse/formats/slice_files.h"
 #include "slicereuse/mesh/fingerprint.h"
 #include "slicereuse/util/error.h"
@@ -233,7 +234,7 @@ int main(int argc, char** argv) {
       const bool as_float = !args.empty() && args[0] == "--float";
       if (as_float) args.erase(args.begin());
       if (args.size() != 3) return usage();
-      Mesh mesh = test::read_ply(args[0]);
+      Mesh mesh = read_mesh_file(args[0]);
       if (as_float)
         for (double& v : mesh.V) v = double(float(v));
       return check_slice(std::move(mesh), args[1], args[2]);

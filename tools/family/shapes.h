@@ -42,11 +42,8 @@ struct EdgeCensus {
 EdgeCensus edge_census(const Mesh& mesh);
 
 // Binary little-endian PLY with vertex (double x,y,z) and face (uchar count, uint vertex_indices),
-// written through AtomicFile. read_ply also takes ascii and binary little-endian files with float
-// or double coordinates, extra properties and elements, and "vertex_indices"/"vertex_index" lists
-// with any integer count/index types; it throws Error naming the file and the problem for
-// anything else (big-endian, non-triangle faces, indices out of range, truncation).
+// written through AtomicFile; read_mesh_file (slicereuse/formats/mesh_file.h) reads it back bit
+// for bit.
 void write_ply(const std::string& path, const Mesh& mesh);
-Mesh read_ply(const std::string& path);
 
 }  // namespace slicereuse::test
