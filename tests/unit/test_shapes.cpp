@@ -9,7 +9,6 @@
 
 #include "shapes.h"
 #include "slicereuse/formats/mesh_file.h"
-#include "slicereuse/util/error.h"
 
 using namespace slicereuse;
 using namespace slicereuse::test;
