@@ -44,6 +44,10 @@ def load(plugin=None):
         if not path.is_file():
             raise RuntimeError(f"slicereuse {what} not found: {path}; build both plugins with "
                                f"{ROOT / 'scripts' / 'build'} (into {ROOT / 'build' / '2025' / 'plugins'})")
+    # pymeshlab brings numpy, whose OpenBLAS threads the filters never use but which spin for a
+    # while after numpy's import, against the plugin's OpenMP threads (3 % of a plate job's CPU):
+    # one BLAS thread, unless the caller chose otherwise before numpy was imported.
+    os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
     import pymeshlab
     pymeshlab.load_plugin(str(plugin))
     pymeshlab.load_plugin(str(io_plugin))
