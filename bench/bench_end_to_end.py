@@ -14,7 +14,8 @@ Jobs:
   ours are (--merge --dont-arrange: its own arrangement fits at most 3 arches on the plate), one
   run per plate, the runs' seconds summed;
 - many: --many-members members of the same two families on plates, the same way;
-- supported: --supported-members ear members tilted 60 degrees, one supported .sl1s each,
+- supported: --supported-members ear members of 200k faces tilted 60 degrees (bench_supports.py's),
+  one supported .sl1s each,
   `family.py --supports` (seconds per member: the whole process over the members); PrusaSlicer
   with supports and pad on one member per run (median over the members);
 - load: a member's read by the job (make_print_job's read_seconds) against pymeshlab's
@@ -41,6 +42,7 @@ ROOT = Path(__file__).resolve().parent.parent
 PRINTER, PRESET = "Original Prusa SL1S SPEED", "prusa_sl1s_speed"
 ARCH = dict(shape="arch", faces=208000, height=14.484)
 EAR = dict(shape="ear", faces=100000, height=8.8)
+TILTED_EAR = dict(EAR, faces=200000)  # bench_supports.py's hearing-aid shell
 
 
 def wall(cmd):
@@ -186,7 +188,7 @@ def main():
         ours, ps, plates = plate_job(a, "many", source, mixed(many))
         rows.append((f"{many} members on {plates} plates", ours, ps, 50))
 
-    supported = family_stls(a.out, "tilted", EAR, a.supported_members, 1, ("--tilt", "60"))
+    supported = family_stls(a.out, "tilted", TILTED_EAR, a.supported_members, 1, ("--tilt", "60"))
     ours, _ = median_wall(a.runs, family_cmd(a.out / "supported", supported, a.thickness, "--supports"))
     ps = statistics.median(median_wall(a.runs, ["prusa-slicer", "--export-sla", "--load", str(a.out / "supported.ini"),
                                                 "-o", str(a.out / "ps_supported.sl1s"), m])[0]
