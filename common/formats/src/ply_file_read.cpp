@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "mesh_file_read.h"
@@ -230,31 +231,25 @@ T bits_as(const char* p, bool big) {
   return v;
 }
 
-double binary_real(const char* p, PlyType t, bool big) {
+// A binary value of type t as R: a double (any type), or an int64_t (the integer types; 0 for
+// the float ones, which parse_header and find_roles never let a list count or index be).
+template <class R>
+R binary_value(const char* p, PlyType t, bool big) {
   switch (t) {
-    case PlyType::Int8: return bits_as<int8_t>(p, big);
-    case PlyType::Uint8: return bits_as<uint8_t>(p, big);
-    case PlyType::Int16: return bits_as<int16_t>(p, big);
-    case PlyType::Uint16: return bits_as<uint16_t>(p, big);
-    case PlyType::Int32: return bits_as<int32_t>(p, big);
-    case PlyType::Uint32: return bits_as<uint32_t>(p, big);
-    case PlyType::Float32: return bits_as<float>(p, big);
-    case PlyType::Float64: return bits_as<double>(p, big);
+    case PlyType::Int8: return R(bits_as<int8_t>(p, big));
+    case PlyType::Uint8: return R(bits_as<uint8_t>(p, big));
+    case PlyType::Int16: return R(bits_as<int16_t>(p, big));
+    case PlyType::Uint16: return R(bits_as<uint16_t>(p, big));
+    case PlyType::Int32: return R(bits_as<int32_t>(p, big));
+    case PlyType::Uint32: return R(bits_as<uint32_t>(p, big));
+    case PlyType::Float32: return std::is_floating_point_v<R> ? R(bits_as<float>(p, big)) : R(0);
+    case PlyType::Float64: return std::is_floating_point_v<R> ? R(bits_as<double>(p, big)) : R(0);
   }
   return 0;
 }
 
-int64_t binary_integer(const char* p, PlyType t, bool big) {
-  switch (t) {
-    case PlyType::Int8: return bits_as<int8_t>(p, big);
-    case PlyType::Uint8: return bits_as<uint8_t>(p, big);
-    case PlyType::Int16: return bits_as<int16_t>(p, big);
-    case PlyType::Uint16: return bits_as<uint16_t>(p, big);
-    case PlyType::Int32: return bits_as<int32_t>(p, big);
-    case PlyType::Uint32: return bits_as<uint32_t>(p, big);
-    default: return 0;  // lists' counts and indices are integer types (parse_header, find_roles)
-  }
-}
+double binary_real(const char* p, PlyType t, bool big) { return binary_value<double>(p, t, big); }
+int64_t binary_integer(const char* p, PlyType t, bool big) { return binary_value<int64_t>(p, t, big); }
 
 class BinaryBody {
  public:
