@@ -210,7 +210,7 @@ def test_a_member_that_cannot_be_reused_is_sliced_directly_unless_strict(make_fa
     assert plate["min_similarity"] == 1.0 and plate["max_grey_difference"] == 0, plate
     strict = sr.family(members[0], [members[1], renumbered], THICKNESS, tmp_path / "strict", strict=True)
     assert strict["failed"] == 1, strict
-    assert re.fullmatch(r"Make Print Job: the current mesh cannot be made by reuse: its faces differ from those of "
+    assert re.fullmatch(r"Make Print Job: renumbered\.ply cannot be made by reuse: its faces differ from those of "
                         r"the mesh the encoding was made from \(encoding: 3008 faces, hash [0-9a-f]{16}; target: 3008 "
                         r"faces, hash [0-9a-f]{16}\) \(strict is on; off, it would be sliced directly\)",
                         strict["targets"][1]["error"]), strict

@@ -25,7 +25,7 @@ def sliced(pymeshlab, make_family, tmp_path):
 def test_slice_result(sliced):
     ms, _, _, r, tmp, _ = sliced
     assert set(r) == {"layers", "contours", "points", "open_contours", "z_start", "mesh_z_min",
-                      "mesh_z_max", "slicing_seconds", "seconds", "duplicate_faces", "zero_area_faces",
+                      "mesh_z_max", "read_seconds", "slicing_seconds", "seconds", "duplicate_faces", "zero_area_faces",
                       "repeated_vertex_faces", "boundary_edges", "non_manifold_edges"}
     assert [r[k] for k in ("duplicate_faces", "zero_area_faces", "repeated_vertex_faces",
                            "boundary_edges", "non_manifold_edges")] == [0, 0, 0, 0, 0]
@@ -292,9 +292,9 @@ def test_interpreter_survives_errors(pymeshlab, sliced):
 
 
 def test_no_current_mesh(pymeshlab):
-    # pymeshlab refuses before the filter runs, from the filter's declared need of a mesh.
+    # A filter that also reads a mesh file (mesh_file) says it needs a mesh in its own words.
     _raises(pymeshlab, pymeshlab.MeshSet(), "slice_mesh_with_encoding",
-            "slice_mesh_with_encoding requires at least one mesh loaded in the MeshSet",
+            "Slice Mesh with Encoding: there is no current mesh: open a mesh first",
             layer_thickness=THICKNESS)
 
 
