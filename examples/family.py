@@ -7,8 +7,9 @@
                                       [--resume] [--strict] [--supports]
                                       MESH0 MESH1 ...
 
-Default: slices MESH0 once with encoding, then for each member MESH1 ...: loads it, transfers
-the slicing (exact: the result equals slicing it) and writes DIR/<member file stem> with the
+Default: slices MESH0 once with encoding, then for each member MESH1 ...: reads it (STL, PLY or
+OBJ, straight into the job: no MeshLab layer), transfers the slicing (exact: the result equals
+slicing it) and writes DIR/<member file stem> with the
 printer's own print file (its preset's extension in common/printer/presets.json: .sl1, .sl1s,
 .goo, .ctb, .pwmx, ..., or a folder of PNG images for the method's display and custom printers;
 --format chooses another), all in memory, with no contour file unless --keep-contours.
@@ -25,7 +26,7 @@ gains "support_points", "kept", "moved", "added", "dropped", and "support_second
 Prints one JSON object: {"source": MESH0, "seconds": total, "source_seconds", "engine",
 "failed", "targets": [{"mesh", "layers", "points", "resliced_layers", "seconds", "output",
 "method", "worker"[, "min_similarity", "max_grey_difference"][, "resumed"]}
-or {"mesh", "worker", "error"}, ...]}; a member's seconds cover loading it, transferring or
+or {"mesh", "worker", "error"}, ...]}; a member's seconds cover reading it, transferring or
 slicing it and writing its print file, "method" is "reuse" or "direct", "worker" says which
 worker process made it. A progress bar goes to a terminal's
 stderr.

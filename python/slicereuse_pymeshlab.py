@@ -273,7 +273,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     "resliced_layers", "seconds", "output", "method", "worker"[, "min_similarity",
     "max_grey_difference"][, "resumed"]} or {"mesh", "worker", "error"}, ...]} in the order of targets;
     "method" "reuse" or "direct" (the filter's "reused"); a target's
-    seconds cover loading it, transferring or slicing it and writing its print file; "worker"
+    seconds cover reading it, transferring or slicing it and writing its print file; "worker"
     made it ("in-process", or the Dask worker's name); "resumed": made by an earlier run;
     "source_seconds": of "seconds", slicing the source (0 when kept or direct).
     details=True adds the filter's own "read_seconds" (reading the member's file),
