@@ -292,6 +292,27 @@ def test_a_failing_plate_is_reported_and_the_others_are_made(pymeshlab, make_fam
     assert len(sr._failed_meshsets) == failed_before + 1
 
 
+def test_meshlabserver_reads_member_files_as_it_loads_them(meshlabserver, make_family, tmp_path, monkeypatch):
+    """The float host: Make Plate Job reading member_files (the plugin's reader, each coordinate
+    rounded to a float as meshlabserver's loader stores it) makes the plates it makes from the
+    same members loaded with -i, byte for byte (the members' PLY files hold doubles)."""
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "1764000000")
+    members = make_family("arch", 5)
+    _run(meshlabserver, tmp_path, [members[0]],
+         [("slice.mlx", {"layer_thickness": THICKNESS, "contour_file": "", "encoding_file": tmp_path / "s.srb"})])
+    common = {"encoding_file": tmp_path / "s.srb", "placements_output": "", "printer": 0}
+    for way in ("layers", "files"):
+        (tmp_path / way).mkdir()
+    (_, loaded), = _run(meshlabserver, tmp_path, members[1:],
+                        [("plate_job.mlx", {**common, "output_path": tmp_path / "layers" / "plate.sl1"})])
+    (_, read), = _run(meshlabserver, tmp_path, [],
+                      [("plate_job.mlx", {**common, "member_files": ";".join(map(str, members[1:])),
+                                          "output_path": tmp_path / "files" / "plate.sl1"})])
+    assert loaded["plates"] == read["plates"] >= 1 and read["members"] == 4 and read["direct_members"] == 0
+    for k in range(1, read["plates"] + 1):
+        assert (tmp_path / "layers" / f"plate_{k}.sl1").read_bytes() == (tmp_path / "files" / f"plate_{k}.sl1").read_bytes()
+
+
 def test_meshlabserver_arranges_then_makes_each_plate_alone(meshlabserver, make_family, tmp_path):
     """The float host: Arrange on Plates writes the placements and layouts without slicing; Make
     Plate Job from them makes every plate at once, and each plate again alone (plate k, only its
