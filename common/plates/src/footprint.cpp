@@ -99,21 +99,34 @@ Footprint mesh_footprint(const Mesh& mesh, const std::vector<double>& plan_point
   const double per_mm = 1 / cell_mm;
   auto column = [&](double x) { return std::clamp(int((x - f.x0) * per_mm), 0, f.width - 1); };
   auto row = [&](double y) { return std::clamp(int((y - f.y0) * per_mm), 0, f.height - 1); };
+  // Each vertex's cells with the slack either side, once: a triangle's box in cells is then the
+  // least and greatest of its corners' (column and row are monotone), with no arithmetic per
+  // corner, and a vertex is a corner of about six triangles.
+  struct CellBox {
+    int i0, i1, j0, j1;
+  };
+  std::vector<CellBox> box(mesh.vertices());
+  for (size_t v = 0; v < box.size(); ++v) {
+    const double x = t.xy[2 * v], y = t.xy[2 * v + 1];
+    box[v] = {column(x - slack), column(x + slack), row(y - slack), row(y + slack)};
+  }
   for (size_t tri = 0; tri < mesh.faces(); ++tri) {
-    double px[3], py[3];
-    for (int c = 0; c < 3; ++c) {
-      px[c] = t.xy[2 * mesh.F[3 * tri + c]];
-      py[c] = t.xy[2 * mesh.F[3 * tri + c] + 1];
-    }
-    const double lo_y = std::min({py[0], py[1], py[2]}) - slack, hi_y = std::max({py[0], py[1], py[2]}) + slack;
-    const int j0 = row(lo_y), j1 = row(hi_y);
-    const int i0 = column(std::min({px[0], px[1], px[2]}) - slack), i1 = column(std::max({px[0], px[1], px[2]}) + slack);
+    const CellBox& a = box[mesh.F[3 * tri]];
+    const CellBox& b = box[mesh.F[3 * tri + 1]];
+    const CellBox& c = box[mesh.F[3 * tri + 2]];
+    const int i0 = std::min({a.i0, b.i0, c.i0}), i1 = std::max({a.i1, b.i1, c.i1});
+    const int j0 = std::min({a.j0, b.j0, c.j0}), j1 = std::max({a.j1, b.j1, c.j1});
     if (j1 - j0 <= 1 && i1 - i0 <= 1) {
       // Within 2 x 2 cells (most triangles of a fine mesh): the cells of its bounding box, at
       // most one cell more than it touches, instead of clipping it to each row.
       for (int j = j0; j <= j1; ++j)
         for (int i = i0; i <= i1; ++i) f.cells[size_t(j) * f.width + i] = 1;
       continue;
+    }
+    double px[3], py[3];
+    for (int k = 0; k < 3; ++k) {
+      px[k] = t.xy[2 * mesh.F[3 * tri + k]];
+      py[k] = t.xy[2 * mesh.F[3 * tri + k] + 1];
     }
     for (int j = j0; j <= j1; ++j) {
       // The triangle's x extent within the row's band: its corners inside the band and its
