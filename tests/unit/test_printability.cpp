@@ -7,8 +7,13 @@
 #include <string>
 #include <vector>
 
+#include "fake_host.h"
+#include "mask_layers.h"
 #include "slicereuse/printability/check_layers.h"
+#include "slicereuse/printfiles/check_print_file.h"
+#include "slicereuse/printfiles/export_masks.h"
 #include "slicereuse/util/error.h"
+#include "temp_folder.h"
 
 namespace slicereuse {
 namespace {
@@ -254,6 +259,77 @@ TEST(Printability, CsvHasOneRowPerFinding) {
             "size_z_mm,area_mm2,volume_mm3\n"
             "resin_trap,5,14,20,20,40,40,1.5,1.5,0.5,1,1,0.5,0,0.5\n");
   std::remove(path.c_str());
+}
+
+// A .goo file from contours (small_display: 200 x 200 pixels of 0.1 mm, 20 x 20 mm around the
+// origin; layers of 0.1 mm): a box [-5, 5]^2 whose cavity [-2, 2]^2 of layers 5-14 is sealed,
+// and a block [6, 8]^2 floating from layer 10.
+class PrintabilityFile : public test::TempFolderTest {
+ protected:
+  std::string make_print_file() {
+    std::vector<test::Layer> layers(20);
+    for (size_t k = 0; k < 20; ++k) {
+      layers[k].push_back(test::rect(-5, -5, 5, 5));
+      if (k >= 5 && k < 15) layers[k].push_back(test::rect(-2, -2, 2, 2, true));
+      if (k >= 10) layers[k].push_back(test::rect(6, 6, 8, 8));
+    }
+    const std::string file = path("box.goo");
+    export_masks(test::make_slices(layers, 0.1), test::small_display(), file);
+    return file;
+  }
+};
+
+TEST_F(PrintabilityFile, CheckOfAPrintFileFindsTheTrapAndTheIsland) {
+  const PrintabilityReport r = check_print_file(make_print_file(), 0.1, 0.1, 0.1, path("r.csv"));
+  EXPECT_EQ(r.layers, 20u);
+  expect_counts(r, 1, 0, 1, 0, 0);
+  const Finding island = of_kind(r, FindingKind::Island)[0];
+  EXPECT_EQ(island.first_layer, 10u);
+  expect_box(island, 160, 20, 180, 40);  // row 0 at y = 10 mm
+  const Finding trap = of_kind(r, FindingKind::ResinTrap)[0];
+  expect_box(trap, 80, 80, 120, 120);
+  EXPECT_NEAR(trap.volume_mm3, 40 * 40 * 10 * 0.01 * 0.1, 1e-9);
+  std::ifstream csv(path("r.csv"));
+  std::string line;
+  std::vector<std::string> rows;
+  while (std::getline(csv, line)) rows.push_back(line);
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[1].rfind("island,10,10,160,20,180,40,", 0), 0u) << rows[1];
+  EXPECT_EQ(rows[2].rfind("resin_trap,5,14,80,80,120,120,", 0), 0u) << rows[2];
+}
+
+TEST_F(PrintabilityFile, FilterCountsLogsAndShowsTheFindings) {
+  using namespace plugin;
+  const std::string file = make_print_file();
+  FakeHost host;
+  const FilterSpec& spec = spec_named("check_printability");
+  const PrinterProfile display = test::small_display();
+  const Result r = spec.run(defaults(spec, {{"print_file", file}, {"report_file", path("f.csv")}},
+                                     {{"layer_thickness", 0.1},
+                                      {"width_px", display.width_px},
+                                      {"height_px", display.height_px},
+                                      {"pixel_size_x_um", display.pixel_size_x_um},
+                                      {"pixel_size_y_um", display.pixel_size_y_um}}),
+                            host);
+  EXPECT_EQ(keys_of(r), (std::set<std::string>{"islands", "overhangs", "resin_traps", "suction_cups",
+                                               "touching_bounds", "layers", "trapped_mm3", "seconds"}));
+  EXPECT_EQ(count(r, "islands"), 1);
+  EXPECT_EQ(count(r, "overhangs"), 0);
+  EXPECT_EQ(count(r, "resin_traps"), 1);
+  EXPECT_EQ(count(r, "suction_cups"), 0);
+  EXPECT_EQ(count(r, "touching_bounds"), 0);
+  EXPECT_EQ(count(r, "layers"), 20);
+  EXPECT_NEAR(std::get<double>(r.at("trapped_mm3")), 16, 1e-9);
+  // One point per finding at its centre on the build plate: the island's block, the cavity.
+  const std::vector<double>& xyz = host.point_layers.at("printability findings");
+  ASSERT_EQ(xyz.size(), 6u);
+  const double expected[6] = {7, 7, 1.05, 0, 0, 1.0};
+  for (size_t i = 0; i < 6; ++i) EXPECT_NEAR(xyz[i], expected[i], 1e-9) << i;
+  size_t finding_lines = 0;
+  for (const std::string& l : host.lines) finding_lines += l.find("layers 10-10, centre (17.00, 3.00) mm") != std::string::npos ||
+                                                           l.find("resin_trap, layers 5-14") != std::string::npos;
+  EXPECT_EQ(finding_lines, 2u);
+  EXPECT_TRUE(std::filesystem::exists(path("f.csv")));
 }
 
 }  // namespace
