@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "fake_host.h"
+#include "level_runs.h"
 #include "mask_layers.h"
 #include "slicereuse/printability/check_layers.h"
 #include "slicereuse/printfiles/check_print_file.h"
@@ -79,6 +80,27 @@ std::vector<std::vector<Rect>> hollow_box(bool roof_hole, bool wall_vent) {
     if (wall_vent && k >= 8 && k < 11) layers[size_t(k)].push_back({10, 28, 20, 32, 0});
   }
   return layers;
+}
+
+// Row 0's runs as [lo, hi) pairs.
+std::vector<int> row0(const LevelRuns& r) {
+  std::vector<int> out;
+  for (uint32_t i = r.row_begin[0]; i < r.row_begin[1]; ++i) out.insert(out.end(), {r.lo[i], r.hi[i]});
+  return out;
+}
+
+TEST(LevelRuns, SetOperationsAndLabels) {
+  MaskImage a = layer(16, 2, {{0, 0, 5, 1}, {8, 0, 12, 1, 40}, {5, 1, 8, 2}});
+  const LevelRuns nonzero = nonzero_runs(a);
+  EXPECT_EQ(row0(nonzero), (std::vector<int>{0, 5, 8, 12}));
+  EXPECT_EQ(row0(runs_at_least(a, nonzero, 41)), (std::vector<int>{0, 5}));
+  EXPECT_EQ(row0(complement_runs(nonzero)), (std::vector<int>{5, 8, 12, 16}));
+  const LevelRuns b = nonzero_runs(layer(16, 2, {{3, 0, 10, 1}}));
+  EXPECT_EQ(row0(subtract_runs(nonzero, b)), (std::vector<int>{0, 3, 10, 12}));
+  EXPECT_EQ(row0(intersect_runs(nonzero, b)), (std::vector<int>{3, 5, 8, 10}));
+  // Row 1's [5, 8) touches row 0's runs only at corners: one region with diagonals, three without.
+  EXPECT_EQ(label_runs(nonzero, false).count, 3u);
+  EXPECT_EQ(label_runs(nonzero, true).count, 1u);
 }
 
 TEST(Printability, SolidBoxHasNothing) {
@@ -239,6 +261,19 @@ TEST(Printability, GreyIslandNeedsBrightSupport) {
   EXPECT_EQ(of_kind(r, FindingKind::Island)[0].first_layer, 1u);
   layers[0][0].level = 150;
   EXPECT_EQ(check(60, 60, layers).count(FindingKind::Island), 0u);
+}
+
+// 10,000 layers stream through: the regions are carried layer to layer, not kept per layer.
+TEST(Printability, TenThousandLayersStream) {
+  LayerChecker checker(kPixel, kPixel, kHeight);
+  const MaskImage floor = layer(40, 40, {{5, 5, 35, 35}});
+  const MaskImage walls = layer(40, 40, {{5, 5, 35, 35}, {10, 10, 30, 30, 0}});
+  for (size_t k = 0; k < 10000; ++k) checker.add_layer(k < 5 || k >= 9995 ? floor : walls);
+  const PrintabilityReport r = checker.finish();
+  expect_counts(r, 0, 0, 1, 0, 0);
+  EXPECT_EQ(r.findings[0].first_layer, 5u);
+  EXPECT_EQ(r.findings[0].last_layer, 9994u);
+  EXPECT_DOUBLE_EQ(r.findings[0].volume_mm3, 20.0 * 20 * 9990 * kPixel * kPixel * kHeight);
 }
 
 TEST(Printability, LayersOfAnotherSizeAreRefused) {
