@@ -244,6 +244,22 @@ TEST(Printability, LedgeOverhangsAtItsLayer) {
   EXPECT_DOUBLE_EQ(f.area_mm2, 30 * 80 * kPixel * kPixel);
 }
 
+TEST(Printability, LedgeErodesFromEverySideButTheLayersBox) {
+  // The column [10, 60) x [10, 190) sets the box; the ledge [60, 200) x [50, 150) erodes from the
+  // column (x >= 100 remain) and from above and below (rows [90, 110) remain), not from x = 200.
+  std::vector<std::vector<Rect>> layers(12);
+  for (int k = 0; k < 12; ++k) {
+    layers[size_t(k)].push_back({10, 10, 60, 190});
+    if (k >= 10) layers[size_t(k)].push_back({60, 50, 200, 150});
+  }
+  const PrintabilityReport r = check(250, 200, layers);
+  ASSERT_EQ(r.count(FindingKind::Overhang), 1u);
+  const Finding f = of_kind(r, FindingKind::Overhang)[0];
+  EXPECT_EQ(f.first_layer, 10u);
+  expect_box(f, 100, 90, 200, 110);
+  EXPECT_DOUBLE_EQ(f.area_mm2, 100 * 20 * kPixel * kPixel);
+}
+
 TEST(Printability, NarrowLedgeErodesAway) {
   std::vector<std::vector<Rect>> layers(15);
   for (int k = 0; k < 15; ++k) {

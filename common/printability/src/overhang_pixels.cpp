@@ -55,30 +55,49 @@ LevelRuns overhang_pixels(const LayerRuns& layer, const LayerRuns& below) {
     }
     brighter.row_begin.push_back(brighter.runs());
   }
+  Box crop;
+  crop.add(*layer.nonzero);
+  crop.add(*below.nonzero);
+  // Only a pixel whose row has 40 brighter pixels on either side (or the crop's border, which
+  // does not erode) can survive: most layers' brighter pixels are thin rims, and end here.
+  LevelRuns core;
+  core.width = img.width;
+  core.height = img.height;
+  core.row_begin.push_back(0);
+  for (int y = 0; y < img.height; ++y) {
+    for (uint32_t i = brighter.row_begin[size_t(y)]; i < brighter.row_begin[size_t(y) + 1]; ++i) {
+      const int lo = brighter.lo[i] == crop.x0 ? brighter.lo[i] : brighter.lo[i] + kErodeIterations;
+      const int hi = brighter.hi[i] == crop.x1 ? brighter.hi[i] : brighter.hi[i] - kErodeIterations;
+      if (lo >= hi) continue;
+      core.lo.push_back(uint16_t(lo));
+      core.hi.push_back(uint16_t(hi));
+    }
+    core.row_begin.push_back(core.runs());
+  }
   LevelRuns kept;
   kept.width = img.width;
   kept.height = img.height;
   kept.row_begin.assign(size_t(img.height) + 1, 0);
   Box found;
-  found.add(brighter);
+  found.add(core);
   if (found.empty()) return kept;
 
-  Box crop;
-  crop.add(*layer.nonzero);
-  crop.add(*below.nonzero);
-  // L1 distance to the nearest pixel of the crop that is not brighter, over the brighter
-  // pixels' box and one pixel around it (where such pixels are, unless outside the crop);
-  // two chamfer passes give it exactly in a rectangle.
-  const int x0 = std::max(found.x0 - 1, 0), y0 = std::max(found.y0 - 1, 0);
-  const int x1 = std::min(found.x1 + 1, img.width), y1 = std::min(found.y1 + 1, img.height);
+  // L1 distance to the nearest pixel of the crop that is not brighter, over the core's box and
+  // the 41 pixels around it (where every such pixel within 40 of the core lies); two chamfer
+  // passes give it exactly in a rectangle.
+  const int reach = kErodeIterations + 1;
+  const int x0 = std::max(found.x0 - reach, 0), y0 = std::max(found.y0 - reach, 0);
+  const int x1 = std::min(found.x1 + reach, img.width), y1 = std::min(found.y1 + reach, img.height);
   const int w = x1 - x0, h = y1 - y0;
   constexpr int kFar = 1 << 29;
   std::vector<int> dist(size_t(w) * size_t(h));
   for (int y = y0; y < y1; ++y) {
     int* d = dist.data() + size_t(y - y0) * size_t(w);
     for (int x = x0; x < x1; ++x) d[x - x0] = crop.contains(x, y) ? 0 : kFar;
-    for (uint32_t i = brighter.row_begin[size_t(y)]; i < brighter.row_begin[size_t(y) + 1]; ++i)
-      std::fill(d + (brighter.lo[i] - x0), d + (brighter.hi[i] - x0), kFar);
+    for (uint32_t i = brighter.row_begin[size_t(y)]; i < brighter.row_begin[size_t(y) + 1]; ++i) {
+      const int lo = std::max<int>(brighter.lo[i], x0), hi = std::min<int>(brighter.hi[i], x1);
+      if (lo < hi) std::fill(d + (lo - x0), d + (hi - x0), kFar);
+    }
   }
   for (int y = 0; y < h; ++y) {
     int* d = dist.data() + size_t(y) * size_t(w);
@@ -94,18 +113,19 @@ LevelRuns overhang_pixels(const LayerRuns& layer, const LayerRuns& below) {
       if (y < h - 1) d[x] = std::min(d[x], d[x + w] + 1);
     }
   }
+  // Distances inside the window are exact within 40 of the core only: survivors come from it.
   kept.row_begin.assign(1, 0);
   for (int y = 0; y < img.height; ++y) {
     if (y >= y0 && y < y1) {
       const int* d = dist.data() + size_t(y - y0) * size_t(w);
-      for (uint32_t i = brighter.row_begin[size_t(y)]; i < brighter.row_begin[size_t(y) + 1]; ++i) {
-        for (int x = brighter.lo[i]; x < brighter.hi[i];) {
+      for (uint32_t i = core.row_begin[size_t(y)]; i < core.row_begin[size_t(y) + 1]; ++i) {
+        for (int x = core.lo[i]; x < core.hi[i];) {
           if (d[x - x0] <= kErodeIterations) {
             ++x;
             continue;
           }
           const int lo = x;
-          while (x < brighter.hi[i] && d[x - x0] > kErodeIterations) ++x;
+          while (x < core.hi[i] && d[x - x0] > kErodeIterations) ++x;
           kept.lo.push_back(uint16_t(lo));
           kept.hi.push_back(uint16_t(x));
         }

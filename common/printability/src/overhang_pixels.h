@@ -6,8 +6,9 @@
 // boxes (UVtools crops both to it and reflects at its border, which never erodes: a pixel
 // mirrored across the border is farther than the pixel it mirrors).
 // In: both images (same size) with their runs of pixels > 0 and >= 128; out: runs (level_runs.h).
-// Time: the lit runs, plus the pixels of the bounding box of the brighter pixels (a distance
-// transform there), which is empty where a layer only shrinks or repeats the one below.
+// Time: the lit runs, plus a distance transform over the box of the pixels with 40 brighter
+// pixels on either side in their row (and 41 pixels around it): none where the layer only
+// shrinks, repeats or widens by thin rims the layer below.
 #include "level_runs.h"
 #include "slicereuse/png/mask_png.h"
 
