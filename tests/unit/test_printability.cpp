@@ -383,5 +383,36 @@ TEST_F(PrintabilityFile, FilterCountsLogsAndShowsTheFindings) {
   EXPECT_TRUE(std::filesystem::exists(path("f.csv")));
 }
 
+TEST_F(PrintabilityFile, FilterLogsTwentyFindingsAndCountsTheRest) {
+  using namespace plugin;
+  // 22 blocks of 1 x 1 mm floating from layer 1 over a plate layer elsewhere: 22 islands.
+  std::vector<test::Layer> layers(3);
+  layers[0].push_back(test::rect(-9, -9, -7, -7));
+  for (size_t k = 1; k < 3; ++k)
+    for (int i = 0; i < 22; ++i) {
+      const double x = -8 + 1.5 * (i % 11), y = 2 + 2 * (i / 11);
+      layers[k].push_back(test::rect(x, y, x + 1, y + 1));
+    }
+  export_masks(test::make_slices(layers, 0.1), test::small_display(), path("blocks.goo"));
+  FakeHost host;
+  const FilterSpec& spec = spec_named("check_printability");
+  const PrinterProfile display = test::small_display();
+  const Result r = spec.run(defaults(spec, {{"print_file", path("blocks.goo")}},
+                                     {{"width_px", display.width_px},
+                                      {"height_px", display.height_px},
+                                      {"pixel_size_x_um", display.pixel_size_x_um},
+                                      {"pixel_size_y_um", display.pixel_size_y_um}}),
+                            host);
+  EXPECT_EQ(count(r, "islands"), 22);
+  size_t finding_lines = 0, more = 0;
+  for (const std::string& l : host.lines) {
+    finding_lines += l.rfind("Check Printability: island, layers 1-1", 0) == 0;
+    more += l == "Check Printability: and 2 more";
+  }
+  EXPECT_EQ(finding_lines, 20u);
+  EXPECT_EQ(more, 1u);
+  EXPECT_EQ(host.point_layers.at("printability findings").size(), 3u * 22);
+}
+
 }  // namespace
 }  // namespace slicereuse
