@@ -114,10 +114,7 @@ struct LayerChecker::State {
       } else {
         kind = FindingKind::ResinTrap;
       }
-      PixelBox box;
-      box.add(r.x0, r.x1, r.y0);
-      box.add(r.x0, r.x1, r.y1 - 1);
-      Finding f = finding(kind, r.first_layer, r.last_layer, box);
+      Finding f = finding(kind, r.first_layer, r.last_layer, PixelBox{r.x0, r.y0, r.x1, r.y1});
       f.volume_mm3 = double(r.pixels) * pixel_x * pixel_y * height;
       findings.push_back(f);
     }
