@@ -33,6 +33,7 @@ FilterSpec arrange_plates_filter();
 FilterSpec generate_support_points_filter();
 FilterSpec transfer_support_points_filter();
 FilterSpec build_supports_filter();
+FilterSpec check_printability_filter();
 
 // The method's reference, closing every description.
 extern const char* const kReference;

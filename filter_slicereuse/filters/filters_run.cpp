@@ -13,7 +13,8 @@ const std::vector<FilterSpec>& filter_specs() {
                                                 compare_masks_filter(), print_job_filter(),
                                                 cross_parameterize_filter(), free_cached_memory_filter(), plate_job_filter(),
                                                 arrange_plates_filter(), generate_support_points_filter(),
-                                                transfer_support_points_filter(), build_supports_filter()};
+                                                transfer_support_points_filter(), build_supports_filter(),
+                                                check_printability_filter()};
   return specs;
 }
 

@@ -158,6 +158,10 @@ print_job)
   ok log_cmp.txt -s cmp.mlx
   grep -q "Compare Mask Stacks: $layers layers, min similarity 1 at layer 0, 0 differing pixels" log_cmp.txt ||
     fail "transferred vs direct print job: $(grep Compare log_cmp.txt)"
+  # Check Printability reads every layer of the print job and writes its CSV.
+  ok log_check.txt -s "$EXAMPLES/check_printability.mlx"
+  [ "$(result log_check.txt layers)" = "$layers" ] || fail "check_printability: $(grep slicereuse-result log_check.txt)"
+  head -n 1 out/printability.csv | grep -q '^kind,first_layer,last_layer,' || fail "printability.csv: $(head -n 2 out/printability.csv)"
   edit slice.mlx direct.mlx 's#out/slice\.#out/direct.#g'
   ok log_direct.txt -i "$m1" -s direct.mlx
   "$HOST_CHECK" same --prefix out/job.ctr out/direct.ctr

@@ -45,7 +45,7 @@ TEST(Filters, NamesAreUniqueAndEveryParameterIsDeclaredOnce) {
     std::set<std::string> params;
     for (const ParamSpec& p : f.params) EXPECT_TRUE(params.insert(p.name).second) << f.name << ": " << p.name;
   }
-  EXPECT_EQ(filter_specs().size(), 12u);
+  EXPECT_EQ(filter_specs().size(), 13u);
   EXPECT_EQ(find_filter_spec(-1), nullptr);
 }
 

@@ -4,20 +4,9 @@
 #include <numeric>
 #include <vector>
 
+#include "slicereuse/util/union_find.h"
+
 namespace slicereuse {
-namespace {
-
-struct UnionFind {
-  std::vector<uint32_t> parent;
-  explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  uint32_t find(uint32_t a) {
-    while (parent[a] != a) a = parent[a] = parent[parent[a]];
-    return a;
-  }
-  void join(uint32_t a, uint32_t b) { parent[find(a)] = find(b); }
-};
-
-}  // namespace
 
 MeshTopology mesh_topology(const Mesh& mesh) {
   const size_t nf = mesh.faces(), nv = mesh.vertices();

@@ -1,0 +1,67 @@
+// Cost of the printability checks (check_layers.h) per layer on a real print file, apart from
+// reading and decoding its layers (MaskStack).
+// Usage: bench_printability FILE PIXEL_X_MM PIXEL_Y_MM LAYER_MM
+// Prints the layers, the lit share of the pixels, the time to read and decode them, the
+// checker's time per layer (mean, median, largest, and its layer), the findings per kind and each
+// finding's layers and box.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+#include "mask_stack.h"
+#include "slicereuse/printability/check_layers.h"
+
+using namespace slicereuse;
+
+int main(int argc, char** argv) {
+  if (argc != 5) {
+    std::fprintf(stderr, "usage: bench_printability FILE PIXEL_X_MM PIXEL_Y_MM LAYER_MM\n");
+    return 2;
+  }
+  using Clock = std::chrono::steady_clock;
+  const auto ms_since = [](Clock::time_point t) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+  };
+  MaskStack stack(argv[1]);
+  LayerChecker checker(std::atof(argv[2]), std::atof(argv[3]), std::atof(argv[4]));
+  std::vector<uint8_t> bytes;
+  std::vector<double> check_ms;
+  double decode_ms = 0;
+  uint64_t lit = 0, pixels = 0;
+  int width = 0, height = 0;
+  for (size_t k = 0; k < stack.layers(); ++k) {
+    MaskImage image;
+    auto t = Clock::now();
+    stack.read(k, bytes);
+    stack.decode(k, bytes, image);
+    decode_ms += ms_since(t);
+    width = image.width;
+    height = image.height;
+    pixels += image.pixels.size();
+    for (const uint8_t p : image.pixels) lit += p != 0;
+    t = Clock::now();
+    checker.add_layer(std::move(image));
+    check_ms.push_back(ms_since(t));
+  }
+  auto t = Clock::now();
+  const PrintabilityReport r = checker.finish();
+  const double finish_ms = ms_since(t);
+  std::vector<double> sorted = check_ms;
+  std::sort(sorted.begin(), sorted.end());
+  double total = 0;
+  for (const double v : check_ms) total += v;
+  const size_t worst = size_t(std::max_element(check_ms.begin(), check_ms.end()) - check_ms.begin());
+  std::printf("%zu layers of %d x %d, %.2f%% of pixels lit\n", r.layers, width, height, 100.0 * double(lit) / double(pixels));
+  std::printf("read + decode: %.1f ms (%.2f ms per layer)\n", decode_ms, decode_ms / double(r.layers));
+  std::printf("check: %.1f ms, per layer mean %.2f ms, median %.2f ms, largest %.2f ms (layer %zu); finish %.2f ms\n",
+              total, total / double(r.layers), sorted[sorted.size() / 2], sorted.back(), worst, finish_ms);
+  for (size_t kind = 0; kind < kFindingKinds; ++kind)
+    std::printf("%s: %zu\n", finding_kind_name(FindingKind(kind)), r.counts[kind]);
+  std::printf("trapped: %.4g mm3\n", r.trapped_mm3());
+  for (const Finding& f : r.findings)
+    std::printf("  %s layers %zu-%zu, pixels [%d, %d) x [%d, %d)\n", finding_kind_name(f.kind), f.first_layer,
+                f.last_layer, f.x0, f.x1, f.y0, f.y1);
+  return 0;
+}

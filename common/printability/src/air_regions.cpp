@@ -1,0 +1,142 @@
+#include "air_regions.h"
+
+#include <algorithm>
+#include <unordered_map>
+
+namespace slicereuse {
+namespace {
+
+constexpr uint64_t kRequiredAreaToProcessCheck = 4;  // UVtools: ResinTrap RequiredAreaToProcessCheck
+constexpr uint64_t kRequiredBlackPixelsToDrain = 10;  // UVtools: ResinTrap RequiredBlackPixelsToDrain
+constexpr uint32_t kSolid = UINT32_MAX;
+
+}  // namespace
+
+void AirRegions::merge(uint32_t a, uint32_t b) {
+  a = sets_.find(a);
+  b = sets_.find(b);
+  if (a == b) return;
+  sets_.parent[a] = b;
+  AirRegion& to = regions_[b];
+  const AirRegion& from = regions_[a];
+  to.pixels += from.pixels;
+  to.layer_pixels += from.layer_pixels;
+  to.max_layer_pixels = std::max(to.max_layer_pixels, from.max_layer_pixels);
+  to.x0 = std::min(to.x0, from.x0);
+  to.y0 = std::min(to.y0, from.y0);
+  to.x1 = std::max(to.x1, from.x1);
+  to.y1 = std::max(to.y1, from.y1);
+  to.first_layer = std::min(to.first_layer, from.first_layer);
+  to.last_layer = std::max(to.last_layer, from.last_layer);
+  to.border |= from.border;
+  to.top |= from.top;
+  to.plate |= from.plate;
+}
+
+void AirRegions::add_layer(LevelRuns air, size_t layer) {
+  const RunLabels labels = label_runs(air, false);
+  // This layer's regions, each a new node after the regions carried from the layer below.
+  const uint32_t carried = uint32_t(regions_.size());
+  std::vector<AirRegion> pieces(labels.count);
+  for (AirRegion& p : pieces) {
+    p.x0 = air.width;
+    p.y0 = air.height;
+    p.first_layer = p.last_layer = layer;
+    p.plate = layer == 0;
+  }
+  for (int y = 0; y < air.height; ++y) {
+    for (uint32_t i = air.row_begin[size_t(y)]; i < air.row_begin[size_t(y) + 1]; ++i) {
+      AirRegion& p = pieces[labels.of_run[i]];
+      p.pixels += air.hi[i] - air.lo[i];
+      p.x0 = std::min<int>(p.x0, air.lo[i]);
+      p.x1 = std::max<int>(p.x1, air.hi[i]);
+      p.y0 = std::min(p.y0, y);
+      p.y1 = y + 1;
+      p.border |= y == 0 || y == air.height - 1 || air.lo[i] == 0 || air.hi[i] == air.width;
+    }
+  }
+  std::vector<uint32_t> node(labels.count, kSolid);
+  for (uint32_t c = 0; c < labels.count; ++c) {
+    AirRegion& p = pieces[c];
+    if (p.pixels < kRequiredAreaToProcessCheck && !p.border) continue;
+    p.layer_pixels = p.pixels;
+    node[c] = sets_.add();
+    regions_.push_back(p);
+  }
+
+  // Pixels shared with each region of the layer below, per (piece, region below) pair.
+  struct Shared {
+    uint64_t pixels = 0, below_area = 0;
+  };
+  std::unordered_map<uint64_t, Shared> shared;
+  if (previous_air_.height == air.height && previous_air_.width == air.width) {
+    for (int y = 0; y < air.height; ++y) {
+      for_each_overlap(air, previous_air_, y, [&](uint32_t i, uint32_t j, int lo, int hi) {
+        const uint32_t c = labels.of_run[i];
+        if (node[c] == kSolid || previous_node_[j] == kSolid) return;
+        Shared& s = shared[uint64_t(c) << 32 | previous_node_[j]];
+        s.pixels += uint64_t(hi - lo);
+        s.below_area = previous_area_[j];
+      });
+    }
+  }
+  for (const auto& [key, s] : shared) {
+    const uint32_t c = uint32_t(key >> 32), below = uint32_t(key);
+    const uint64_t needed = std::min({kRequiredBlackPixelsToDrain, pieces[c].pixels, s.below_area});
+    if (s.pixels >= needed) merge(node[c], below);
+  }
+
+  // Regions carried from below that no piece continues are closed.
+  std::vector<uint32_t> compact(regions_.size(), kSolid);
+  std::vector<AirRegion> alive;
+  for (uint32_t c = 0; c < labels.count; ++c) {
+    if (node[c] == kSolid) continue;
+    const uint32_t root = sets_.find(node[c]);
+    if (compact[root] == kSolid) {
+      compact[root] = uint32_t(alive.size());
+      AirRegion r = regions_[root];
+      r.max_layer_pixels = std::max(r.max_layer_pixels, r.layer_pixels);
+      r.layer_pixels = 0;
+      alive.push_back(r);
+    }
+  }
+  for (uint32_t n = 0; n < carried; ++n) {
+    const uint32_t root = sets_.find(n);
+    if (compact[root] != kSolid) continue;
+    compact[root] = kSolid - 1;  // closed once
+    closed_.push_back(regions_[root]);
+  }
+
+  // Only the open regions are kept, renumbered: memory stays that of one layer.
+  previous_node_.assign(air.runs(), kSolid);
+  previous_area_.assign(air.runs(), 0);
+  for (uint32_t i = 0; i < air.runs(); ++i) {
+    const uint32_t c = labels.of_run[i];
+    if (node[c] == kSolid) continue;
+    previous_node_[i] = compact[sets_.find(node[c])];
+    previous_area_[i] = pieces[c].pixels;
+  }
+  regions_ = std::move(alive);
+  sets_ = UnionFind(regions_.size());
+  previous_air_ = std::move(air);
+}
+
+void AirRegions::finish() {
+  for (AirRegion& r : regions_) {
+    r.top = true;
+    closed_.push_back(r);
+  }
+  regions_.clear();
+  sets_ = UnionFind();
+  previous_air_ = LevelRuns();
+  previous_node_.clear();
+  previous_area_.clear();
+}
+
+std::vector<AirRegion> AirRegions::take_closed() {
+  std::vector<AirRegion> out;
+  out.swap(closed_);
+  return out;
+}
+
+}  // namespace slicereuse

@@ -1,0 +1,53 @@
+#pragma once
+// AirRegions: the air of a stack of layers (pixels <= UVtools' resin-trap BinaryThreshold),
+// labelled in 3D as it streams in, bottom to top, as UVtools' resin trap and suction cup
+// detection sees it.
+//
+// add_layer(air, layer): the layer's air runs (level_runs.h). Within a layer air joins by
+//   4-connectivity; a region of a layer under 4 pixels (RequiredAreaToProcessCheck) that does not
+//   touch the image border is taken as solid. A region joins the air of the layer below that it
+//   overlaps by at least 10 pixels (RequiredBlackPixelsToDrain), or by all of the smaller one's
+//   pixels when either has fewer (a narrow vent still connects).
+// finish(): the air of the last layer opens to the air above the part; every region closes.
+// closed(): the regions that closed (no air in the next layer continues them), each with its
+//   pixels, box, layers, the most pixels it has in one layer, and whether it reached the image
+//   border (drains), the top (open upwards) or layer 0 (sealed by the plate).
+// Memory: the runs of one layer and the regions still open, whatever the number of layers.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "level_runs.h"
+#include "slicereuse/util/union_find.h"
+
+namespace slicereuse {
+
+struct AirRegion {
+  uint64_t pixels = 0;
+  uint64_t layer_pixels = 0;      // in the layer being added
+  uint64_t max_layer_pixels = 0;  // most in one layer
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  size_t first_layer = 0, last_layer = 0;
+  bool border = false, top = false, plate = false;
+};
+
+class AirRegions {
+ public:
+  void add_layer(LevelRuns air, size_t layer);
+  void finish();
+  // The regions closed since the last call (moved out).
+  std::vector<AirRegion> take_closed();
+
+ private:
+  void merge(uint32_t a, uint32_t b);
+  void close_regions_not_in(const std::vector<uint32_t>& alive_roots);
+
+  UnionFind sets_;
+  std::vector<AirRegion> regions_;      // by node of sets_; valid at roots
+  LevelRuns previous_air_;
+  std::vector<uint32_t> previous_node_;  // per run of previous_air_, UINT32_MAX: solid
+  std::vector<uint64_t> previous_area_;  // per run: its layer region's pixels
+  std::vector<AirRegion> closed_;
+};
+
+}  // namespace slicereuse

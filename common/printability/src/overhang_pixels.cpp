@@ -1,0 +1,139 @@
+#include "overhang_pixels.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace slicereuse {
+namespace {
+
+constexpr int kErodeIterations = 40;  // UVtools: Overhang ErodeIterations
+constexpr int kDifferenceThreshold = 127;  // UVtools: overhang image thresholded at 127
+
+struct Box {
+  int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;  // [x0, x1) x [y0, y1)
+  void add(const LevelRuns& r) {
+    for (int y = 0; y < r.height; ++y) {
+      const uint32_t b = r.row_begin[size_t(y)], e = r.row_begin[size_t(y) + 1];
+      if (b == e) continue;
+      y0 = std::min(y0, y);
+      y1 = y + 1;
+      x0 = std::min<int>(x0, r.lo[b]);
+      x1 = std::max<int>(x1, r.hi[e - 1]);
+    }
+  }
+  bool empty() const { return x1 < 0; }
+  bool contains(int x, int y) const { return x >= x0 && x < x1 && y >= y0 && y < y1; }
+};
+
+}  // namespace
+
+LevelRuns overhang_pixels(const LayerRuns& layer, const LayerRuns& below) {
+  const MaskImage& img = *layer.image;
+  const MaskImage& under = *below.image;
+  // Brighter by more than 127 needs >= 128 here and < 128 below; the levels decide the rest.
+  const LevelRuns candidates = subtract_runs(*layer.at_least_128, *below.at_least_128);
+  LevelRuns brighter;
+  brighter.width = img.width;
+  brighter.height = img.height;
+  brighter.row_begin.push_back(0);
+  for (int y = 0; y < img.height; ++y) {
+    const size_t row = size_t(y) * size_t(img.width);
+    for (uint32_t i = candidates.row_begin[size_t(y)]; i < candidates.row_begin[size_t(y) + 1]; ++i) {
+      for (int x = candidates.lo[i]; x < candidates.hi[i];) {
+        const auto brighter_at = [&](int c) {
+          return img.pixels[row + size_t(c)] - under.pixels[row + size_t(c)] > kDifferenceThreshold;
+        };
+        if (!brighter_at(x)) {
+          ++x;
+          continue;
+        }
+        const int lo = x;
+        while (x < candidates.hi[i] && brighter_at(x)) ++x;
+        brighter.lo.push_back(uint16_t(lo));
+        brighter.hi.push_back(uint16_t(x));
+      }
+    }
+    brighter.row_begin.push_back(brighter.runs());
+  }
+  Box crop;
+  crop.add(*layer.nonzero);
+  crop.add(*below.nonzero);
+  // Only a pixel whose row has 40 brighter pixels on either side (or the crop's border, which
+  // does not erode) can survive: most layers' brighter pixels are thin rims, and end here.
+  LevelRuns core;
+  core.width = img.width;
+  core.height = img.height;
+  core.row_begin.push_back(0);
+  for (int y = 0; y < img.height; ++y) {
+    for (uint32_t i = brighter.row_begin[size_t(y)]; i < brighter.row_begin[size_t(y) + 1]; ++i) {
+      const int lo = brighter.lo[i] == crop.x0 ? brighter.lo[i] : brighter.lo[i] + kErodeIterations;
+      const int hi = brighter.hi[i] == crop.x1 ? brighter.hi[i] : brighter.hi[i] - kErodeIterations;
+      if (lo >= hi) continue;
+      core.lo.push_back(uint16_t(lo));
+      core.hi.push_back(uint16_t(hi));
+    }
+    core.row_begin.push_back(core.runs());
+  }
+  LevelRuns kept;
+  kept.width = img.width;
+  kept.height = img.height;
+  kept.row_begin.assign(size_t(img.height) + 1, 0);
+  Box found;
+  found.add(core);
+  if (found.empty()) return kept;
+
+  // L1 distance to the nearest pixel of the crop that is not brighter, over the core's box and
+  // the 41 pixels around it (where every such pixel within 40 of the core lies); two chamfer
+  // passes give it exactly in a rectangle.
+  const int reach = kErodeIterations + 1;
+  const int x0 = std::max(found.x0 - reach, 0), y0 = std::max(found.y0 - reach, 0);
+  const int x1 = std::min(found.x1 + reach, img.width), y1 = std::min(found.y1 + reach, img.height);
+  const int w = x1 - x0, h = y1 - y0;
+  constexpr int kFar = 1 << 29;
+  std::vector<int> dist(size_t(w) * size_t(h));
+  for (int y = y0; y < y1; ++y) {
+    int* d = dist.data() + size_t(y - y0) * size_t(w);
+    for (int x = x0; x < x1; ++x) d[x - x0] = crop.contains(x, y) ? 0 : kFar;
+    for (uint32_t i = brighter.row_begin[size_t(y)]; i < brighter.row_begin[size_t(y) + 1]; ++i) {
+      const int lo = std::max<int>(brighter.lo[i], x0), hi = std::min<int>(brighter.hi[i], x1);
+      if (lo < hi) std::fill(d + (lo - x0), d + (hi - x0), kFar);
+    }
+  }
+  for (int y = 0; y < h; ++y) {
+    int* d = dist.data() + size_t(y) * size_t(w);
+    for (int x = 0; x < w; ++x) {
+      if (x > 0) d[x] = std::min(d[x], d[x - 1] + 1);
+      if (y > 0) d[x] = std::min(d[x], d[x - w] + 1);
+    }
+  }
+  for (int y = h - 1; y >= 0; --y) {
+    int* d = dist.data() + size_t(y) * size_t(w);
+    for (int x = w - 1; x >= 0; --x) {
+      if (x < w - 1) d[x] = std::min(d[x], d[x + 1] + 1);
+      if (y < h - 1) d[x] = std::min(d[x], d[x + w] + 1);
+    }
+  }
+  // Distances inside the window are exact within 40 of the core only: survivors come from it.
+  kept.row_begin.assign(1, 0);
+  for (int y = 0; y < img.height; ++y) {
+    if (y >= y0 && y < y1) {
+      const int* d = dist.data() + size_t(y - y0) * size_t(w);
+      for (uint32_t i = core.row_begin[size_t(y)]; i < core.row_begin[size_t(y) + 1]; ++i) {
+        for (int x = core.lo[i]; x < core.hi[i];) {
+          if (d[x - x0] <= kErodeIterations) {
+            ++x;
+            continue;
+          }
+          const int lo = x;
+          while (x < core.hi[i] && d[x - x0] > kErodeIterations) ++x;
+          kept.lo.push_back(uint16_t(lo));
+          kept.hi.push_back(uint16_t(x));
+        }
+      }
+    }
+    kept.row_begin.push_back(kept.runs());
+  }
+  return kept;
+}
+
+}  // namespace slicereuse

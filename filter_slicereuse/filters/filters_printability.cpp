@@ -1,0 +1,109 @@
+// "Check Printability": UVtools' checks (islands, overhangs, resin traps, suction cups, parts
+// touching the display's bounds) on the masks of a print file or PNG folder; no mesh involved.
+// The findings are logged, counted in the result, written to an optional CSV and shown as a
+// point layer (a point at each finding's centre on the build plate).
+#include "filter_params.h"
+#include "filters_common.h"
+#include "slicereuse/printability/printability_report.h"
+#include "slicereuse/printfiles/check_print_file.h"
+
+namespace slicereuse::plugin {
+namespace {
+
+constexpr size_t kLoggedFindings = 20;  // the rest are counted, the CSV has them all
+
+struct PrintabilityParams {
+  std::string print_file;
+  double layer_thickness;
+  PrinterSettings printer;
+  std::string report_file;
+};
+
+ParamList<PrintabilityParams> printability_params() {
+  ParamList<PrintabilityParams> l;
+  l.file(&PrintabilityParams::print_file, ParamType::FileOpen, "print_file", "Print file", print_file_patterns().c_str(),
+         "choose a print file, or a folder of PNG images",
+         print_file_tooltip("The print file (or folder of PNG images) whose masks are checked.").c_str())
+      .number(&PrintabilityParams::layer_thickness, "layer_thickness", "Layer thickness (mm)", 0.05,
+              Range::above(0, "mm"), "The print file's layer height: heights and volumes are counted in it.")
+      .include(&PrintabilityParams::printer, printer_params())
+      .file(&PrintabilityParams::report_file, ParamType::FileSave, "report_file", "Report file (CSV)", "*.csv", nullptr,
+            "Where to write one CSV row per finding (kind, layers, box in pixels, centre and size in mm, area or "
+            "volume). Empty: no report is written.");
+  return l;
+}
+
+// A finding's centre on the build plate (mm): the image's pixel position mapped back through
+// the printer's display (orientation, mirrors, offsets), z from the plate.
+void plate_point(const MaskImageLayout& m, const Finding& f, std::vector<double>& xyz) {
+  const double u = 0.5 * (f.x0 + f.x1), v = 0.5 * (f.y0 + f.y1);
+  const double along_columns = (u - 0.5 * m.width) * m.column_um / 1000.0 * (m.columns_descend ? -1 : 1);
+  const double along_rows = (v - 0.5 * m.height) * m.row_um / 1000.0 * (m.rows_ascend ? 1 : -1);
+  double p[3] = {0, 0, f.center_mm[2]};
+  p[m.column_axis] = along_columns - m.column_offset_mm;
+  p[m.row_axis] = along_rows - m.row_offset_mm;
+  xyz.insert(xyz.end(), p, p + 3);
+}
+
+Result run_check_printability(const PrintabilityParams& p, Host& host) {
+  const auto start = std::chrono::steady_clock::now();
+  const MaskImageLayout layout = mask_image_layout(p.printer.profile());
+  log_printer(host, "Check Printability", p.printer);
+
+  const PrintabilityReport r = check_print_file(p.print_file, layout.column_um / 1000.0, layout.row_um / 1000.0,
+                                                p.layer_thickness, p.report_file, host.progress());
+
+  std::vector<double> xyz, normals;
+  for (size_t i = 0; i < r.findings.size(); ++i) {
+    const Finding& f = r.findings[i];
+    plate_point(layout, f, xyz);
+    normals.insert(normals.end(), {0.0, 0.0, 1.0});
+    if (i >= kLoggedFindings) continue;
+    const bool solid = f.kind == FindingKind::ResinTrap || f.kind == FindingKind::SuctionCup;
+    host.log(format("Check Printability: %s, layers %zu-%zu, centre (%.2f, %.2f) mm in the image, %.2f x %.2f mm, "
+                    "%.4g %s",
+                    finding_kind_name(f.kind), f.first_layer, f.last_layer, f.center_mm[0], f.center_mm[1],
+                    f.size_mm[0], f.size_mm[1], solid ? f.volume_mm3 : f.area_mm2, solid ? "mm3" : "mm2"));
+  }
+  if (r.findings.size() > kLoggedFindings)
+    host.log(format("Check Printability: and %zu more", r.findings.size() - kLoggedFindings));
+  if (!r.findings.empty()) host.add_point_layer("printability findings", xyz, normals);
+
+  const double seconds = seconds_since(start);
+  host.log(format("Check Printability: %zu layers, %zu islands, %zu overhangs, %zu resin traps (%.4g mm3), "
+                  "%zu suction cups, %zu touching bounds, %.3f s",
+                  r.layers, r.count(FindingKind::Island), r.count(FindingKind::Overhang),
+                  r.count(FindingKind::ResinTrap), r.trapped_mm3(), r.count(FindingKind::SuctionCup),
+                  r.count(FindingKind::TouchingBounds), seconds));
+  return {{"islands", int64_t(r.count(FindingKind::Island))},
+          {"overhangs", int64_t(r.count(FindingKind::Overhang))},
+          {"resin_traps", int64_t(r.count(FindingKind::ResinTrap))},
+          {"suction_cups", int64_t(r.count(FindingKind::SuctionCup))},
+          {"touching_bounds", int64_t(r.count(FindingKind::TouchingBounds))},
+          {"layers", int64_t(r.layers)},
+          {"trapped_mm3", r.trapped_mm3()},
+          {"seconds", seconds}};
+}
+
+}  // namespace
+
+FilterSpec check_printability_filter() {
+  const std::string description = std::string(
+      "<p>Checks the masks of a print file (.sl1, .sl1s, .goo, .ctb, Anycubic files) or a folder of PNG "
+      "images as UVtools does, with its default settings: <b>islands</b> (a region of a layer resting on "
+      "too few lit pixels of the layer below), <b>overhangs</b> (what a layer adds beyond the one below, "
+      "eroded 40 pixels), <b>resin traps</b> (air enclosed on all sides), <b>suction cups</b> (air closed "
+      "towards the plate and open only upwards, at least 100 pixels and 0.5 mm high) and parts "
+      "<b>touching the display's bounds</b> (within 5 pixels of its edges). The printer's display gives "
+      "the pixel size; the layer thickness the heights and volumes. Logs each finding (the first 20) with "
+      "its layers and place, adds a layer of points at the findings' centres, and optionally writes one "
+      "CSV row per finding. The current mesh is not used.</p>") +
+      kReference;
+  return typed_filter({FilterId::CheckPrintability, "Check Printability", "check_printability", description,
+                       Arity::None, kLayerClass | kMeasureClass, false},
+                      printability_params(), run_check_printability,
+                      {"islands", "overhangs", "resin_traps", "suction_cups", "touching_bounds", "layers",
+                       "trapped_mm3", "seconds"});
+}
+
+}  // namespace slicereuse::plugin
