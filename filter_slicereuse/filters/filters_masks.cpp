@@ -53,7 +53,7 @@ Result run_export_masks(const ExportParams& p, Host& host) {
                                        std::vector<SlicePart> parts(1);
                                        parts[0].slices = std::move(s);
                                        const Slices& whole = parts[0].slices;
-                                       compensate_first_layer(parts, profile, whole.layer_z[0], whole.z_start,
+                                       compensate_first_layer(parts, {}, profile, whole.layer_z[0], whole.z_start,
                                                               whole.thickness);
                                        return parts;
                                      }},

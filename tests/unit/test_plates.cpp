@@ -570,6 +570,50 @@ TEST_F(PlateJobTest, PlateMasksEqualTheUnionOfTheMembersOwnMasksByReuseAndDirect
   }
 }
 
+// With elephant-foot compensation (the first layer shrunk), a plate is still the union of its
+// members printed alone, each a plate of one on the same planes: every member's first layer is
+// compensated as it is alone, not with the others (together, far parts came out otherwise).
+TEST_F(PlateJobTest, WithElephantFootThePlateIsStillTheUnionOfItsMembersAlone) {
+  test::FamilyOptions o = small_arch();
+  const Mesh base = test::make_family_base(o);
+  std::vector<Mesh> members;
+  std::vector<std::string> names;
+  for (int i = 1; i <= 6; ++i) {
+    members.push_back(test::make_family_member(base, o, i));
+    names.push_back("m" + std::to_string(i));
+  }
+  std::vector<const Mesh*> ptrs;
+  for (const Mesh& m : members) ptrs.push_back(&m);
+  PrinterProfile profile = display(500, 400);
+  profile.elephant_foot_mm = 0.2;
+  profile.elephant_foot_min_width_mm = 0.2;
+  const Arrangement a = arrange_plates(ptrs, names, printer_platform(profile), {});
+  ASSERT_EQ(a.members.size(), 1u) << "the test wants one plate";
+  std::vector<Mesh> placed;
+  for (size_t m = 0; m < members.size(); ++m) placed.push_back(place_mesh(members[m], a.placement[m]));
+  SliceOptions so;
+  so.thickness = 0.1;
+  const Slices encoding = slice_layers(base, so);
+  for (bool aa : {false, true}) {
+    profile.antialiasing = aa;
+    const std::string tag = aa ? "aa" : "bin";
+    PlateJobOptions direct;
+    direct.slicing = so;
+    direct.slicing.z_start = encoding.z_start;
+    std::vector<std::string> alone;
+    for (size_t m = 0; m < placed.size(); ++m) {
+      alone.push_back(path(tag + "_alone_" + names[m]));
+      export_plate({placed[m]}, direct, profile, alone.back());
+    }
+    export_plate(placed, direct, profile, path(tag + "_direct"));
+    expect_union(path(tag + "_direct"), alone);
+    PlateJobOptions reuse;
+    reuse.encoding = &encoding;
+    export_plate(placed, reuse, profile, path(tag + "_reuse"));
+    expect_union(path(tag + "_reuse"), alone);
+  }
+}
+
 // A plate of members of two connectivities, by reuse: the member whose faces are not the
 // encoding's mesh's (the same surface, renumbered) is sliced directly on the encoding's planes,
 // made where drawn and in ranges alike; the plate's masks are the union of every member's own,

@@ -60,6 +60,7 @@ struct PlateMember {
   DirectLayers direct;         // made where drawn: its layers sliced beforehand
   size_t offset = 0;           // the plate layer of its layer 0
   bool support = false;
+  size_t owner = 0;            // the member it is, or whose support it is
 
   size_t layers() const { return transfer ? transfer->layers() : planes.size(); }
   size_t end() const { return offset + layers(); }
@@ -154,8 +155,12 @@ std::vector<PlateMember> prepare_members(const std::vector<Mesh>& placed, const 
     throw Error(format("a plate of %zu members was given %zu supports: one (or none) per member", n, o.supports.size()));
   const PlateFrame frame{st.z_start, st.thickness, o.layers_below};
   std::vector<const Mesh*> supports;
-  for (const Mesh* s : o.supports)
-    if (s) supports.push_back(s);
+  std::vector<size_t> support_owner;
+  for (size_t m = 0; m < o.supports.size(); ++m)
+    if (o.supports[m]) {
+      supports.push_back(o.supports[m]);
+      support_owner.push_back(m);
+    }
   std::vector<PlateMember> members(n + supports.size());
   st.direct_reasons.assign(n, "");
   const bool with_ends = o.edge_ends && !o.edge_ends->empty();
@@ -166,12 +171,14 @@ std::vector<PlateMember> prepare_members(const std::vector<Mesh>& placed, const 
         if (m >= n) {
           p.mesh = supports[m - n];
           p.support = true;
+          p.owner = support_owner[m - n];
           validate_mesh(*p.mesh);
           p.planes = support_planes(*p.mesh, frame);
           if (o.encoding && !o.whole_stack) p.direct = layers_to_slice(p);
           return;
         }
         p.mesh = &placed[m];
+        p.owner = m;
         p.offset = o.layers_below;
         if (o.encoding) {
           validate_mesh(placed[m]);
@@ -221,6 +228,15 @@ std::vector<SlicePart> plate_range(const std::vector<PlateMember>& members, cons
     st.points += made.points();
   }
   return parts;
+}
+
+// The owners of the parts plate_range(members, ..., a, b) and MadeWhereDrawn::make (b = a + 1)
+// give, in their order: each member's, or its supports', for compensate_first_layer.
+std::vector<size_t> part_owners(const std::vector<PlateMember>& members, size_t a, size_t b) {
+  std::vector<size_t> owners;
+  for (const PlateMember& p : members)
+    if (std::max(a, p.offset) < std::min(b, p.end())) owners.push_back(p.owner);
+  return owners;
 }
 
 // A reused plate made a layer at a time where its masks are drawn (LayerMaker, export_masks.h):
@@ -371,8 +387,8 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
       st.masks = export_masks(LayerMaker{L, st.thickness, [&](size_t k, std::vector<SlicePart>& parts) {
                                            made.make(k, parts);
                                            if (k == 0)
-                                             compensate_first_layer(parts, profile, frame.plane(0), frame.bottom(0),
-                                                                    frame.thickness);
+                                             compensate_first_layer(parts, part_owners(members, 0, 1), profile,
+                                                                    frame.plane(0), frame.bottom(0), frame.thickness);
                                          }},
                               profile, output_path, sub_progress(progress, share, 1));
       made.stats(st);
@@ -393,7 +409,8 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
                        st.slicing_seconds += seconds_since(t);
                        if (o.whole_stack) o.whole_stack(parts);
                        if (first[i] == 0)
-                         compensate_first_layer(parts, profile, frame.plane(0), frame.bottom(0), frame.thickness);
+                         compensate_first_layer(parts, part_owners(members, 0, first[i + 1]), profile,
+                                                frame.plane(0), frame.bottom(0), frame.thickness);
                        return parts;
                      }};
   st.masks = export_masks(chunks, profile, output_path, progress);
