@@ -84,13 +84,13 @@ DirectLayers layers_to_slice(const PlateMember& p) {
   d.at.assign(p.layers(), kNotDirect);
   if (p.transfer) {
     const ExactTransfer& t = *p.transfer;
+    const size_t half = t.layers() / 2;
     size_t refused = 0;
     for (size_t k = 0; k < t.layers(); ++k) refused += !t.transferable(k);
-    for (size_t k = 0; refused > 0 && 2 * d.planes.size() <= t.layers() && 2 * refused <= t.layers() &&
-                       k < t.layers();
-         ++k)
-      if (!t.transferable(k) || !t.certified(k)) d.add(k, t.plane(k));
-    if (2 * d.planes.size() <= t.layers() && 2 * refused <= t.layers()) return d;
+    if (refused > 0 && refused <= half)
+      for (size_t k = 0; k < t.layers() && d.planes.size() <= half; ++k)
+        if (!t.transferable(k) || !t.certified(k)) d.add(k, t.plane(k));
+    if (refused <= half && d.planes.size() <= half) return d;
     d.planes.clear();
     d.at.assign(p.layers(), kNotDirect);
   }
