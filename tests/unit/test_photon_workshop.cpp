@@ -37,6 +37,7 @@ namespace {
 
 using test::Layer;
 using test::make_slices;
+using test::mirrored_display;
 using test::raster;
 using test::le16;
 using test::le32;
@@ -57,18 +58,6 @@ constexpr size_t kHeaderAt = 20, kSoftwareAt = 24, kPreviewAt = 28, kColoursAt =
 
 // Layer k's LAYERDEF entry.
 size_t entry(const std::string& b, size_t k) { return le32(b, kLayerDefAt) + 20 + 32 * k; }
-
-PrinterProfile mirrored_display() {
-  PrinterProfile p;
-  p.width_px = 240;
-  p.height_px = 160;
-  p.pixel_size_x_um = 80;
-  p.pixel_size_y_um = 120;
-  p.mirror_x = true;
-  p.offset_x_mm = 0.37;
-  p.offset_y_mm = -1.21;
-  return p;
-}
 
 // Every extension and the versions it takes: {name, file_version (0: default), version written}.
 struct Kind {

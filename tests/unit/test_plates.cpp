@@ -449,6 +449,22 @@ class PlateJobTest : public test::TempFolderTest {
     return img;
   }
 
+  // members arranged on one plate of profile's display and moved there (place_mesh); empty,
+  // with a failure, when they take more than one plate.
+  static std::vector<Mesh> placed_on_one_plate(const std::vector<Mesh>& members, const std::vector<std::string>& names,
+                                               const PrinterProfile& profile) {
+    std::vector<const Mesh*> ptrs;
+    for (const Mesh& m : members) ptrs.push_back(&m);
+    const Arrangement a = arrange_plates(ptrs, names, printer_platform(profile), {});
+    if (a.members.size() != 1) {
+      ADD_FAILURE() << "the test wants one plate, not " << a.members.size();
+      return {};
+    }
+    std::vector<Mesh> placed;
+    for (size_t m = 0; m < members.size(); ++m) placed.push_back(place_mesh(members[m], a.placement[m]));
+    return placed;
+  }
+
   // The plate stack at `plate` equals, pixel for pixel, the union (largest value) of the member
   // stacks; members' stacks end where they end.
   void expect_union(const std::string& plate, const std::vector<std::string>& members) {
@@ -503,13 +519,9 @@ TEST_F(PlateJobTest, PlateMasksEqualTheUnionOfTheMembersOwnMasksByReuseAndDirect
   // where drawn, it finds that layer only while transferring it.
   size_t broken = 0;
   ASSERT_TRUE(test::move_vertex_across_unsampled_edge(encoding, members[1], &broken));
-  std::vector<const Mesh*> ptrs;
-  for (const Mesh& m : members) ptrs.push_back(&m);
   PrinterProfile profile = display(500, 400);
-  const Arrangement a = arrange_plates(ptrs, names, printer_platform(profile), {});
-  ASSERT_EQ(a.members.size(), 1u) << "the test wants one plate";
-  std::vector<Mesh> placed;
-  for (size_t m = 0; m < members.size(); ++m) placed.push_back(place_mesh(members[m], a.placement[m]));
+  const std::vector<Mesh> placed = placed_on_one_plate(members, names, profile);
+  ASSERT_EQ(placed.size(), members.size());
 
   for (bool aa : {false, true}) {
     profile.antialiasing = aa;
@@ -582,15 +594,11 @@ TEST_F(PlateJobTest, WithElephantFootThePlateIsStillTheUnionOfItsMembersAlone) {
     members.push_back(test::make_family_member(base, o, i));
     names.push_back("m" + std::to_string(i));
   }
-  std::vector<const Mesh*> ptrs;
-  for (const Mesh& m : members) ptrs.push_back(&m);
   PrinterProfile profile = display(500, 400);
   profile.elephant_foot_mm = 0.2;
   profile.elephant_foot_min_width_mm = 0.2;
-  const Arrangement a = arrange_plates(ptrs, names, printer_platform(profile), {});
-  ASSERT_EQ(a.members.size(), 1u) << "the test wants one plate";
-  std::vector<Mesh> placed;
-  for (size_t m = 0; m < members.size(); ++m) placed.push_back(place_mesh(members[m], a.placement[m]));
+  const std::vector<Mesh> placed = placed_on_one_plate(members, names, profile);
+  ASSERT_EQ(placed.size(), members.size());
   SliceOptions so;
   so.thickness = 0.1;
   const Slices encoding = slice_layers(base, so);
@@ -628,21 +636,17 @@ TEST_F(PlateJobTest, AMemberOfAnotherConnectivityIsSlicedDirectlyOnAReusedPlate)
   SliceOptions so;
   so.thickness = 0.1;
   const Slices encoding = slice_layers(base, so);
-  std::vector<const Mesh*> ptrs;
-  for (const Mesh& m : members) ptrs.push_back(&m);
   PrinterProfile profile = display(500, 400);
   profile.antialiasing = true;
-  const Arrangement a = arrange_plates(ptrs, names, printer_platform(profile), {});
-  ASSERT_EQ(a.members.size(), 1u) << "the test wants one plate";
-  std::vector<Mesh> placed;
+  const std::vector<Mesh> placed = placed_on_one_plate(members, names, profile);
+  ASSERT_EQ(placed.size(), members.size());
   std::vector<std::string> own;
   size_t renumbered_layers = 0;
   for (size_t m = 0; m < members.size(); ++m) {
-    placed.push_back(place_mesh(members[m], a.placement[m]));
     SliceOptions mo = so;
     mo.z_start = encoding.z_start;
     mo.encoding = false;
-    const Slices direct = slice_layers(placed.back(), mo);
+    const Slices direct = slice_layers(placed[m], mo);
     if (m == 2) renumbered_layers = direct.layers();
     own.push_back(path("own_" + names[m]));
     export_masks(direct, profile, own.back());
