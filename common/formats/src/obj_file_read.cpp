@@ -11,16 +11,10 @@
 namespace slicereuse::detail {
 namespace {
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+// OBJ's blanks: a '\r' of a CRLF line ending too.
+bool obj_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
-std::string_view next_word(const char*& p, const char* e) {
-  while (p < e && is_blank(*p)) ++p;
-  const char* q = p;
-  while (q < e && !is_blank(*q)) ++q;
-  const std::string_view w(p, size_t(q - p));
-  p = q;
-  return w;
-}
+std::string_view next_word(const char*& p, const char* e) { return next_token(p, e, obj_blank); }
 
 }  // namespace
 

@@ -449,13 +449,9 @@ class AsciiBody {
   }
 
   std::string_view token(uint64_t item, const Element& el) {
-    while (p_ < in_.e && is_space(*p_)) ++p_;
-    const char* q = p_;
-    while (q < in_.e && !is_space(*q)) ++q;
-    if (q == p_)
+    const std::string_view t = next_token(p_, in_.e, is_space);
+    if (t.empty())
       in_.fail("the file ends inside " + el.name + " " + std::to_string(item) + " of " + std::to_string(el.count) + " (truncated)");
-    const std::string_view t(p_, size_t(q - p_));
-    p_ = q;
     return t;
   }
   int64_t integer(std::string_view t, uint64_t item, const Element& el) const {

@@ -104,29 +104,19 @@ Mesh read_binary(const MeshBytes& in, uint32_t facets) {
   return std::move(s.mesh);
 }
 
-// The next blank-separated token at or after p; empty at the end.
-std::string_view next_token(const char*& p, const char* e) {
-  while (p < e && is_space(*p)) ++p;
-  const char* q = p;
-  while (q < e && !is_space(*q)) ++q;
-  const std::string_view t(p, size_t(q - p));
-  p = q;
-  return t;
-}
-
 Mesh read_ascii(const MeshBytes& in) {
   const char* p = static_cast<const char*>(std::memchr(in.b, '\n', in.size()));
   p = p ? p + 1 : in.e;  // the first line ("solid name") is skipped, as vcg does
   // A facet takes about 250 bytes of text and a closed mesh has half as many vertices as facets.
   StlBuilder s{in, CornerUnifier(in.size() / 500 + 3), {}};
   auto expect = [&](std::string_view word) {
-    const std::string_view t = next_token(p, in.e);
+    const std::string_view t = next_token(p, in.e, is_space);
     if (t != word)
       in.fail_at_line(t.data(), "expected '" + std::string(word) + "', found " +
                               (t.empty() ? std::string("the end of the file") : quote_token(t.data(), in.e)));
   };
   for (;;) {
-    const std::string_view t = next_token(p, in.e);
+    const std::string_view t = next_token(p, in.e, is_space);
     if (t.empty()) break;
     if (t == "endsolid" || t == "solid") {  // a solid's name runs to the end of its line
       const void* nl = std::memchr(p, '\n', size_t(in.e - p));
@@ -136,14 +126,14 @@ Mesh read_ascii(const MeshBytes& in) {
     if (t != "facet") in.fail_at_line(t.data(), "expected 'facet', 'endsolid' or 'solid', found " + quote_token(t.data(), in.e));
     expect("normal");
     for (int k = 0; k < 3; ++k)
-      if (next_token(p, in.e).empty()) in.fail_at_line(t.data(), "the facet's normal is cut short by the end of the file");
+      if (next_token(p, in.e, is_space).empty()) in.fail_at_line(t.data(), "the facet's normal is cut short by the end of the file");
     expect("outer");
     expect("loop");
     for (int k = 0; k < 3; ++k) {
       expect("vertex");
       float xyz[3];
       for (float& c : xyz) {
-        const std::string_view n = next_token(p, in.e);
+        const std::string_view n = next_token(p, in.e, is_space);
         if (n.empty() || !parse_real(n.data(), n.data() + n.size(), c))
           in.fail_at_line(n.empty() ? p : n.data(),
                           "expected a vertex coordinate, found " +

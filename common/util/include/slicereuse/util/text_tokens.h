@@ -9,7 +9,8 @@
 //   from_chars_number: a number at p as std::from_chars reads it (decimal or exponent notation
 //   with an optional '-', no '+'; integers in base Base, a constant so that it compiles to the
 //   base's own parser); parse_number: one blank-separated number token, which must be entirely a
-//   number; next_word, at_end: words and the end of a line.
+//   number; next_word, at_end: words and the end of a line; next_token: a token between blanks of
+//   the caller's own.
 //   quoted: text for an error message, at most 40 bytes, unprintable bytes shown as '?', so that
 //   garbage cannot flood the message.
 // Inline: the readers parse tens of millions of numbers through these.
@@ -87,13 +88,21 @@ inline bool parse_number(const char*& p, const char* e, T& v) {
   return true;
 }
 
+// Bytes for which blank(c) holds, then the token up to the next one (empty at e); p moves past
+// it. For formats whose blanks are not is_blank's (the mesh files': scanf's, or OBJ's '\r').
+template <class Blank>
+inline std::string_view next_token(const char*& p, const char* e, Blank blank) {
+  while (p < e && blank(*p)) ++p;
+  const char* q = p;
+  while (q < e && !blank(*q)) ++q;
+  const std::string_view token(p, size_t(q - p));
+  p = q;
+  return token;
+}
+
 // Blanks, then the word up to the next blank; false when there is none.
 inline bool next_word(const char*& p, const char* e, std::string_view& word) {
-  p = skip_blanks(p, e);
-  const char* q = p;
-  while (q < e && !is_blank(*q)) ++q;
-  word = std::string_view(p, size_t(q - p));
-  p = q;
+  word = next_token(p, e, [](char c) { return is_blank(c); });
   return !word.empty();
 }
 
