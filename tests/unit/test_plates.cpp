@@ -26,6 +26,7 @@
 #include "slicereuse/plates/plate_job.h"
 #include "slicereuse/plates/plate_layout.h"
 #include "slicereuse/png/mask_png.h"
+#include "slicereuse/printfiles/check_print_file.h"
 #include "slicereuse/printfiles/export_masks.h"
 #include "slicereuse/transfer/transfer_contours.h"
 #include "slicereuse/util/format.h"
@@ -686,6 +687,83 @@ TEST_F(PlateJobTest, AMemberOfAnotherConnectivityIsSlicedDirectlyOnAReusedPlate)
 // Cancelled half-way through its masks, a plate leaves nothing: made where drawn (reusing),
 // in ranges (reusing within a tiny budget), and sliced directly; and the progress it reported
 // never went back.
+// A plate of a hollow box (a sealed cavity), a solid box and a cup open at the top, sliced
+// directly at 0.1 mm on a display of 0.1 mm pixels.
+struct CheckedPlate {
+  std::vector<Mesh> placed{test::make_hollow_box(-25, -5, 0, -15, 5, 6, 2), test::make_box(-5, -5, 0, 5, 5, 6),
+                           test::make_cup(15, -5, 0, 25, 5, 6, 2)};
+  PlateJobOptions options;
+  CheckedPlate() {
+    options.slicing.thickness = 0.1;
+    options.names = {"hollow", "solid", "cup"};
+    options.check_printability = true;
+  }
+};
+
+TEST_F(PlateJobTest, ChecksItsMasksAsWrittenAndPlacesEachFindingOnItsMember) {
+  CheckedPlate plate;
+  for (const char* name : {"p.sl1", "p.goo", "p"}) {
+    SCOPED_TRACE(name);
+    const PrinterProfile profile = display(800, 600);
+    const PlateJobStats st = export_plate(plate.placed, plate.options, profile, path(name));
+    ASSERT_TRUE(st.checked);
+    const PrintabilityReport& r = st.printability;
+    EXPECT_EQ(r.layers, 60u);
+    EXPECT_EQ(r.count(FindingKind::Island), 0u);
+    ASSERT_EQ(r.count(FindingKind::ResinTrap), 1u);
+    ASSERT_EQ(r.count(FindingKind::SuctionCup), 1u);
+    EXPECT_TRUE(blocks_printing(r));
+    ASSERT_EQ(st.finding_places.size(), r.findings.size());
+    for (size_t i = 0; i < r.findings.size(); ++i) {
+      const Finding& f = r.findings[i];
+      const FindingPlace& at = st.finding_places[i];
+      if (f.kind == FindingKind::ResinTrap) {
+        EXPECT_EQ(at.member, 0u);
+        EXPECT_NEAR(at.x_mm, -20, 0.05);  // the cavity's centre
+        EXPECT_NEAR(at.y_mm, 0, 0.05);
+        EXPECT_EQ(f.first_layer, 20u);  // the cavity spans z 2..4 mm
+        EXPECT_EQ(f.last_layer, 39u);
+        EXPECT_NEAR(f.volume_mm3, 6 * 6 * 2, 1e-9);
+      }
+      if (f.kind == FindingKind::SuctionCup) {
+        EXPECT_EQ(at.member, 2u);
+        EXPECT_NEAR(at.x_mm, 20, 0.05);
+        EXPECT_EQ(f.first_layer, 20u);
+        EXPECT_EQ(f.last_layer, 59u);
+        EXPECT_NEAR(f.volume_mm3, 6 * 6 * 4, 1e-9);
+      }
+    }
+    // What was checked as written is what the written file holds.
+    const PrintabilityReport again = check_print_file(path(name), 0.1, 0.1, 0.1, "");
+    ASSERT_EQ(again.findings.size(), r.findings.size());
+    for (size_t i = 0; i < r.findings.size(); ++i) {
+      EXPECT_EQ(again.findings[i].kind, r.findings[i].kind);
+      EXPECT_EQ(again.findings[i].first_layer, r.findings[i].first_layer);
+      EXPECT_EQ(again.findings[i].x0, r.findings[i].x0);
+      EXPECT_EQ(again.findings[i].y1, r.findings[i].y1);
+    }
+  }
+}
+
+TEST_F(PlateJobTest, RequiredPrintableRefusesATrapAndACupNamingThemAndWritesNothing) {
+  CheckedPlate plate;
+  plate.options.require_printable = true;
+  for (const char* name : {"p.sl1", "p.goo", "p"}) {
+    SCOPED_TRACE(name);
+    const std::string message = test::error_of([&] { export_plate(plate.placed, plate.options, display(800, 600), path(name)); });
+    EXPECT_NE(message.find("not printable"), std::string::npos) << message;
+    EXPECT_NE(message.find("resin trap in hollow, layers 20-39, at x -20.00 y 0.00 mm (72 mm3)"), std::string::npos) << message;
+    EXPECT_NE(message.find("suction cup in cup, layers 20-59"), std::string::npos) << message;
+    EXPECT_TRUE(std::filesystem::is_empty(dir));
+  }
+  // The solid box alone is printable, and written.
+  const std::vector<Mesh> solid{plate.placed[1]};
+  plate.options.names = {"solid"};
+  const PlateJobStats st = export_plate(solid, plate.options, display(800, 600), path("s.goo"));
+  EXPECT_FALSE(blocks_printing(st.printability));
+  EXPECT_TRUE(std::filesystem::exists(path("s.goo")));
+}
+
 TEST_F(PlateJobTest, CancellingAPlateLeavesNothing) {
   test::FamilyOptions o = small_arch();
   const Mesh base = test::make_family_base(o);

@@ -86,6 +86,38 @@ std::vector<uint32_t> torus_grid_faces(int rows, int cols) {
   return F;
 }
 
+namespace {
+
+// a's faces and vertices, then b's (turned inside out when inverted).
+void append_mesh(Mesh& a, const Mesh& b, bool inverted = false) {
+  const uint32_t base = uint32_t(a.vertices());
+  a.V.insert(a.V.end(), b.V.begin(), b.V.end());
+  for (size_t f = 0; f < b.faces(); ++f) {
+    const uint32_t* t = &b.F[3 * f];
+    if (inverted)
+      a.F.insert(a.F.end(), {base + t[0], base + t[2], base + t[1]});
+    else
+      a.F.insert(a.F.end(), {base + t[0], base + t[1], base + t[2]});
+  }
+}
+
+}  // namespace
+
+Mesh make_hollow_box(double x0, double y0, double z0, double x1, double y1, double z1, double wall) {
+  Mesh m = make_box(x0, y0, z0, x1, y1, z1);
+  append_mesh(m, make_box(x0 + wall, y0 + wall, z0 + wall, x1 - wall, y1 - wall, z1 - wall), true);
+  return m;
+}
+
+Mesh make_cup(double x0, double y0, double z0, double x1, double y1, double z1, double wall) {
+  Mesh m = make_box(x0, y0, z0, x1, y1, z0 + wall);
+  append_mesh(m, make_box(x0, y0, z0, x0 + wall, y1, z1));
+  append_mesh(m, make_box(x1 - wall, y0, z0, x1, y1, z1));
+  append_mesh(m, make_box(x0, y0, z0, x1, y0 + wall, z1));
+  append_mesh(m, make_box(x0, y1 - wall, z0, x1, y1, z1));
+  return m;
+}
+
 Mesh make_sphere(double radius, int rings, int segments) {
   Mesh mesh;
   mesh.F = pole_grid_faces(rings, segments);

@@ -13,6 +13,13 @@ namespace slicereuse::test {
 // Axis-aligned box [x0,x1]x[y0,y1]x[z0,z1], each side split into n x n quads (2 triangles each),
 // corners and edges shared: 6n^2+2 vertices, 12n^2 faces.
 Mesh make_box(double x0, double y0, double z0, double x1, double y1, double z1, int n = 1);
+// Printability's test parts, both [x0,x1]x[y0,y1]x[z0,z1] with walls `wall` thick:
+// make_hollow_box: a closed box around a sealed cavity (a second box turned inside out, so the
+//   nonzero rule leaves it empty): a resin trap;
+// make_cup: a floor and four walls (boxes overlapping at the corners, filled by the nonzero rule
+//   as one), open at the top: a suction cup as it prints, mouth away from the plate.
+Mesh make_hollow_box(double x0, double y0, double z0, double x1, double y1, double z1, double wall);
+Mesh make_cup(double x0, double y0, double z0, double x1, double y1, double z1, double wall);
 // UV sphere centred at the origin with `rings` latitude bands (rings >= 2) and `segments`
 // longitudes (>= 3); the poles (0,0,+-radius) are single vertices: 2 + (rings-1)*segments
 // vertices, 2*segments*(rings-1) faces.

@@ -1,6 +1,7 @@
 #include "slicereuse/plates/plate_job.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -354,6 +355,63 @@ std::vector<size_t> plate_ranges(const std::vector<PlateMember>& members, size_t
   return layer_chunks(points, budget, kPointBytes);
 }
 
+// The checks of a plate's masks (export_masks.h): the report into st, each finding placed on
+// the plate by its member's footprint, and, when required, the plate refused before it is written.
+struct PlateChecks {
+  PlateChecks(const std::vector<PlateMember>& members, size_t count, const PlateJobOptions& o,
+              const PrinterProfile& profile, PlateJobStats& st) {
+    if (!o.check_printability && !o.require_printable) return;
+    // Each member's footprint: a box in x-y of its mesh and its supports'.
+    std::vector<std::array<double, 4>> boxes(count, {INFINITY, INFINITY, -INFINITY, -INFINITY});
+    for (const PlateMember& p : members) {
+      std::array<double, 4>& b = boxes[p.owner];
+      const std::vector<double>& V = p.mesh->V;
+      for (size_t v = 0; v < V.size(); v += 3)
+        b = {std::min(b[0], V[v]), std::min(b[1], V[v + 1]), std::max(b[2], V[v]), std::max(b[3], V[v + 1])};
+    }
+    const MaskImageLayout layout = mask_image_layout(profile);
+    std::vector<std::string> names = o.names;
+    for (size_t i = names.size(); i < count; ++i) names.push_back(format("member %zu", i + 1));
+    checks.done = [&st, &o, boxes, layout, names](PrintabilityReport report) {
+      st.checked = true;
+      st.finding_places.clear();
+      std::string refused;
+      for (const Finding& f : report.findings) {
+        FindingPlace place;
+        double xy[2];
+        plate_point_at_pixel(layout, 0.5 * (f.x0 + f.x1), 0.5 * (f.y0 + f.y1), xy);
+        place.x_mm = xy[0];
+        place.y_mm = xy[1];
+        double nearest = INFINITY;
+        for (size_t i = 0; i < boxes.size(); ++i) {
+          const auto& b = boxes[i];
+          const double dx = std::max({b[0] - xy[0], xy[0] - b[2], 0.0});
+          const double dy = std::max({b[1] - xy[1], xy[1] - b[3], 0.0});
+          if (dx * dx + dy * dy < nearest) {
+            nearest = dx * dx + dy * dy;
+            place.member = i;
+          }
+        }
+        st.finding_places.push_back(place);
+        const bool blocks = f.kind == FindingKind::Island || f.kind == FindingKind::ResinTrap ||
+                            f.kind == FindingKind::SuctionCup;
+        if (o.require_printable && blocks) {
+          std::string kind = finding_kind_name(f.kind);
+          std::replace(kind.begin(), kind.end(), '_', ' ');
+          refused += format("%s%s in %s, layers %zu-%zu, at x %.2f y %.2f mm (%.3g %s)", refused.empty() ? "" : "; ",
+                            kind.c_str(), names[place.member].c_str(), f.first_layer, f.last_layer, xy[0] + 0.0,
+                            xy[1] + 0.0, f.kind == FindingKind::Island ? f.area_mm2 : f.volume_mm3,
+                            f.kind == FindingKind::Island ? "mm2" : "mm3");
+        }
+      }
+      st.printability = std::move(report);
+      if (!refused.empty()) throw Error("not printable, so not written: " + refused);
+    };
+  }
+  const MaskChecks* get() const { return checks.done ? &checks : nullptr; }
+  MaskChecks checks;
+};
+
 }  // namespace
 
 PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOptions& o, const PrinterProfile& profile,
@@ -371,6 +429,7 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
   }
   st.layers = L;
   const uint64_t budget = o.whole_stack ? 0 : range_budget(o);
+  const PlateChecks checks(members, placed.size(), o, profile, st);
 
   if (o.encoding && !o.whole_stack) {
     // Made where drawn when the layers to slice directly fit in the budget (else in ranges).
@@ -390,7 +449,7 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
                                              compensate_first_layer(parts, part_owners(members, 0, 1), profile,
                                                                     frame.plane(0), frame.bottom(0), frame.thickness);
                                          }},
-                              profile, output_path, sub_progress(progress, share, 1));
+                              profile, output_path, sub_progress(progress, share, 1), checks.get());
       made.stats(st);
       return st;
     }
@@ -413,8 +472,12 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
                                                 frame.plane(0), frame.bottom(0), frame.thickness);
                        return parts;
                      }};
-  st.masks = export_masks(chunks, profile, output_path, progress);
+  st.masks = export_masks(chunks, profile, output_path, progress, checks.get());
   return st;
+}
+
+bool blocks_printing(const PrintabilityReport& r) {
+  return r.count(FindingKind::Island) + r.count(FindingKind::ResinTrap) + r.count(FindingKind::SuctionCup) > 0;
 }
 
 }  // namespace slicereuse

@@ -76,7 +76,7 @@ struct LayerChecker::State {
   size_t layers = 0;
   int width = 0, rows = 0;
   // The layer below: its image and runs.
-  MaskImage below;
+  MaskRuns below;
   LevelRuns below_nonzero, below_128, below_support;
   AirRegions air;
   std::optional<Finding> touching;  // touching bounds still growing
@@ -159,9 +159,9 @@ struct LayerChecker::State {
   }
 
   // Islands and overhangs of a layer above layer 0.
-  void check_islands_and_overhangs(const MaskImage& image, const LevelRuns& nonzero, const LevelRuns& at_least_128,
+  void check_islands_and_overhangs(const MaskRuns& mask, const LevelRuns& nonzero, const LevelRuns& at_least_128,
                                    size_t layer) {
-    const LevelRuns overhang = overhang_pixels({&image, &nonzero, &at_least_128}, {&below, &below_nonzero, &below_128});
+    const LevelRuns overhang = overhang_pixels({&mask, &nonzero, &at_least_128}, {&below, &below_nonzero, &below_128});
     const RunLabels overhang_labels = label_runs(overhang, true);  // contours, as UVtools finds them
     for (const Region& r : regions_of(overhang, overhang_labels)) {
       if (r.pixels < kOverhangMinPixels) continue;
@@ -170,9 +170,9 @@ struct LayerChecker::State {
       findings.push_back(f);
     }
 
-    const LevelRuns lit = runs_at_least(image, nonzero, kIslandLit);
+    const LevelRuns lit = runs_at_least(mask, kIslandLit);
     const RunLabels labels = label_runs(lit, false);  // UVtools: AllowDiagonalBonds false
-    const LevelRuns points = runs_at_least(image, nonzero, kIslandPointLevel);
+    const LevelRuns points = runs_at_least(mask, kIslandPointLevel);
     const std::vector<Region> regions = regions_of(lit, labels);
     const std::vector<uint64_t> point_pixels = pixels_inside(points, lit, labels);
     const std::vector<uint64_t> supported = pixels_inside(intersect_runs(points, below_support), lit, labels);
@@ -203,7 +203,9 @@ LayerChecker::LayerChecker(double pixel_x_mm, double pixel_y_mm, double layer_he
 
 LayerChecker::~LayerChecker() = default;
 
-void LayerChecker::add_layer(MaskImage layer) {
+void LayerChecker::add_layer(const MaskImage& layer) { add_layer(mask_runs_of(layer)); }
+
+void LayerChecker::add_layer(MaskRuns layer) {
   State& s = *state_;
   const size_t k = s.layers;
   if (k == 0) {
@@ -213,13 +215,13 @@ void LayerChecker::add_layer(MaskImage layer) {
     throw Error(format("printability check: layer %zu is %d x %d pixels, layer 0 is %d x %d", k, layer.width,
                        layer.height, s.width, s.rows));
   }
-  LevelRuns nonzero = nonzero_runs(layer);
-  LevelRuns at_least_128 = runs_at_least(layer, nonzero, 128);
-  s.check_touching(runs_at_least(layer, nonzero, kTouchLevel), k);
+  LevelRuns nonzero = runs_at_least(layer, 1);
+  LevelRuns at_least_128 = runs_at_least(layer, 128);
+  s.check_touching(runs_at_least(layer, kTouchLevel), k);
   if (k > 0) s.check_islands_and_overhangs(layer, nonzero, at_least_128, k);
-  s.air.add_layer(complement_runs(runs_at_least(layer, nonzero, kTrapSolid)), k);
+  s.air.add_layer(complement_runs(runs_at_least(layer, kTrapSolid)), k);
   s.add_air_findings(s.air.take_closed());
-  s.below_support = runs_at_least(layer, nonzero, kSupportLevel);
+  s.below_support = runs_at_least(layer, kSupportLevel);
   s.below_nonzero = std::move(nonzero);
   s.below_128 = std::move(at_least_128);
   s.below = std::move(layer);

@@ -29,8 +29,12 @@ uint64_t LevelRuns::pixels() const {
   return n;
 }
 
-LevelRuns nonzero_runs(const MaskImage& image) {
-  LevelRuns r = empty_like(image.width, image.height);
+MaskRuns mask_runs_of(const MaskImage& image) {
+  MaskRuns r;
+  r.width = image.width;
+  r.height = image.height;
+  r.row_begin.reserve(size_t(image.height) + 1);
+  r.row_begin.push_back(0);
   const int w = image.width;
   for (int y = 0; y < image.height; ++y) {
     const uint8_t* row = image.pixels.data() + size_t(y) * size_t(w);
@@ -42,35 +46,33 @@ LevelRuns nonzero_runs(const MaskImage& image) {
         x += 8;
         continue;
       }
-      if (row[x] == 0) {
+      const uint8_t level = row[x];
+      if (level == 0) {
         ++x;
         continue;
       }
       const int lo = x;
-      while (x < w && row[x] != 0) ++x;
-      add_run(r, lo, x);
+      while (x < w && row[x] == level) ++x;
+      r.columns.push_back(uint16_t(lo));
+      r.columns.push_back(uint16_t(x));
+      r.levels.push_back(level);
     }
-    r.row_begin.push_back(r.runs());
+    r.row_begin.push_back(uint32_t(r.levels.size()));
   }
   return r;
 }
 
-LevelRuns runs_at_least(const MaskImage& image, const LevelRuns& nonzero, uint8_t level) {
-  LevelRuns r = empty_like(image.width, image.height);
-  for (int y = 0; y < image.height; ++y) {
-    const uint8_t* row = image.pixels.data() + size_t(y) * size_t(image.width);
-    for (uint32_t i = nonzero.row_begin[size_t(y)]; i < nonzero.row_begin[size_t(y) + 1]; ++i) {
-      int x = nonzero.lo[i];
-      const int end = nonzero.hi[i];
-      while (x < end) {
-        if (row[x] < level) {
-          ++x;
-          continue;
-        }
-        const int lo = x;
-        while (x < end && row[x] >= level) ++x;
-        add_run(r, lo, x);
-      }
+LevelRuns runs_at_least(const MaskRuns& mask, uint8_t level) {
+  LevelRuns r = empty_like(mask.width, mask.height);
+  for (int y = 0; y < mask.height; ++y) {
+    const uint32_t row = r.runs();
+    for (uint32_t i = mask.row_begin[size_t(y)]; i < mask.row_begin[size_t(y) + 1]; ++i) {
+      if (mask.levels[i] < level) continue;
+      const uint16_t lo = mask.columns[2 * size_t(i)], hi = mask.columns[2 * size_t(i) + 1];
+      if (r.runs() > row && r.hi.back() == lo)
+        r.hi.back() = hi;  // runs of different levels side by side: one run here
+      else
+        add_run(r, lo, hi);
     }
     r.row_begin.push_back(r.runs());
   }

@@ -3,9 +3,10 @@
 // runs are [lo[i], hi[i]) for i in [row_begin[r], row_begin[r+1]), increasing and disjoint.
 // The checks work on these runs rather than on pixels: a plate's layer is mostly unlit.
 //
-// nonzero_runs: an image -> the runs of its pixels > 0; it skips unlit pixels eight at a time.
-// runs_at_least: the runs of pixels >= level, found only inside the given nonzero runs (so in
-//   time proportional to the lit pixels).
+// mask_runs_of: an image -> its runs of equal non-zero levels (mask_png.h's MaskRuns, what the
+//   rasterizer gives); it skips unlit pixels eight at a time.
+// runs_at_least: a mask's runs -> the runs of its pixels >= level, in time proportional to the
+//   mask's runs.
 // complement_runs: the runs of the pixels in no run of runs (same width and height).
 // subtract_runs: the pixels of a not in b; intersect_runs: the pixels in both.
 // label_runs: runs -> the connected component of each run (0..count-1, in order of first run),
@@ -30,8 +31,8 @@ struct LevelRuns {
   uint64_t pixels() const;
 };
 
-LevelRuns nonzero_runs(const MaskImage& image);
-LevelRuns runs_at_least(const MaskImage& image, const LevelRuns& nonzero, uint8_t level);
+MaskRuns mask_runs_of(const MaskImage& image);
+LevelRuns runs_at_least(const MaskRuns& mask, uint8_t level);
 LevelRuns complement_runs(const LevelRuns& runs);
 LevelRuns subtract_runs(const LevelRuns& a, const LevelRuns& b);
 LevelRuns intersect_runs(const LevelRuns& a, const LevelRuns& b);

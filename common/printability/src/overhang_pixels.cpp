@@ -25,32 +25,51 @@ struct Box {
   bool contains(int x, int y) const { return x >= x0 && x < x1 && y >= y0 && y < y1; }
 };
 
+// The level of row y's pixel x in mask, walking the row's runs forwards from i (kept between
+// calls with increasing x), and the first column past x where it may change.
+struct RowLevels {
+  const MaskRuns& mask;
+  uint32_t i, end;
+  RowLevels(const MaskRuns& m, int y) : mask(m), i(m.row_begin[size_t(y)]), end(m.row_begin[size_t(y) + 1]) {}
+  uint8_t at(int x, int& next) {
+    while (i < end && mask.columns[2 * size_t(i) + 1] <= x) ++i;
+    if (i == end) return 0;  // next unchanged: nothing lit further on
+    const int lo = mask.columns[2 * size_t(i)];
+    if (x < lo) {
+      next = std::min(next, lo);
+      return 0;
+    }
+    next = std::min(next, int(mask.columns[2 * size_t(i) + 1]));
+    return mask.levels[i];
+  }
+};
+
 }  // namespace
 
 LevelRuns overhang_pixels(const LayerRuns& layer, const LayerRuns& below) {
-  const MaskImage& img = *layer.image;
-  const MaskImage& under = *below.image;
+  const MaskRuns& mask = *layer.mask;
   // Brighter by more than 127 needs >= 128 here and < 128 below; the levels decide the rest.
   const LevelRuns candidates = subtract_runs(*layer.at_least_128, *below.at_least_128);
   LevelRuns brighter;
-  brighter.width = img.width;
-  brighter.height = img.height;
+  brighter.width = mask.width;
+  brighter.height = mask.height;
   brighter.row_begin.push_back(0);
-  for (int y = 0; y < img.height; ++y) {
-    const size_t row = size_t(y) * size_t(img.width);
+  for (int y = 0; y < mask.height; ++y) {
+    RowLevels here(mask, y), under(*below.mask, y);
+    const uint32_t row = brighter.runs();
     for (uint32_t i = candidates.row_begin[size_t(y)]; i < candidates.row_begin[size_t(y) + 1]; ++i) {
       for (int x = candidates.lo[i]; x < candidates.hi[i];) {
-        const auto brighter_at = [&](int c) {
-          return img.pixels[row + size_t(c)] - under.pixels[row + size_t(c)] > kDifferenceThreshold;
-        };
-        if (!brighter_at(x)) {
-          ++x;
-          continue;
+        int next = candidates.hi[i];
+        const bool is_brighter = here.at(x, next) - under.at(x, next) > kDifferenceThreshold;
+        if (is_brighter) {
+          if (brighter.runs() > row && brighter.hi.back() == x) {
+            brighter.hi.back() = uint16_t(next);
+          } else {
+            brighter.lo.push_back(uint16_t(x));
+            brighter.hi.push_back(uint16_t(next));
+          }
         }
-        const int lo = x;
-        while (x < candidates.hi[i] && brighter_at(x)) ++x;
-        brighter.lo.push_back(uint16_t(lo));
-        brighter.hi.push_back(uint16_t(x));
+        x = next;
       }
     }
     brighter.row_begin.push_back(brighter.runs());
@@ -61,10 +80,10 @@ LevelRuns overhang_pixels(const LayerRuns& layer, const LayerRuns& below) {
   // Only a pixel whose row has 40 brighter pixels on either side (or the crop's border, which
   // does not erode) can survive: most layers' brighter pixels are thin rims, and end here.
   LevelRuns core;
-  core.width = img.width;
-  core.height = img.height;
+  core.width = mask.width;
+  core.height = mask.height;
   core.row_begin.push_back(0);
-  for (int y = 0; y < img.height; ++y) {
+  for (int y = 0; y < mask.height; ++y) {
     for (uint32_t i = brighter.row_begin[size_t(y)]; i < brighter.row_begin[size_t(y) + 1]; ++i) {
       const int lo = brighter.lo[i] == crop.x0 ? brighter.lo[i] : brighter.lo[i] + kErodeIterations;
       const int hi = brighter.hi[i] == crop.x1 ? brighter.hi[i] : brighter.hi[i] - kErodeIterations;
@@ -75,9 +94,9 @@ LevelRuns overhang_pixels(const LayerRuns& layer, const LayerRuns& below) {
     core.row_begin.push_back(core.runs());
   }
   LevelRuns kept;
-  kept.width = img.width;
-  kept.height = img.height;
-  kept.row_begin.assign(size_t(img.height) + 1, 0);
+  kept.width = mask.width;
+  kept.height = mask.height;
+  kept.row_begin.assign(size_t(mask.height) + 1, 0);
   Box found;
   found.add(core);
   if (found.empty()) return kept;
@@ -87,7 +106,7 @@ LevelRuns overhang_pixels(const LayerRuns& layer, const LayerRuns& below) {
   // passes give it exactly in a rectangle.
   const int reach = kErodeIterations + 1;
   const int x0 = std::max(found.x0 - reach, 0), y0 = std::max(found.y0 - reach, 0);
-  const int x1 = std::min(found.x1 + reach, img.width), y1 = std::min(found.y1 + reach, img.height);
+  const int x1 = std::min(found.x1 + reach, mask.width), y1 = std::min(found.y1 + reach, mask.height);
   const int w = x1 - x0, h = y1 - y0;
   constexpr int kFar = 1 << 29;
   std::vector<int> dist(size_t(w) * size_t(h));
@@ -115,7 +134,7 @@ LevelRuns overhang_pixels(const LayerRuns& layer, const LayerRuns& below) {
   }
   // Distances inside the window are exact within 40 of the core only: survivors come from it.
   kept.row_begin.assign(1, 0);
-  for (int y = 0; y < img.height; ++y) {
+  for (int y = 0; y < mask.height; ++y) {
     if (y >= y0 && y < y1) {
       const int* d = dist.data() + size_t(y - y0) * size_t(w);
       for (uint32_t i = core.row_begin[size_t(y)]; i < core.row_begin[size_t(y) + 1]; ++i) {

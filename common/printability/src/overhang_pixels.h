@@ -5,7 +5,8 @@
 // within L1 distance 40 is one too. Erosion works inside the union of the two layers' bounding
 // boxes (UVtools crops both to it and reflects at its border, which never erodes: a pixel
 // mirrored across the border is farther than the pixel it mirrors).
-// In: both images (same size) with their runs of pixels > 0 and >= 128; out: runs (level_runs.h).
+// In: both masks as runs of levels (same size) with their runs of pixels > 0 and >= 128; out:
+// runs (level_runs.h).
 // Time: the lit runs, plus a distance transform over the box of the pixels with 40 brighter
 // pixels on either side in their row (and 41 pixels around it): none where the layer only
 // shrinks, repeats or widens by thin rims the layer below.
@@ -15,7 +16,7 @@
 namespace slicereuse {
 
 struct LayerRuns {
-  const MaskImage* image = nullptr;
+  const MaskRuns* mask = nullptr;
   const LevelRuns* nonzero = nullptr;
   const LevelRuns* at_least_128 = nullptr;
 };

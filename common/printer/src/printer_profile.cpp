@@ -79,4 +79,12 @@ MaskImageLayout mask_image_layout(const PrinterProfile& p) {
   return m;
 }
 
+void plate_point_at_pixel(const MaskImageLayout& m, double u, double v, double xy[2]) {
+  // The inverse of the rasterizers' map (pixel_map.h): u = w/2 + su (c + offset), v likewise.
+  const double su = (m.columns_descend ? -1000.0 : 1000.0) / m.column_um;
+  const double sv = (m.rows_ascend ? 1000.0 : -1000.0) / m.row_um;
+  xy[m.column_axis] = (u - 0.5 * m.width) / su - m.column_offset_mm;
+  xy[m.row_axis] = (v - 0.5 * m.height) / sv - m.row_offset_mm;
+}
+
 }  // namespace slicereuse

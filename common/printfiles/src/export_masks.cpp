@@ -28,7 +28,9 @@
 #include "thumbnail_png.h"
 #include "slicereuse/png/mask_png.h"
 #include "slicereuse/printer/print_formats.h"
+#include "slicereuse/printability/check_layers.h"
 #include "slicereuse/printer/printer_profile.h"
+#include "slicereuse/printfiles/check_print_file.h"
 #include "slicereuse/printfiles/export_masks.h"
 #include "slicereuse/raster/rasterize_layer.h"
 #include "slicereuse/raster/top_view.h"
@@ -231,18 +233,23 @@ class Stack {
   std::vector<size_t> part_begin_;
 };
 
-// The layer, layer `k` of the stack.
+// The layer, layer `k` of the stack, as a PNG of bits per pixel; mask, when not null (the
+// checks'), gets its mask as runs too (8 bits only: .sl1 archives).
 void encode_layer(const LayerView& layer, size_t k, const PrinterProfile& p, int bits, std::vector<uint8_t>& png,
-                  StackSummary& summary) {
+                  StackSummary& summary, MaskRuns* mask = nullptr) {
   summary.add(k, summarize_layer(layer, k));
-  if (bits == 8 && p.antialiasing) {  // anti-aliased: straight into the PNG
+  if (bits == 8 && p.antialiasing && !mask) {  // anti-aliased: straight into the PNG
     rasterize_layer_antialiased_png(layer, p, png);
     return;
   }
-  if (bits == 8) {  // binary 8-bit (.sl1): straight from the runs
+  if (bits == 8) {  // 8-bit (.sl1): from the runs, the same PNG
     thread_local MaskRuns runs;
-    rasterize_layer_runs(layer, p, runs);
-    encode_mask_png(runs, png);
+    MaskRuns& out = mask ? *mask : runs;
+    if (p.antialiasing)
+      rasterize_layer_antialiased_runs(layer, p, out);
+    else
+      rasterize_layer_runs(layer, p, out);
+    encode_mask_png(out, png);
     return;
   }
   thread_local Buffer<uint8_t> image;
@@ -273,7 +280,7 @@ void write_file(const std::string& path, const std::vector<uint8_t>& data) {
 // into an existing target) only when all are written; images of a former, longer export there
 // are removed then.
 void export_folder(Stack& stack, const PrinterProfile& p, const std::string& folder, StackSummary& summary,
-                   size_t& open_contours, const Progress& progress) {
+                   size_t& open_contours, const MaskChecks* checks, const Progress& progress) {
   StagedOutputs outputs;
   const std::string staged = outputs.folder(folder);
   for (size_t i = 0; i < stack.ranges(); ++i) {
@@ -290,6 +297,11 @@ void export_folder(Stack& stack, const PrinterProfile& p, const std::string& fol
         },
         stack.encoding_progress(i, progress), PHASE);
   }
+  // Written out of order: checked as read back, before it is committed.
+  if (checks) {
+    const MaskImageLayout layout = mask_image_layout(p);
+    checks->done(check_print_file(staged, layout.column_um / 1000, layout.row_um / 1000, stack.thickness(), ""));
+  }
   // Last chance to cancel: once committed, the export is done and no longer reports.
   report_progress(progress, 1, PHASE);
   outputs.commit();
@@ -301,20 +313,35 @@ void export_folder(Stack& stack, const PrinterProfile& p, const std::string& fol
 
 // Encodes layers on all cores, a window ahead of the archive writer (write_sl1, write_goo, write_ctb), which
 // asks for them in order: range by range, the next one made when the writer first asks for one
-// of its layers. encode(layer, k, bytes) makes the layer, layer k of the stack.
+// of its layers. encode(layer, k, bytes, mask) makes the layer, layer k of the stack; with checks,
+// mask is not null and receives its mask as runs, which go to the checker in order as the writer
+// takes each layer, and the report to checks->done once it takes the last, before it commits.
 class OrderedLayers {
  public:
-  using Encode = std::function<void(const LayerView& layer, size_t k, std::vector<uint8_t>& bytes)>;
+  using Encode = std::function<void(const LayerView& layer, size_t k, std::vector<uint8_t>& bytes, MaskRuns* mask)>;
 
-  OrderedLayers(Stack& stack, size_t& open_contours, const Progress& progress, Encode encode)
-      : stack_(stack), open_contours_(open_contours), progress_(progress), encode_(std::move(encode)) {}
+  OrderedLayers(Stack& stack, size_t& open_contours, const PrinterProfile& p, const MaskChecks* checks,
+                const Progress& progress, Encode encode)
+      : stack_(stack), open_contours_(open_contours), progress_(progress), encode_(std::move(encode)),
+        window_(size_t(16) * size_t(omp_get_max_threads())), checks_(checks) {
+    if (!checks) return;
+    const MaskImageLayout layout = mask_image_layout(p);
+    checker_ = std::make_unique<LayerChecker>(layout.column_um / 1000, layout.row_um / 1000, stack.thickness());
+    masks_.resize(window_);
+  }
 
   const std::vector<uint8_t>& operator()(size_t k) {
     if (!items_ || k >= stack_.end(range_)) next_range();
     const size_t local = k - stack_.begin(range_);
     if (local % 64 == 0)
       report_progress(range_progress_, double(local) / double(stack_.end(range_) - stack_.begin(range_)), PHASE);
-    return items_->get(local);
+    const std::vector<uint8_t>& bytes = items_->get(local);
+    if (checker_ && k == checked_) {  // a writer may ask for a layer twice (libzip: its size, then its bytes)
+      // Item local's slot is not made again before the writer asks for item local + 1.
+      checker_->add_layer(std::move(masks_[local % window_]));
+      if (++checked_ == stack_.layers()) checks_->done(checker_->finish());
+    }
+    return bytes;
   }
 
  private:
@@ -324,18 +351,23 @@ class OrderedLayers {
     open_contours_ += stack_.open_range(range_, progress_);
     range_progress_ = stack_.encoding_progress(range_, progress_);
     const size_t first = stack_.begin(range_);
-    items_ = std::make_unique<OrderedParallel>(
-        stack_.end(range_) - first, size_t(16) * size_t(omp_get_max_threads()),
-        [this, first](size_t local, std::vector<uint8_t>& bytes) {
-          thread_local MadeLayer made;
-          encode_(stack_.layer(local, made), first + local, bytes);
-        });
+    items_ = std::make_unique<OrderedParallel>(stack_.end(range_) - first, window_,
+                                               [this, first](size_t local, std::vector<uint8_t>& bytes) {
+                                                 thread_local MadeLayer made;
+                                                 encode_(stack_.layer(local, made), first + local, bytes,
+                                                         checker_ ? &masks_[local % window_] : nullptr);
+                                               });
   }
 
   Stack& stack_;
   size_t& open_contours_;
   const Progress& progress_;
   const Encode encode_;
+  const size_t window_;
+  const MaskChecks* checks_;
+  std::unique_ptr<LayerChecker> checker_;
+  std::vector<MaskRuns> masks_;  // per slot of the window: its layer's mask, for the checker
+  size_t checked_ = 0;           // layers given to the checker
   Progress range_progress_;
   size_t range_ = 0;
   std::unique_ptr<OrderedParallel> items_;
@@ -345,11 +377,11 @@ class OrderedLayers {
 // (1-bit layers would import as empty). Each layer is also drawn into the top view the
 // thumbnails are made from.
 void export_sl1(Stack& stack, const PrinterProfile& p, const std::string& path, StackSummary& summary,
-                size_t& open_contours, const Progress& progress) {
+                size_t& open_contours, const MaskChecks* checks, const Progress& progress) {
   TopView top_view(p, stack.layers());
-  OrderedLayers encoder(stack, open_contours, progress,
-                        [&](const LayerView& layer, size_t k, std::vector<uint8_t>& png) {
-                          encode_layer(layer, k, p, 8, png, summary);
+  OrderedLayers encoder(stack, open_contours, p, checks, progress,
+                        [&](const LayerView& layer, size_t k, std::vector<uint8_t>& png, MaskRuns* mask) {
+                          encode_layer(layer, k, p, 8, png, summary, mask);
                           top_view.add(layer, k);
                         });
   write_sl1(path,
@@ -360,28 +392,29 @@ void export_sl1(Stack& stack, const PrinterProfile& p, const std::string& path, 
             std::ref(encoder));
 }
 
-// A layer of a file made from runs (.goo, .ctb): its mask as runs (the calling thread's), also
-// drawn into the top view the previews are made from.
+// A layer of a file made from runs (.goo, .ctb): its mask as runs (into mask, the checks', or the
+// calling thread's), also drawn into the top view the previews are made from.
 const MaskRuns& layer_runs(const LayerView& layer, size_t k, const PrinterProfile& p, StackSummary& summary,
-                           TopView& top_view) {
+                           TopView& top_view, MaskRuns* mask) {
   summary.add(k, summarize_layer(layer, k));
   thread_local MaskRuns runs;
+  MaskRuns& out = mask ? *mask : runs;
   if (p.antialiasing)
-    rasterize_layer_antialiased_runs(layer, p, runs);
+    rasterize_layer_antialiased_runs(layer, p, out);
   else
-    rasterize_layer_runs(layer, p, runs);
+    rasterize_layer_runs(layer, p, out);
   top_view.add(layer, k);
-  return runs;
+  return out;
 }
 
 // A .goo: each layer's record straight from its runs.
 void export_goo(Stack& stack, const PrinterProfile& p, const std::string& path, StackSummary& summary,
-                size_t& open_contours, const Progress& progress) {
+                size_t& open_contours, const MaskChecks* checks, const Progress& progress) {
   const GooJob job{p, stack.layers(), stack.thickness()};
   TopView top_view(p, stack.layers());
-  OrderedLayers encoder(stack, open_contours, progress,
-                        [&](const LayerView& layer, size_t k, std::vector<uint8_t>& record) {
-                          encode_goo_layer(job, k, layer_runs(layer, k, p, summary, top_view), record);
+  OrderedLayers encoder(stack, open_contours, p, checks, progress,
+                        [&](const LayerView& layer, size_t k, std::vector<uint8_t>& record, MaskRuns* mask) {
+                          encode_goo_layer(job, k, layer_runs(layer, k, p, summary, top_view, mask), record);
                         });
   write_goo(path, job, std::ref(encoder), [&] {
     return GooSummary{summary.used_material_ml(stack.thickness()), rgb565_preview(top_view.finish(), kGooSmallPreview, kGooSmallPreview),
@@ -391,12 +424,12 @@ void export_goo(Stack& stack, const PrinterProfile& p, const std::string& path, 
 
 // A .ctb: each layer's data straight from its runs, unencrypted.
 void export_ctb(Stack& stack, const PrinterProfile& p, const std::string& path, StackSummary& summary,
-                size_t& open_contours, const Progress& progress) {
+                size_t& open_contours, const MaskChecks* checks, const Progress& progress) {
   const CtbJob job{p, stack.layers(), stack.thickness()};
   TopView top_view(p, stack.layers());
-  OrderedLayers encoder(stack, open_contours, progress,
-                        [&](const LayerView& layer, size_t k, std::vector<uint8_t>& data) {
-                          encode_ctb_layer(job, k, layer_runs(layer, k, p, summary, top_view), data);
+  OrderedLayers encoder(stack, open_contours, p, checks, progress,
+                        [&](const LayerView& layer, size_t k, std::vector<uint8_t>& data, MaskRuns* mask) {
+                          encode_ctb_layer(job, k, layer_runs(layer, k, p, summary, top_view, mask), data);
                         });
   write_ctb(path, job, std::ref(encoder), [&] {
     return CtbSummary{summary.used_material_ml(stack.thickness()),
@@ -408,12 +441,12 @@ void export_ctb(Stack& stack, const PrinterProfile& p, const std::string& path, 
 // An Anycubic Photon Workshop file: each layer's entry and pw0Img data straight from its runs,
 // which also go into the previews.
 void export_photon_workshop(Stack& stack, const PrinterProfile& p, const std::string& path, StackSummary& summary,
-                            size_t& open_contours, const Progress& progress) {
+                            size_t& open_contours, const MaskChecks* checks, const Progress& progress) {
   const PhotonWorkshopJob job{p, stack.layers(), stack.thickness()};
   TopView top_view(p, stack.layers());
-  OrderedLayers encoder(stack, open_contours, progress,
-                        [&](const LayerView& layer, size_t k, std::vector<uint8_t>& record) {
-                          encode_pw0_layer(job, k, layer_runs(layer, k, p, summary, top_view), record);
+  OrderedLayers encoder(stack, open_contours, p, checks, progress,
+                        [&](const LayerView& layer, size_t k, std::vector<uint8_t>& record, MaskRuns* mask) {
+                          encode_pw0_layer(job, k, layer_runs(layer, k, p, summary, top_view, mask), record);
                         });
   write_photon_workshop(path, job, std::ref(encoder), [&] {
     MaskExportStats extent;  // the model's extent, moved onto the plate
@@ -431,7 +464,7 @@ void export_photon_workshop(Stack& stack, const PrinterProfile& p, const std::st
 }
 
 MaskExportStats export_stack(Stack& stack, const PrinterProfile& printer, const std::string& output_path,
-                             const Progress& progress) {
+                             const MaskChecks* checks, const Progress& progress) {
   const auto start = std::chrono::steady_clock::now();
   validate_printer_profile(printer);
   // The output's kind by its extension: one of print_formats(), else a folder.
@@ -444,15 +477,15 @@ MaskExportStats export_stack(Stack& stack, const PrinterProfile& printer, const 
   MaskExportStats stats;
   // ".sl1" and ".sl1s" are the same format (PrusaSlicer names the file after the printer).
   if (ext == ".sl1" || ext == ".sl1s") {
-    export_sl1(stack, profile, output_path, summary, stats.ignored_open_contours, progress);
+    export_sl1(stack, profile, output_path, summary, stats.ignored_open_contours, checks, progress);
   } else if (ext == ".goo") {
-    export_goo(stack, profile, output_path, summary, stats.ignored_open_contours, progress);
+    export_goo(stack, profile, output_path, summary, stats.ignored_open_contours, checks, progress);
   } else if (photon_workshop_kind(ext)) {
-    export_photon_workshop(stack, profile, output_path, summary, stats.ignored_open_contours, progress);
+    export_photon_workshop(stack, profile, output_path, summary, stats.ignored_open_contours, checks, progress);
   } else if (ext == ".ctb") {
-    export_ctb(stack, profile, output_path, summary, stats.ignored_open_contours, progress);
+    export_ctb(stack, profile, output_path, summary, stats.ignored_open_contours, checks, progress);
   } else {
-    export_folder(stack, profile, output_path, summary, stats.ignored_open_contours, progress);
+    export_folder(stack, profile, output_path, summary, stats.ignored_open_contours, checks, progress);
   }
   stats.ignored_open_contours += stack.made_open_contours();
   stats.layers = stack.layers();
@@ -463,23 +496,23 @@ MaskExportStats export_stack(Stack& stack, const PrinterProfile& printer, const 
 
 }  // namespace
 
-MaskExportStats export_masks(const Slices& s, const PrinterProfile& profile,
-                             const std::string& output_path, const Progress& progress) {
+MaskExportStats export_masks(const Slices& s, const PrinterProfile& profile, const std::string& output_path,
+                             const Progress& progress, const MaskChecks* checks) {
   Stack::check(s);
   Stack stack(s);
-  return export_stack(stack, profile, output_path, progress);
+  return export_stack(stack, profile, output_path, checks, progress);
 }
 
-MaskExportStats export_masks(const SliceChunks& chunks, const PrinterProfile& profile,
-                             const std::string& output_path, const Progress& progress) {
+MaskExportStats export_masks(const SliceChunks& chunks, const PrinterProfile& profile, const std::string& output_path,
+                             const Progress& progress, const MaskChecks* checks) {
   Stack stack(chunks);
-  return export_stack(stack, profile, output_path, progress);
+  return export_stack(stack, profile, output_path, checks, progress);
 }
 
 MaskExportStats export_masks(const LayerMaker& maker, const PrinterProfile& profile, const std::string& output_path,
-                             const Progress& progress) {
+                             const Progress& progress, const MaskChecks* checks) {
   Stack stack(maker);
-  return export_stack(stack, profile, output_path, progress);
+  return export_stack(stack, profile, output_path, checks, progress);
 }
 
 }  // namespace slicereuse

@@ -45,6 +45,7 @@
 #include <vector>
 
 #include "slicereuse/mesh/mesh.h"
+#include "slicereuse/printability/printability_report.h"
 #include "slicereuse/printfiles/export_masks.h"
 #include "slicereuse/slicing/slice_layers.h"
 #include "slicereuse/slicing/slices.h"
@@ -77,6 +78,20 @@ struct PlateJobOptions {
   std::vector<const Mesh*> supports;
   // Plate layers under z_start (support_layers_below, support_tree.h): only supports are there.
   size_t layers_below = 0;
+  // Printability (check_layers.h, UVtools' checks) checked on the masks as they are written:
+  // stats.printability and each finding's member. With require_printable, a plate holding an
+  // island, a resin trap or a suction cup is refused: Error naming each such finding, its member
+  // and place, and nothing is written.
+  bool check_printability = false;
+  bool require_printable = false;
+};
+
+// Where a finding of the plate's printability lies: the member (an index into placed) whose
+// footprint, its supports' included, holds the finding's centre, or lies nearest to it, and that
+// centre on the build plate (mm).
+struct FindingPlace {
+  size_t member = 0;
+  double x_mm = 0, y_mm = 0;
 };
 
 struct PlateJobStats {
@@ -94,7 +109,15 @@ struct PlateJobStats {
   // for every member of a plate sliced directly by choice).
   std::vector<std::string> direct_reasons;
   MaskExportStats masks;
+  // With options.check_printability: the report, and each finding's place (one per finding).
+  bool checked = false;
+  PrintabilityReport printability;
+  std::vector<FindingPlace> finding_places;
 };
+
+// Whether a report holds what makes a print fail (an island, a resin trap or a suction cup);
+// overhangs and parts near the display's edge are warnings.
+bool blocks_printing(const PrintabilityReport& report);
 
 PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOptions& options,
                            const PrinterProfile& profile, const std::string& output_path,

@@ -1,8 +1,8 @@
 #pragma once
 // LayerChecker: UVtools' printability checks on a stack of masks fed bottom to top.
 //
-// In: the stack's layers in order (layer 0 on the plate), each a grey MaskImage of the same size
-// (0 unlit .. 255 fully lit), the pixel size in mm (x, y) and the layer height in mm.
+// In: the stack's layers in order (layer 0 on the plate), each a grey MaskImage or MaskRuns of the
+// same size (0 unlit .. 255 fully lit), the pixel size in mm (x, y) and the layer height in mm.
 // Out (finish(), called once after the last layer): a PrintabilityReport (printability_report.h) with, under UVtools' default
 // settings (IssueManager, LayerIssueConfiguration):
 //   - islands: a 4-connected region of pixels > 1 of a layer above layer 0 whose pixels >= 10
@@ -40,7 +40,10 @@ class LayerChecker {
   LayerChecker(const LayerChecker&) = delete;
   LayerChecker& operator=(const LayerChecker&) = delete;
 
-  void add_layer(MaskImage layer);
+  // A layer as an image, or as runs of levels (mask_png.h's MaskRuns, what the rasterizer and
+  // print files' decoders give: checked in time proportional to its runs, not its pixels).
+  void add_layer(const MaskImage& layer);
+  void add_layer(MaskRuns layer);
   PrintabilityReport finish();
 
  private:

@@ -91,6 +91,10 @@ struct MaskImageLayout {
 
 MaskImageLayout mask_image_layout(const PrinterProfile& profile);
 
+// The build-plate point (xy, mm) at continuous coordinates of such an image: u along its columns,
+// v down its rows, pixel (c, r) being [c, c + 1] x [r, r + 1]; where something seen on a mask lies.
+void plate_point_at_pixel(const MaskImageLayout& m, double u, double v, double xy[2]);
+
 // Largest display side, in pixels, accepted by the core and by the mask filters' parameters.
 constexpr int kMaxDisplayPixels = 65535;
 

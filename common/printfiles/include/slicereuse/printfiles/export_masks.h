@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "slicereuse/printability/printability_report.h"
 #include "slicereuse/printer/printer_profile.h"
 #include "slicereuse/slicing/slices.h"
 #include "slicereuse/util/progress.h"
@@ -23,6 +24,15 @@ struct MaskExportStats {
   double seconds = 0;
 };
 
+// Printability checked on the masks as they are written (check_layers.h, with the profile's pixel
+// size and the stack's layer thickness): every layer's mask, the levels the file holds, in
+// order, then done(report) after the last layer and before the file is committed, so that done
+// may refuse the file by throwing (nothing is written then). A PNG folder's layers, written out
+// of order, are checked as they are read back (check_print_file.h), before the folder appears.
+struct MaskChecks {
+  std::function<void(PrintabilityReport report)> done;
+};
+
 // Writes one PNG per layer as <folder>/<prefix>NNNNN.png, or, when output_path ends in .sl1 or
 // .sl1s (any case), a Prusa SL1/SL1S archive of the same PNGs plus config.ini and
 // prusaslicer.ini, or, when it ends in .goo, an Elegoo .goo file (goo_writer.h; a portrait
@@ -35,7 +45,7 @@ struct MaskExportStats {
 // nothing is left under the final name on failure. A point of a closed contour whose x or y is
 // not finite is refused (Error naming the point and layer).
 MaskExportStats export_masks(const Slices& s, const PrinterProfile& profile,
-                             const std::string& output_path, const Progress& progress = {});
+                             const std::string& output_path, const Progress& progress = {}, const MaskChecks* checks = nullptr);
 
 // Part of a range's layers: the range's layers [first, first + slices.layers()), counted from 0
 // within the range.
@@ -58,7 +68,7 @@ struct SliceChunks {
 
 // The same export of the stack the ranges make up, equal to exporting it whole.
 MaskExportStats export_masks(const SliceChunks& chunks, const PrinterProfile& profile,
-                             const std::string& output_path, const Progress& progress = {});
+                             const std::string& output_path, const Progress& progress = {}, const MaskChecks* checks = nullptr);
 
 // A stack made a layer at a time, where its mask is drawn: make(k, parts) puts layer k's
 // contours into parts, as parts of one layer each (first 0; a layer's contours are those of every
@@ -74,6 +84,6 @@ struct LayerMaker {
 
 // The same export of the stack the maker makes, equal to exporting it whole.
 MaskExportStats export_masks(const LayerMaker& maker, const PrinterProfile& profile, const std::string& output_path,
-                             const Progress& progress = {});
+                             const Progress& progress = {}, const MaskChecks* checks = nullptr);
 
 }  // namespace slicereuse
