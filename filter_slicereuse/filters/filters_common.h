@@ -94,6 +94,25 @@ ParamList<JobLayers> job_layer_params(const char* encoding_tooltip);
 // strict, and a quarter of the available memory per range of layers.
 PlateJobOptions plate_job_options(const JobLayers& p);
 
+// Whether a print or plate job checks its masks as it writes them (UVtools' checks,
+// check_layers.h; filters_job_checks.cpp), and whether it refuses a file holding an island, a
+// resin trap or a suction cup (nothing written). The same parameters in both filters.
+struct JobChecks {
+  bool check;
+  bool require_printable;
+};
+ParamList<JobChecks> job_check_params();
+void set_job_checks(const JobChecks& c, PlateJobOptions& o);
+// A checked plate's findings: logged (those that make a print fail, and a line of counts;
+// plate_label names the plate, or is empty for a print job), and counted into result under
+// islands, overhangs, resin_traps, suction_cups, touching_bounds and trapped_mm3 (summed with
+// what is there), and, with per_member, the same counts per member as <key>_<member name>.
+// Not checked: those totals are -1.
+void report_printability(Host& host, const char* filter, const std::string& plate_label, const PlateJobStats& st,
+                         const std::vector<std::string>& names, bool per_member, Result& result);
+// keys and the result keys report_printability adds (with "_*" for the members' when per_member).
+std::vector<std::string> with_printability_keys(std::vector<std::string> keys, bool per_member);
+
 // The supports' parameters (filters_job_supports.cpp), declared once for the support filters and
 // the jobs. How support points are placed: PrusaSlicer's critical angle, density (%) and minimal
 // distance; the options for a part raised (elevation > 0) or not.

@@ -24,6 +24,7 @@ struct PlateJobParams {
   std::vector<std::string> member_files;
   JobLayers layers;
   JobSupports supports;
+  JobChecks checks;
   double spacing_mm;
   double rotation_step_deg;
   std::string placements_file;
@@ -74,7 +75,8 @@ ParamList<PlateJobParams> plate_job_params() {
             job_layer_params("Encoding file written by Slice Mesh with Encoding for a member of the family: every "
                              "member's layers are transferred from it (exact). Empty: every member is sliced "
                              "directly."))
-      .include(&PlateJobParams::supports, job_support_params());
+      .include(&PlateJobParams::supports, job_support_params())
+      .include(&PlateJobParams::checks, job_check_params());
   add_arrangement(l);
   add_placements_output(l, nullptr,
                         "Also write the plates' placements, members and area used here (JSON). Empty (the default): "
@@ -203,6 +205,7 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
   const std::vector<const Mesh*>& members = plan.members;
 
   PlateJobOptions jo = plate_job_options(p.layers);
+  set_job_checks(p.checks, jo);
   jo.names = names;
   bool cached = false;
   std::shared_ptr<const CachedEncoding> entry;
@@ -268,6 +271,7 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
                     placed.size(), 100 * arrangement.area_used[k], st.layers, outputs.back().c_str(),
                     seconds_since(plate_start)));
     log_display_warning(host, "Make Plate Job", st.masks, profile);
+    report_printability(host, "Make Plate Job", format("plate %zu", first + k), st, plate_names, true, result);
   }
   if (!p.placements_output.empty())
     write_placements_file(p.placements_output,
@@ -410,15 +414,20 @@ FilterSpec plate_job_filter() {
       "the plate with each member's outline and name (<i>_layout.png</i>).</p>"
       "<p>With <i>supports</i>, each member gets its supports (points generated on it, or a source's "
       "transferred from a support-points file) before the arrangement, which keeps their footprint "
-      "apart too; they are sliced with the members, on the layers below them.</p>") +
+      "apart too; they are sliced with the members, on the layers below them.</p>"
+      "<p>Each plate's masks are checked as they are written, as UVtools checks a print file (see <i>Check "
+      "Printability</i>), the findings counted per member; with <i>require printable</i>, a plate holding an "
+      "island, a resin trap or a suction cup is refused and not written.</p>") +
       kReference;
   return typed_filter({FilterId::MakePlateJob, "Make Plate Job", "make_plate_job", description, Arity::None,
                        kLayerClass, false},
                       plate_job_params(), run_plate_job,
-                      {"plates", "members", "layers", "points", "transferred_layers", "resliced_layers",
-                       "direct_members", "encoding_cached", "arrange_seconds", "read_seconds", "slicing_seconds", "seconds",
-                       "support_seconds", "area_used_*", "output_*", "layout_*", "direct_reason_*",
-                       "sliced_directly_*", "support_points_*", "kept_*", "moved_*", "added_*", "dropped_*"});
+                      with_printability_keys(
+                          {"plates", "members", "layers", "points", "transferred_layers", "resliced_layers",
+                           "direct_members", "encoding_cached", "arrange_seconds", "read_seconds", "slicing_seconds",
+                           "seconds", "support_seconds", "area_used_*", "output_*", "layout_*", "direct_reason_*",
+                           "sliced_directly_*", "support_points_*", "kept_*", "moved_*", "added_*", "dropped_*"},
+                          true));
 }
 
 }  // namespace slicereuse::plugin

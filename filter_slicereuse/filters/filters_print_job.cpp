@@ -13,6 +13,7 @@ struct PrintJobParams {
   std::string mesh_file;
   JobLayers layers;
   JobSupports supports;
+  JobChecks checks;
   std::string contour_file;
   std::string output_path;
   PrinterSettings printer;
@@ -26,6 +27,7 @@ ParamList<PrintJobParams> print_job_params() {
                              "current mesh's layers are transferred from it (exact). Empty: slice the current mesh "
                              "directly."))
       .include(&PrintJobParams::supports, job_support_params())
+      .include(&PrintJobParams::checks, job_check_params())
       .file(&PrintJobParams::contour_file, ParamType::FileSave, "contour_file", "Contour file", "*.ctr *.srb", nullptr,
             "Also write the layers' contour points here (text .ctr unless the name ends in .srb). Empty (the "
             "default): no contour file.");
@@ -47,6 +49,7 @@ Result run_print_job(const PrintJobParams& p, Host& host) {
   const std::vector<Mesh> member{std::move(job.mesh)};
   const Progress progress = host.progress();
   PlateJobOptions o = plate_job_options(p.layers);
+  set_job_checks(p.checks, o);
   o.names = {p.mesh_file.empty() ? "the current mesh" : job.name};
   bool cached = false;
   std::shared_ptr<const CachedEncoding> entry;
@@ -107,6 +110,7 @@ Result run_print_job(const PrintJobParams& p, Host& host) {
                    {"seconds", seconds}};
   add_support_figures(sup, "", result);
   add_display_figures(st.masks, result);
+  report_printability(host, "Make Print Job", "", st, o.names, false, result);
   return result;
 }
 
@@ -131,18 +135,22 @@ FilterSpec print_job_filter() {
       "still available (a large part at a very fine layer), the mesh is sliced and "
       "its masks made a range of layers at a time, so memory stays bounded; the log "
       "says how many ranges.</p>"
+      "<p>The masks are checked as they are written, as UVtools checks a print file (islands, overhangs, resin "
+      "traps, suction cups, parts at the display's edges: see <i>Check Printability</i>); with <i>require "
+      "printable</i>, a file holding an island, a resin trap or a suction cup is refused and not written.</p>"
       "<p>With <i>supports</i>, the mesh gets support points (generated on it, or a source's "
       "transferred from a support-points file, certified and completed) and the supports built "
       "from them (as <i>Build Supports</i>); they are sliced with the mesh, on the layers below "
       "it.</p>") +
       kReference;
-  return typed_filter({FilterId::MakePrintJob, "Make Print Job", "make_print_job", description,
-                       Arity::None, kLayerClass, false},
+  return typed_filter({FilterId::MakePrintJob, "Make Print Job", "make_print_job", description, Arity::None,
+                       kLayerClass, false},
                       print_job_params(), run_print_job,
-                      with_display_keys({"layers", "points", "transferred_layers", "resliced_layers", "encoding_cached",
+                      with_printability_keys(with_display_keys({"layers", "points", "transferred_layers", "resliced_layers", "encoding_cached",
                                          "layer_ranges", "reused", "direct_reason", "output_path", "support_points", "kept",
                                          "moved", "added", "dropped", "read_seconds", "slicing_seconds", "support_seconds",
-                                         "masks_seconds", "seconds"}));
+                                         "masks_seconds", "seconds"}),
+                                             false));
 }
 
 }  // namespace slicereuse::plugin

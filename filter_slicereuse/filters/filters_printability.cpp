@@ -33,18 +33,6 @@ ParamList<PrintabilityParams> printability_params() {
   return l;
 }
 
-// A finding's centre on the build plate (mm): the image's pixel position mapped back through
-// the printer's display (orientation, mirrors, offsets), z from the plate.
-void plate_point(const MaskImageLayout& m, const Finding& f, std::vector<double>& xyz) {
-  const double u = 0.5 * (f.x0 + f.x1), v = 0.5 * (f.y0 + f.y1);
-  const double along_columns = (u - 0.5 * m.width) * m.column_um / 1000.0 * (m.columns_descend ? -1 : 1);
-  const double along_rows = (v - 0.5 * m.height) * m.row_um / 1000.0 * (m.rows_ascend ? 1 : -1);
-  double p[3] = {0, 0, f.center_mm[2]};
-  p[m.column_axis] = along_columns - m.column_offset_mm;
-  p[m.row_axis] = along_rows - m.row_offset_mm;
-  xyz.insert(xyz.end(), p, p + 3);
-}
-
 Result run_check_printability(const PrintabilityParams& p, Host& host) {
   const auto start = std::chrono::steady_clock::now();
   const MaskImageLayout layout = mask_image_layout(p.printer.profile());
@@ -56,7 +44,9 @@ Result run_check_printability(const PrintabilityParams& p, Host& host) {
   std::vector<double> xyz, normals;
   for (size_t i = 0; i < r.findings.size(); ++i) {
     const Finding& f = r.findings[i];
-    plate_point(layout, f, xyz);
+    double xy[2];
+    plate_point_at_pixel(layout, 0.5 * (f.x0 + f.x1), 0.5 * (f.y0 + f.y1), xy);
+    xyz.insert(xyz.end(), {xy[0], xy[1], f.center_mm[2]});
     normals.insert(normals.end(), {0.0, 0.0, 1.0});
     if (i >= kLoggedFindings) continue;
     const bool solid = f.kind == FindingKind::ResinTrap || f.kind == FindingKind::SuctionCup;

@@ -208,8 +208,11 @@ TEST_F(FiltersThroughAFakeHost, EveryFilterRunsAndReturnsEveryFigureItLogs) {
   std::set<std::string> job_keys = display;
   job_keys.insert({"layers", "points", "transferred_layers", "resliced_layers", "encoding_cached", "layer_ranges",
                    "reused", "direct_reason", "output_path", "support_points", "kept", "moved", "added", "dropped",
-                   "read_seconds", "slicing_seconds", "support_seconds", "masks_seconds", "seconds"});
+                   "read_seconds", "slicing_seconds", "support_seconds", "masks_seconds", "seconds", "islands",
+                   "overhangs", "resin_traps", "suction_cups", "touching_bounds", "trapped_mm3"});
   EXPECT_EQ(keys_of(job), job_keys);
+  // A sphere on the plate: every layer rests on the one below, nothing holds air.
+  for (const char* none : {"islands", "resin_traps", "suction_cups", "touching_bounds"}) EXPECT_EQ(count(job, none), 0);
   for (const char* none : {"support_points", "kept", "moved", "added", "dropped"}) EXPECT_EQ(count(job, none), 0);
   EXPECT_EQ(count(job, "transferred_layers"), int64_t(direct.layers()));
   EXPECT_EQ(count(job, "reused"), 1);
@@ -279,7 +282,11 @@ TEST_F(FiltersThroughAFakeHost, MakePlateJobPutsTheShownMeshesOnPlatesAndReadsIt
                                                    "resliced_layers", "direct_members", "encoding_cached",
                                                    "arrange_seconds", "read_seconds", "slicing_seconds",
                                                    "support_seconds", "seconds", "area_used_1", "output_1",
-                                                   "layout_1"}));
+                                                   "layout_1", "islands", "overhangs", "resin_traps", "suction_cups",
+                                                   "touching_bounds", "trapped_mm3", "islands_mesh0", "overhangs_mesh0",
+                                                   "resin_traps_mesh0", "suction_cups_mesh0", "touching_bounds_mesh0",
+                                                   "islands_mesh1", "overhangs_mesh1", "resin_traps_mesh1",
+                                                   "suction_cups_mesh1", "touching_bounds_mesh1"}));
   EXPECT_EQ(std::get<std::string>(plate.at("output_1")), path("plate_1.sl1"));
   EXPECT_EQ(std::get<std::string>(plate.at("layout_1")), path("plate_1_layout.png"));
   EXPECT_EQ(count(plate, "direct_members"), 0);
@@ -435,6 +442,36 @@ TEST_F(FiltersThroughAFakeHost, JobsReadMemberFilesAsTheLoadedMeshes) {
 
 // A custom printer chooses the print file's version (file_version): .ctb 3 or 4; Chitu's
 // encrypted version 5 is refused in words, with nothing written.
+// The jobs check their masks: a cup open at the top is a suction cup of its member, counted;
+// required printable, the job fails naming it and writes nothing; unchecked, the counts are -1.
+TEST_F(FiltersThroughAFakeHost, JobsCountFindingsPerMemberAndRefuseThemWhenRequired) {
+  FakeHost host;
+  host.meshes = {test::make_cup(-5, -5, 0, 5, 5, 6, 2), test::make_box(-5, -5, 0, 5, 5, 3)};
+  const FilterSpec& plate_spec = spec_named("make_plate_job");
+  const Result plate = plate_spec.run(defaults(plate_spec, {{"output_path", path("plate.goo")}}), host);
+  EXPECT_EQ(count(plate, "suction_cups"), 1);
+  EXPECT_EQ(count(plate, "suction_cups_mesh0"), 1);
+  EXPECT_EQ(count(plate, "suction_cups_mesh1"), 0);
+  EXPECT_EQ(count(plate, "islands"), 0);
+  EXPECT_EQ(count(plate, "resin_traps"), 0);
+
+  const std::string refused = test::error_of([&] {
+    plate_spec.run(defaults(plate_spec, {{"output_path", path("refused.goo")}}, {{"require_printable", 1}}), host);
+  });
+  EXPECT_NE(refused.find("not printable, so not written: suction cup in mesh0, layers"), std::string::npos) << refused;
+  EXPECT_FALSE(std::filesystem::exists(path("refused_1.goo")));
+
+  const FilterSpec& job_spec = spec_named("make_print_job");
+  host.current = 1;
+  const Result solid = job_spec.run(defaults(job_spec, {{"output_path", path("solid.goo")}}, {{"require_printable", 1}}), host);
+  EXPECT_EQ(count(solid, "suction_cups"), 0);
+  EXPECT_TRUE(std::filesystem::exists(path("solid.goo")));
+  const Result unchecked =
+      job_spec.run(defaults(job_spec, {{"output_path", path("u.goo")}}, {{"check_printability", 0}}), host);
+  EXPECT_EQ(count(unchecked, "islands"), -1);
+  EXPECT_EQ(std::get<double>(unchecked.at("trapped_mm3")), -1.0);
+}
+
 TEST_F(FiltersThroughAFakeHost, ACustomPrinterChoosesTheCtbVersionAndTheEncryptedOneIsRefused) {
   FakeHost host;
   host.meshes.push_back(make_sphere(3, 48, 64));
