@@ -4,7 +4,7 @@
                                       [--format EXT] [--direct] [--verify] [--keep-contours]
                                       [--plates [--spacing MM] [--placements FILE]]
                                       [--workers N | --scheduler tcp://HOST:PORT [--send-encoding]]
-                                      [--resume] [--strict] [--supports]
+                                      [--resume] [--strict] [--supports] [--require-printable]
                                       MESH0 MESH1 ...
 
 Default: slices MESH0 once with encoding, then for each member MESH1 ...: reads it (STL, PLY or
@@ -23,9 +23,13 @@ pad): MESH0's support points are generated once into DIR/<MESH0 stem>_supports.s
 member's job transfers them (certified on the member, completed where it needs more); with
 --direct every member generates its own. Each member's entry (on --plates, each plate member's)
 gains "support_points", "kept", "moved", "added", "dropped", and "support_seconds".
+Every print file is checked as it is written, as UVtools checks it: each entry (each plate's, and
+each plate member's) has "printability": {"islands", "overhangs", "resin_traps", "suction_cups",
+"touching_bounds"[, "trapped_mm3"]}. --require-printable: a member (or plate) whose file would
+hold an island, a resin trap or a suction cup is not written; its entry's "error" names each.
 Prints one JSON object: {"source": MESH0, "seconds": total, "source_seconds", "engine",
 "failed", "targets": [{"mesh", "layers", "points", "resliced_layers", "seconds", "output",
-"method", "worker"[, "min_similarity", "max_grey_difference"][, "resumed"]}
+"method", "worker", "printability"[, "min_similarity", "max_grey_difference"][, "resumed"]}
 or {"mesh", "worker", "error"}, ...]}; a member's seconds cover reading it, transferring or
 slicing it and writing its print file, "method" is "reuse" or "direct", "worker" says which
 worker process made it. A progress bar goes to a terminal's
@@ -106,6 +110,9 @@ def main():
     ap.add_argument("--supports", action="store_true",
                     help="print every member on supports: MESH0's points transferred to every member "
                          "(--direct: generated on each)")
+    ap.add_argument("--require-printable", action="store_true",
+                    help="do not write a member (or plate) whose print file would hold an island, a resin trap or "
+                         "a suction cup; its entry's error names them")
     ap.add_argument("--resume", action="store_true",
                     help="skip members whose outputs an earlier run made complete and valid")
     ap.add_argument("meshes", nargs="+", metavar="MESH", help="the sliced mesh, then its family members")
@@ -146,12 +153,13 @@ def main():
             result = sr.plates(args.meshes[0], args.meshes[1:], args.layer_thickness, args.out, profile=profile,
                                progress=bar, direct=args.direct, verify=args.verify, spacing_mm=args.spacing,
                                placements=args.placements, extension=extension, strict=args.strict,
-                               supports=args.supports, **engine)
+                               supports=args.supports, require_printable=args.require_printable, **engine)
         else:
             result = sr.family(args.meshes[0], args.meshes[1:], args.layer_thickness, args.out,
                                profile=profile, binary=not args.text, extension=extension, progress=bar,
                                direct=args.direct, verify=args.verify, keep_contours=args.keep_contours,
-                               strict=args.strict, supports=args.supports, **engine)
+                               strict=args.strict, supports=args.supports,
+                               require_printable=args.require_printable, **engine)
     except Exception as e:  # pymeshlab.PyMeshLabException, OSError, RuntimeError, ValueError
         if sys.stderr.isatty():
             sys.stderr.write("\n")

@@ -113,6 +113,7 @@ class MemberJob(batch.Job):
     details: bool
     strict: bool
     supports: str
+    require_printable: bool
 
 
 @dataclass
@@ -144,6 +145,7 @@ class PlateJob(batch.Job):
     plate_output: str
     check_output: str
     supports: str
+    require_printable: bool
 
 
 def _encode_source(source, out, layer_thickness, epoch, resume, binary=True):
@@ -178,6 +180,16 @@ def _support_parameters(supports):
 
 # A member's support figures in the filters' results (per member on a plate: "<key>_<name>").
 SUPPORT_KEYS = ("support_points", "kept", "moved", "added", "dropped")
+# The jobs' printability figures (make_print_job's and make_plate_job's, and per plate member
+# with the member's name after them), as an entry's "printability".
+PRINTABILITY_KEYS = ("islands", "overhangs", "resin_traps", "suction_cups", "touching_bounds")
+
+
+def _printability(result, suffix=""):
+    figures = {k: result[k + suffix] for k in PRINTABILITY_KEYS}
+    if not suffix:
+        figures["trapped_mm3"] = result["trapped_mm3"]
+    return figures
 
 
 def _generate_source_points(source, out, layer_thickness, epoch, resume):
@@ -232,7 +244,8 @@ def _job_supports(supports, direct, out, source, layer_thickness, epoch, resume)
 
 def family(source, targets, layer_thickness, out, profile=None, binary=True, progress=None,
            direct=False, verify=False, keep_contours=False, details=False, extension=None,
-           workers=0, scheduler=None, resume=False, send_encoding=False, strict=False, supports=False):
+           workers=0, scheduler=None, resume=False, send_encoding=False, strict=False, supports=False,
+           require_printable=False):
     """The production pipeline: one print job per family member, out/<member stem><extension>
     (one of print_file_extensions(), or "" for a folder of PNG images; None: the printer's own,
     printer_extension(profile's printer)).
@@ -258,6 +271,11 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     generates its own. Each entry then says "support_points", "kept", "moved", "added",
     "dropped" (as transfer_support_points; all but support_points 0 when generated) and
     "support_seconds" (the member's points and tree, inside its seconds).
+    Every print file is checked as it is written (UVtools' checks, docs/formats.md "Printability
+    report"): each entry's "printability" counts "islands", "overhangs", "resin_traps",
+    "suction_cups", "touching_bounds" and gives "trapped_mm3". require_printable=True: a member
+    whose file would hold an island, a resin trap or a suction cup is not written, and its entry's
+    "error" names each such finding, its layers and place.
 
     Where the members are made (slicereuse_batch.py): workers=0 (the default) in this process;
     workers=N an embedded Dask LocalCluster of N worker processes (None: one per two cores, slicereuse_batch.default_workers);
@@ -307,7 +325,8 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
 
     parameters = dict(encoding=batch.file_identity(encoding) if encoding else None,
                       layer_thickness=layer_thickness, profile=profile, verify=verify, details=details,
-                      strict=strict, supports=_supports_identity(member_supports))
+                      strict=strict, supports=_supports_identity(member_supports),
+                      require_printable=require_printable)
     jobs = []
     for target, stem in zip(targets, stems):
         output = out / f"{stem}{extension}"
@@ -319,7 +338,8 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
                               key=batch.key_of(target=batch.file_identity(target), **parameters),
                               target=str(Path(target).resolve()), output=str(output), contours=str(contours or ""),
                               check=str(check or ""), layer_thickness=layer_thickness, profile=profile,
-                              details=details, strict=strict, supports=member_supports))
+                              details=details, strict=strict, supports=member_supports,
+                              require_printable=require_printable))
     with batch.engine(workers, scheduler, setup=load) as engine:
         targets_out = _run_jobs(engine, jobs, _make_member, encoding, send_encoding, resume, progress, step, steps)
         engine.finish(_free_cached_memory)
@@ -384,10 +404,11 @@ def _make_member(job, encoding):
         supports = _support_parameters(job.supports)
         r = ms.apply_filter("make_print_job", mesh_file=job.target, encoding_file=encoding,
                             layer_thickness=job.layer_thickness, contour_file=job.contours, output_path=job.output,
-                            strict=job.strict, **supports, **job.profile)
+                            strict=job.strict, require_printable=job.require_printable, **supports,
+                            **job.profile)
         entry = {"layers": r["layers"], "points": r["points"], "resliced_layers": r["resliced_layers"],
                  "seconds": time.perf_counter() - t0, "output": job.output,
-                 "method": "reuse" if r["reused"] else "direct"}
+                 "method": "reuse" if r["reused"] else "direct", "printability": _printability(r)}
         if job.supports:
             entry.update({k: r[k] for k in SUPPORT_KEYS}, support_seconds=r["support_seconds"])
         if encoding and not r["reused"]:
@@ -399,7 +420,8 @@ def _make_member(job, encoding):
         if job.check:
             # The same supports (the same points), so that only the layers' making differs.
             ms.apply_filter("make_print_job", mesh_file=job.target, encoding_file="", layer_thickness=job.layer_thickness,
-                            contour_file="", output_path=job.check, **supports, **job.profile)
+                            contour_file="", output_path=job.check, check_printability=False, **supports,
+                            **job.profile)
             c = ms.apply_filter("compare_mask_stacks", stack_a=job.output, stack_b=job.check, report_file="")
             entry.update(min_similarity=c["min_similarity"], max_grey_difference=c["max_grey_difference"])
     return entry
@@ -412,7 +434,7 @@ def _free_cached_memory():
 
 def plates(source, targets, layer_thickness, out, profile=None, progress=None, direct=False, verify=False,
            spacing_mm=2.0, placements=None, extension=None, workers=0, scheduler=None, resume=False,
-           strict=False, supports=False):
+           strict=False, supports=False, require_printable=False):
     """The lab's job: the targets arranged on build plates of the printer, one print file per
     plate, out/plate_<k><extension> (one of print_file_extensions(), or "" for folders of PNG images;
     None: the printer's own, printer_extension(profile's printer)), its top view
@@ -434,6 +456,10 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
     members' supports before placing them (placements then keep the supports' footprints apart),
     and each member of a plate's entry says "support_points", "kept", "moved", "added",
     "dropped"; the plate's entry "support_seconds".
+    Every plate is checked as it is written: its entry's "printability" (as family()'s), and each
+    member's its own counts (a finding goes to the member whose footprint holds it).
+    require_printable=True: a plate holding an island, a resin trap or a suction cup is not
+    written, its entry's "error" naming each such finding, its member and place.
     Returns {"source", "members", "seconds", "arrange_seconds", "engine", "failed", "plates":
     [{"output", "layout", "members", "area_used", "layers", "points", "seconds", "worker"[,
     "min_similarity", "max_grey_difference"][, "resumed"]} or {"output", "layout", "members",
@@ -485,7 +511,8 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
 
         parameters = dict(placements=batch.file_identity(summary), encoding=batch.file_identity(encoding)
                           if encoding else None, layer_thickness=layer_thickness, profile=profile, verify=verify,
-                          strict=strict, supports=_supports_identity(member_supports))
+                          strict=strict, supports=_supports_identity(member_supports),
+                          require_printable=require_printable)
         jobs = []
         for k, plate in enumerate(layout["plates"], 1):
             output = plate["output"]
@@ -502,7 +529,7 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
                                  z_start=arranged["z_start"], profile=profile, strict=strict,
                                  plate_output=arrange.output,
                                  check_output=str(out / "direct" / f"plate{extension}") if verify else "",
-                                 supports=member_supports))
+                                 supports=member_supports, require_printable=require_printable))
         plates_out = _run_jobs(engine, jobs, _make_plate, encoding, False, resume, progress, 1, steps)
         engine.finish(_free_cached_memory)
     return {"source": str(source), "members": arranged["members"], "seconds": time.perf_counter() - start,
@@ -532,9 +559,10 @@ NOT_OF_THE_FAMILY = ("its faces are not those of the source's mesh (another conn
 
 def _plate_member(member, encoding, result):
     """A plate member's summary entry: its name and method, and why when sliced for want of reuse;
-    its support figures when it has supports."""
+    its support figures when it has supports; its printability."""
     name = member["name"]
-    member = dict(member, **{k: result[f"{k}_{name}"] for k in SUPPORT_KEYS if f"{k}_{name}" in result})
+    member = dict(member, **{k: result[f"{k}_{name}"] for k in SUPPORT_KEYS if f"{k}_{name}" in result},
+                  printability=_printability(result, f"_{name}"))
     if not encoding:
         return dict(member, method="direct")
     if result.get(f"sliced_directly_{name}"):
@@ -553,14 +581,16 @@ def _make_plate(job, encoding):
         common = dict(member_files=";".join(job.paths), layer_thickness=job.layer_thickness, z_start=job.z_start,
                       placements_file=job.summary, plate=job.plate, placements_output="", strict=job.strict,
                       **_support_parameters(job.supports), **job.profile)
-        r = ms.apply_filter("make_plate_job", encoding_file=encoding, output_path=job.plate_output, **common)
+        r = ms.apply_filter("make_plate_job", encoding_file=encoding, output_path=job.plate_output,
+                            require_printable=job.require_printable, **common)
         members = [_plate_member(m, encoding, r) for m in job.base["members"]]
         entry = {"members": members, "layers": r["layers"], "points": r["points"],
-                 "seconds": time.perf_counter() - t0}
+                 "seconds": time.perf_counter() - t0, "printability": _printability(r)}
         if job.supports:
             entry["support_seconds"] = r["support_seconds"]
         if job.check_output:
-            ms.apply_filter("make_plate_job", encoding_file="", output_path=job.check_output, **common)
+            ms.apply_filter("make_plate_job", encoding_file="", output_path=job.check_output,
+                            check_printability=False, **common)
             c = ms.apply_filter("compare_mask_stacks", stack_a=job.outputs[0], stack_b=job.outputs[1],
                                 report_file="")
             entry.update(min_similarity=c["min_similarity"], max_grey_difference=c["max_grey_difference"])

@@ -6,10 +6,12 @@ Needs the 2025 plugin (build/2025, or $SLICEREUSE_PLUGIN) and the family generat
 A missing gen_family is an error, not a skip: scripts/build builds it.
 """
 import os
+import struct
 import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -100,3 +102,39 @@ def raises_filter_error(pymeshlab, ms, filter_name, message, **params):
         ms.apply_filter(filter_name, **params)
     for part in message if isinstance(message, tuple) else (message,):
         assert part in str(e.value), str(e.value)
+
+
+def write_stl(path, triangles):
+    """A binary STL of triangles (n x 3 x 3, counter-clockwise seen from outside)."""
+    with open(path, "wb") as f:
+        f.write(b"\0" * 80 + struct.pack("<I", len(triangles)))
+        for t in triangles:
+            n = np.cross(t[1] - t[0], t[2] - t[0])
+            f.write(struct.pack("<12fH", *(n / np.linalg.norm(n)), *t[0], *t[1], *t[2], 0))
+
+
+def box_triangles(lo, hi, inside_out=False):
+    """The 12 triangles of the box [lo, hi] (3 coordinates each), facing out, or in (a cavity)."""
+    lo, hi = np.asarray(lo, float), np.asarray(hi, float)
+    corner = lambda i: np.where([i & 1, i & 2, i & 4], hi, lo)  # noqa: E731
+    quads = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]
+    triangles = []
+    for a, b, c, d in quads:
+        for t in ((a, b, c), (a, c, d)):
+            triangles.append([corner(i) for i in (t if not inside_out else t[::-1])])
+    return np.array(triangles)
+
+
+def write_printability_parts(folder):
+    """Three 10 x 10 x 6 mm parts as binary STL files in folder, walls 2 mm: hollow.stl (a sealed
+    cavity: a resin trap), cup.stl (open at the top: a suction cup as it prints) and solid.stl."""
+    folder.mkdir(parents=True, exist_ok=True)
+    lo, hi, w = np.array([0, 0, 0.0]), np.array([10, 10, 6.0]), 2.0
+    write_stl(folder / "hollow.stl", np.concatenate([box_triangles(lo, hi), box_triangles(lo + w, hi - w, True)]))
+    # Overlapping boxes with no corner in common: STL files share vertices by position, and boxes
+    # sharing corners would share edges between four faces.
+    walls = [(lo, [10, 10, w]), ([0, 0, 1], [w, 10, 6]), ([10 - w, 0, 1], hi), ([1, 0, 1], [9, w, 6]),
+             ([1, 10 - w, 1], [9, 10, 6])]
+    write_stl(folder / "cup.stl", np.concatenate([box_triangles(a, b) for a, b in walls]))
+    write_stl(folder / "solid.stl", box_triangles(lo, hi))
+    return [folder / n for n in ("hollow.stl", "cup.stl", "solid.stl")]

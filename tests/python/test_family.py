@@ -14,7 +14,8 @@ from conftest import ROOT, THICKNESS, raises_filter_error
 from test_batch import family_py
 
 SHAPES = ["arch", "ear", "handle", "box", "sphere", "torus"]
-TARGET_KEYS = {"mesh", "layers", "points", "resliced_layers", "seconds", "output", "method", "worker"}
+TARGET_KEYS = {"mesh", "layers", "points", "resliced_layers", "seconds", "output", "method", "worker",
+               "printability"}
 CASES = [(shape, z) for z in (None, "band") for shape in SHAPES] + [("arch", "everywhere")]
 
 
@@ -204,6 +205,9 @@ def test_a_member_that_cannot_be_reused_is_sliced_directly_unless_strict(make_fa
     assert "direct_reason" not in reused and direct["direct_reason"] == sr.NOT_OF_THE_FAMILY, direct
     assert direct["min_similarity"] == 1.0 and direct["max_grey_difference"] == 0, direct
     (plate,) = sr.plates(members[0], [members[1], renumbered], THICKNESS, tmp_path / "plates", verify=True)["plates"]
+    # Arches stand on the plate, with no cavity (their steep walls leave single-pixel islands).
+    checked = [m.pop("printability") for m in plate["members"]]
+    assert all(c["resin_traps"] == c["suction_cups"] == 0 for c in checked), checked
     assert sorted(plate["members"], key=lambda m: m["name"]) == [
         {"name": members[1].name, "method": "reuse"},
         {"name": "renumbered.ply", "method": "direct", "direct_reason": sr.NOT_OF_THE_FAMILY}]

@@ -198,6 +198,8 @@ def test_family_py_plates_verifies_every_plate(make_family, tmp_path):
     written = json.loads((tmp_path / "plates.json").read_text())
     assert [[m["name"] for m in p["members"]] for p in written["plates"]] == \
         [[m["name"] for m in p["members"]] for p in result["plates"]]
+    checked = [m.pop("printability") for p in result["plates"] for m in p["members"]]
+    assert all(c["resin_traps"] == c["suction_cups"] == 0 for c in checked), checked
     assert all(m == {"name": m["name"], "method": "reuse"} for p in result["plates"] for m in p["members"])
     for p, plate in zip(result["plates"], written["plates"]):
         assert p["min_similarity"] == 1.0 and p["max_grey_difference"] == 0, p

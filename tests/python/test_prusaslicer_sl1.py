@@ -24,6 +24,7 @@ import subprocess
 
 import numpy as np
 import pytest
+from conftest import write_stl
 from slicereuse_prusaslicer import VENDOR_PROFILES, read_archive, write_config
 from slicereuse_prusaslicer import prusaslicer_config as vendor_config
 
@@ -59,14 +60,6 @@ def tapered_l():
         j = (i + 1) % 6
         triangles += [(bottom3[i], bottom3[j], top3[j]), (bottom3[i], top3[j], top3[i])]
     return np.array(triangles)
-
-
-def write_stl(path, triangles):
-    with open(path, "wb") as f:
-        f.write(b"\0" * 80 + struct.pack("<I", len(triangles)))
-        for t in triangles:
-            n = np.cross(t[1] - t[0], t[2] - t[0])
-            f.write(struct.pack("<12fH", *(n / np.linalg.norm(n)), *t[0], *t[1], *t[2], 0))
 
 
 def prusaslicer_config(printer):
