@@ -1,11 +1,15 @@
 // "Check Printability": UVtools' checks (islands, overhangs, resin traps, suction cups, parts
-// touching the display's bounds) on the masks of a print file or PNG folder; no mesh involved.
+// touching the display's bounds) on the masks of a print file or PNG folder, or on those the
+// current contour layer or mesh would print with.
 // The findings are logged, counted in the result, written to an optional CSV and shown as a
 // point layer (a point at each finding's centre on the build plate).
 #include "filter_params.h"
 #include "filters_common.h"
+#include "slicereuse/plates/first_layer.h"
 #include "slicereuse/printability/printability_report.h"
 #include "slicereuse/printfiles/check_print_file.h"
+#include "slicereuse/printfiles/check_stack.h"
+#include "slicereuse/slicing/slice_layers.h"
 
 namespace slicereuse::plugin {
 namespace {
@@ -21,11 +25,15 @@ struct PrintabilityParams {
 
 ParamList<PrintabilityParams> printability_params() {
   ParamList<PrintabilityParams> l;
-  l.file(&PrintabilityParams::print_file, ParamType::FileOpen, "print_file", "Print file", print_file_patterns().c_str(),
-         "choose a print file, or a folder of PNG images",
-         print_file_tooltip("The print file (or folder of PNG images) whose masks are checked.").c_str())
+  l.file(&PrintabilityParams::print_file, ParamType::FileOpen, "print_file", "Print file", print_file_patterns().c_str(), nullptr,
+         print_file_tooltip("The print file (or folder of PNG images) whose masks are checked. Empty: the masks "
+                            "the current layer would print with, for the printer below: a contour layer's "
+                            "contours, or the current mesh sliced directly from its lowest vertex.")
+             .c_str())
       .number(&PrintabilityParams::layer_thickness, "layer_thickness", "Layer thickness (mm)", 0.05,
-              Range::above(0, "mm"), "The print file's layer height: heights and volumes are counted in it.")
+              Range::above(0, "mm"),
+              "The print file's layer height (heights and volumes are counted in it), or the layer height the "
+              "current mesh is sliced at. A contour layer has its own.")
       .include(&PrintabilityParams::printer, printer_params())
       .file(&PrintabilityParams::report_file, ParamType::FileSave, "report_file", "Report file (CSV)", "*.csv", nullptr,
             "Where to write one CSV row per finding (kind, layers, box in pixels, centre and size in mm, area or "
@@ -33,13 +41,37 @@ ParamList<PrintabilityParams> printability_params() {
   return l;
 }
 
+// The masks of the current contour layer, or of the current mesh sliced directly, as a print job
+// makes them (layer 0 compensated against elephant foot), checked; the report written if asked.
+PrintabilityReport check_current_layer(const PrintabilityParams& p, Host& host) {
+  const PrinterProfile profile = p.printer.profile();
+  const Progress progress = host.progress();
+  std::vector<SlicePart> parts(1);
+  try {
+    parts[0].slices = host.current_contour_layer();
+  } catch (const Error&) {  // not a contour layer: the current mesh
+    parts[0].slices = slice_layers(host.current_mesh(), slice_options(p.layer_thickness, kLowestVertexZStart),
+                                   sub_progress(progress, 0, 0.3));
+  }
+  const Slices& s = parts[0].slices;
+  const size_t layers = s.layers();
+  if (layers == 0) throw Error("print_file is empty and the current layer has no layers to check");
+  const double thickness = s.thickness;
+  compensate_first_layer(parts, {}, profile, s.layer_z[0], s.z_start, thickness);
+  PrintabilityReport r = check_stack(parts, layers, thickness, profile, sub_progress(progress, 0.3, 1));
+  if (!p.report_file.empty()) write_printability_csv(r, p.report_file);
+  return r;
+}
+
 Result run_check_printability(const PrintabilityParams& p, Host& host) {
   const auto start = std::chrono::steady_clock::now();
   const MaskImageLayout layout = mask_image_layout(p.printer.profile());
   log_printer(host, "Check Printability", p.printer);
 
-  const PrintabilityReport r = check_print_file(p.print_file, layout.column_um / 1000.0, layout.row_um / 1000.0,
-                                                p.layer_thickness, p.report_file, host.progress());
+  const PrintabilityReport r = p.print_file.empty()
+                                    ? check_current_layer(p, host)
+                                    : check_print_file(p.print_file, layout.column_um / 1000.0, layout.row_um / 1000.0,
+                                                       p.layer_thickness, p.report_file, host.progress());
 
   std::vector<double> xyz, normals;
   for (size_t i = 0; i < r.findings.size(); ++i) {
@@ -80,14 +112,16 @@ Result run_check_printability(const PrintabilityParams& p, Host& host) {
 FilterSpec check_printability_filter() {
   const std::string description = std::string(
       "<p>Checks the masks of a print file (.sl1, .sl1s, .goo, .ctb, Anycubic files) or a folder of PNG "
-      "images as UVtools does, with its default settings: <b>islands</b> (a region of a layer resting on "
+      "images, or with no print file those the current layer would print with (a contour layer's contours, or "
+      "the current mesh sliced directly at the layer thickness), as UVtools does, with its default settings: <b>islands</b> (a region of a layer resting on "
       "too few lit pixels of the layer below), <b>overhangs</b> (what a layer adds beyond the one below, "
       "eroded 40 pixels), <b>resin traps</b> (air enclosed on all sides), <b>suction cups</b> (air closed "
       "towards the plate and open only upwards, at least 100 pixels and 0.5 mm high) and parts "
       "<b>touching the display's bounds</b> (within 5 pixels of its edges). The printer's display gives "
       "the pixel size; the layer thickness the heights and volumes. Logs each finding (the first 20) with "
       "its layers and place, adds a layer of points at the findings' centres, and optionally writes one "
-      "CSV row per finding. The current mesh is not used.</p>") +
+      "CSV row per finding. Make Print Job and Make Plate Job run the same checks on every file they "
+      "write.</p>") +
       kReference;
   return typed_filter({FilterId::CheckPrintability, "Check Printability", "check_printability", description,
                        Arity::None, kLayerClass | kMeasureClass, false},

@@ -47,7 +47,12 @@ class FakeHost : public Host {
     for (const std::string& p : paths) out.push_back({std::filesystem::path(p).filename().string(), read_mesh_file(p)});
     return out;
   }
-  Slices current_contour_layer() override { throw Error("the layer is not a contour layer"); }
+  // The current layer is a contour layer holding these when contour_layer has layers.
+  Slices contour_layer;
+  Slices current_contour_layer() override {
+    if (contour_layer.layers() == 0) throw Error("the layer is not a contour layer");
+    return contour_layer;
+  }
   void add_polyline_layer(const std::string& name, const std::vector<double>&, const std::vector<uint32_t>&) override {
     added_layers.push_back(name);
   }

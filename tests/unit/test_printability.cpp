@@ -3,6 +3,8 @@
 
 #include <cstdio>
 #include <fstream>
+#include <iterator>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -10,9 +12,11 @@
 #include "fake_host.h"
 #include "level_runs.h"
 #include "mask_layers.h"
+#include "shapes.h"
 #include "slicereuse/printability/check_layers.h"
 #include "slicereuse/printfiles/check_print_file.h"
 #include "slicereuse/printfiles/export_masks.h"
+#include "slicereuse/slicing/slice_layers.h"
 #include "slicereuse/util/error.h"
 #include "temp_folder.h"
 
@@ -418,4 +422,44 @@ TEST_F(PrintabilityFile, FilterLogsTwentyFindingsAndCountsTheRest) {
 }
 
 }  // namespace
+// With no print file, the current layer's masks: a hollow mesh shows its resin trap and a cup its
+// suction cup, as the print job's file of the same mesh shows them; a contour layer is checked
+// with its own layers.
+TEST_F(PrintabilityFile, FilterChecksTheCurrentMeshOrContourLayerAsItsPrintJob) {
+  using namespace plugin;
+  FakeHost host;
+  host.meshes = {test::make_hollow_box(-5, -5, 0, 5, 5, 6, 2), test::make_cup(-5, -5, 0, 5, 5, 6, 2)};
+  const PrinterProfile display = test::small_display();
+  const std::map<std::string, double> printer = {{"layer_thickness", 0.1},
+                                                 {"width_px", display.width_px},
+                                                 {"height_px", display.height_px},
+                                                 {"pixel_size_x_um", display.pixel_size_x_um},
+                                                 {"pixel_size_y_um", display.pixel_size_y_um}};
+  const FilterSpec& spec = spec_named("check_printability");
+  const FilterSpec& job = spec_named("make_print_job");
+  for (int m = 0; m < 2; ++m) {
+    SCOPED_TRACE(m);
+    host.current = m;
+    const Result current = spec.run(defaults(spec, {{"report_file", path("c.csv")}}, printer), host);
+    EXPECT_EQ(count(current, "layers"), 60);
+    EXPECT_EQ(count(current, "resin_traps"), m == 0 ? 1 : 0);
+    EXPECT_EQ(count(current, "suction_cups"), m == 1 ? 1 : 0);
+    EXPECT_EQ(count(current, "islands"), 0);
+    const Result made = job.run(defaults(job, {{"output_path", path("job.goo")}}, printer), host);
+    const Result file = spec.run(defaults(spec, {{"print_file", path("job.goo")}, {"report_file", path("f.csv")}}, printer), host);
+    for (const char* key : {"islands", "overhangs", "resin_traps", "suction_cups", "touching_bounds"}) {
+      EXPECT_EQ(count(current, key), count(file, key)) << key;
+      EXPECT_EQ(count(made, key), count(file, key)) << key;
+    }
+    std::ifstream a(path("c.csv")), b(path("f.csv"));
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(a), {}), std::string(std::istreambuf_iterator<char>(b), {}));
+  }
+  SliceOptions so;
+  so.thickness = 0.2;
+  host.contour_layer = slice_layers(host.meshes[1], so);
+  const Result contours = spec.run(defaults(spec, {}, printer), host);
+  EXPECT_EQ(count(contours, "layers"), 30);
+  EXPECT_EQ(count(contours, "suction_cups"), 1);
+}
+
 }  // namespace slicereuse
