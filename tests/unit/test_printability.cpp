@@ -97,12 +97,13 @@ TEST(LevelRuns, SetOperationsAndLabels) {
   // Levels 255, then 40, then 90 beside it: runs of their own in the mask, one run at level 40.
   const MaskRuns a = mask_runs_of(layer(16, 2, {{0, 0, 5, 1}, {8, 0, 10, 1, 40}, {10, 0, 12, 1, 90}, {5, 1, 8, 2}}));
   EXPECT_EQ(a.row_begin[1], 3u);
-  const LevelRuns nonzero = runs_at_least(a, 1);
+  const std::vector<LevelRuns> at = runs_at_levels(a, {1, 41, 91});
+  const LevelRuns& nonzero = at[0];
   EXPECT_EQ(row0(nonzero), (std::vector<int>{0, 5, 8, 12}));
-  EXPECT_EQ(row0(runs_at_least(a, 41)), (std::vector<int>{0, 5, 10, 12}));
-  EXPECT_EQ(row0(runs_at_least(a, 91)), (std::vector<int>{0, 5}));
+  EXPECT_EQ(row0(at[1]), (std::vector<int>{0, 5, 10, 12}));
+  EXPECT_EQ(row0(at[2]), (std::vector<int>{0, 5}));
   EXPECT_EQ(row0(complement_runs(nonzero)), (std::vector<int>{5, 8, 12, 16}));
-  const LevelRuns b = runs_at_least(mask_runs_of(layer(16, 2, {{3, 0, 10, 1}})), 1);
+  const LevelRuns b = runs_at_levels(mask_runs_of(layer(16, 2, {{3, 0, 10, 1}})), {1})[0];
   EXPECT_EQ(row0(subtract_runs(nonzero, b)), (std::vector<int>{0, 3, 10, 12}));
   EXPECT_EQ(row0(intersect_runs(nonzero, b)), (std::vector<int>{3, 5, 8, 10}));
   // Row 1's [5, 8) touches row 0's runs only at corners: one region with diagonals, three without.

@@ -159,8 +159,8 @@ struct LayerChecker::State {
   }
 
   // Islands and overhangs of a layer above layer 0.
-  void check_islands_and_overhangs(const MaskRuns& mask, const LevelRuns& nonzero, const LevelRuns& at_least_128,
-                                   size_t layer) {
+  void check_islands_and_overhangs(const MaskRuns& mask, const LevelRuns& nonzero, const LevelRuns& lit,
+                                   const LevelRuns& points, const LevelRuns& at_least_128, size_t layer) {
     const LevelRuns overhang = overhang_pixels({&mask, &nonzero, &at_least_128}, {&below, &below_nonzero, &below_128});
     const RunLabels overhang_labels = label_runs(overhang, true);  // contours, as UVtools finds them
     for (const Region& r : regions_of(overhang, overhang_labels)) {
@@ -170,9 +170,7 @@ struct LayerChecker::State {
       findings.push_back(f);
     }
 
-    const LevelRuns lit = runs_at_least(mask, kIslandLit);
     const RunLabels labels = label_runs(lit, false);  // UVtools: AllowDiagonalBonds false
-    const LevelRuns points = runs_at_least(mask, kIslandPointLevel);
     const std::vector<Region> regions = regions_of(lit, labels);
     const std::vector<uint64_t> point_pixels = pixels_inside(points, lit, labels);
     const std::vector<uint64_t> supported = pixels_inside(intersect_runs(points, below_support), lit, labels);
@@ -215,13 +213,16 @@ void LayerChecker::add_layer(MaskRuns layer) {
     throw Error(format("printability check: layer %zu is %d x %d pixels, layer 0 is %d x %d", k, layer.width,
                        layer.height, s.width, s.rows));
   }
-  LevelRuns nonzero = runs_at_least(layer, 1);
-  LevelRuns at_least_128 = runs_at_least(layer, 128);
-  s.check_touching(runs_at_least(layer, kTouchLevel), k);
-  if (k > 0) s.check_islands_and_overhangs(layer, nonzero, at_least_128, k);
-  s.air.add_layer(complement_runs(runs_at_least(layer, kTrapSolid)), k);
+  // Every level the checks compare with, ascending, in one pass over the layer's runs.
+  std::vector<LevelRuns> at = runs_at_levels(layer, {1, kIslandLit, kIslandPointLevel, kTrapSolid, kTouchLevel, 128,
+                                                     kSupportLevel});
+  LevelRuns &nonzero = at[0], &lit = at[1], &points = at[2], &solid = at[3], &touching = at[4], &at_least_128 = at[5],
+            &support = at[6];
+  s.check_touching(touching, k);
+  if (k > 0) s.check_islands_and_overhangs(layer, nonzero, lit, points, at_least_128, k);
+  s.air.add_layer(complement_runs(solid), k);
   s.add_air_findings(s.air.take_closed());
-  s.below_support = runs_at_least(layer, kSupportLevel);
+  s.below_support = std::move(support);
   s.below_nonzero = std::move(nonzero);
   s.below_128 = std::move(at_least_128);
   s.below = std::move(layer);

@@ -62,21 +62,32 @@ MaskRuns mask_runs_of(const MaskImage& image) {
   return r;
 }
 
-LevelRuns runs_at_least(const MaskRuns& mask, uint8_t level) {
-  LevelRuns r = empty_like(mask.width, mask.height);
-  for (int y = 0; y < mask.height; ++y) {
-    const uint32_t row = r.runs();
-    for (uint32_t i = mask.row_begin[size_t(y)]; i < mask.row_begin[size_t(y) + 1]; ++i) {
-      if (mask.levels[i] < level) continue;
-      const uint16_t lo = mask.columns[2 * size_t(i)], hi = mask.columns[2 * size_t(i) + 1];
-      if (r.runs() > row && r.hi.back() == lo)
-        r.hi.back() = hi;  // runs of different levels side by side: one run here
-      else
-        add_run(r, lo, hi);
-    }
-    r.row_begin.push_back(r.runs());
+std::vector<LevelRuns> runs_at_levels(const MaskRuns& mask, const std::vector<uint8_t>& levels) {
+  std::vector<LevelRuns> out;
+  for (size_t j = 0; j < levels.size(); ++j) {
+    out.push_back(empty_like(mask.width, mask.height));
+    out.back().lo.reserve(mask.levels.size());
+    out.back().hi.reserve(mask.levels.size());
   }
-  return r;
+  const size_t n = levels.size();
+  std::vector<uint32_t> row_start(n);
+  for (int y = 0; y < mask.height; ++y) {
+    for (size_t j = 0; j < n; ++j) row_start[j] = out[j].runs();
+    for (uint32_t i = mask.row_begin[size_t(y)]; i < mask.row_begin[size_t(y) + 1]; ++i) {
+      const uint8_t level = mask.levels[i];
+      const uint16_t lo = mask.columns[2 * size_t(i)], hi = mask.columns[2 * size_t(i) + 1];
+      // Ascending levels: those this run reaches come first.
+      for (size_t j = 0; j < n && levels[j] <= level; ++j) {
+        LevelRuns& r = out[j];
+        if (r.runs() > row_start[j] && r.hi.back() == lo)
+          r.hi.back() = hi;  // runs of different levels side by side: one run here
+        else
+          add_run(r, lo, hi);
+      }
+    }
+    for (size_t j = 0; j < n; ++j) out[j].row_begin.push_back(out[j].runs());
+  }
+  return out;
 }
 
 LevelRuns complement_runs(const LevelRuns& runs) {

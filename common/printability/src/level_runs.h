@@ -5,8 +5,8 @@
 //
 // mask_runs_of: an image -> its runs of equal non-zero levels (mask_png.h's MaskRuns, what the
 //   rasterizer gives); it skips unlit pixels eight at a time.
-// runs_at_least: a mask's runs -> the runs of its pixels >= level, in time proportional to the
-//   mask's runs.
+// runs_at_levels: a mask's runs -> for each of levels (ascending), the runs of its pixels >= that
+//   level, all in one pass over the mask's runs.
 // complement_runs: the runs of the pixels in no run of runs (same width and height).
 // subtract_runs: the pixels of a not in b; intersect_runs: the pixels in both.
 // label_runs: runs -> the connected component of each run (0..count-1, in order of first run),
@@ -32,7 +32,7 @@ struct LevelRuns {
 };
 
 MaskRuns mask_runs_of(const MaskImage& image);
-LevelRuns runs_at_least(const MaskRuns& mask, uint8_t level);
+std::vector<LevelRuns> runs_at_levels(const MaskRuns& mask, const std::vector<uint8_t>& levels);
 LevelRuns complement_runs(const LevelRuns& runs);
 LevelRuns subtract_runs(const LevelRuns& a, const LevelRuns& b);
 LevelRuns intersect_runs(const LevelRuns& a, const LevelRuns& b);
