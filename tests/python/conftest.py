@@ -125,16 +125,23 @@ def box_triangles(lo, hi, inside_out=False):
     return np.array(triangles)
 
 
+def cup_boxes(lo, hi, w, shared_corners=False):
+    """A cup in [lo, hi] with walls w thick, open at the top, as overlapping boxes (a floor and four
+    walls): apart, or sharing corners (an STL file then shares their vertices, and edges between
+    four faces), the same union."""
+    if shared_corners:
+        return [(lo, [hi[0], hi[1], w]), (lo, [w, hi[1], hi[2]]), ([hi[0] - w, 0, 0], hi), (lo, [hi[0], w, hi[2]]),
+                ([0, hi[1] - w, 0], hi)]
+    return [(lo, [hi[0], hi[1], w]), ([0, 0, 1], [w, hi[1], hi[2]]), ([hi[0] - w, 0, 1], hi),
+            ([1, 0, 1], [hi[0] - 1, w, hi[2]]), ([1, hi[1] - w, 1], [hi[0] - 1, hi[1], hi[2]])]
+
+
 def write_printability_parts(folder):
     """Three 10 x 10 x 6 mm parts as binary STL files in folder, walls 2 mm: hollow.stl (a sealed
     cavity: a resin trap), cup.stl (open at the top: a suction cup as it prints) and solid.stl."""
     folder.mkdir(parents=True, exist_ok=True)
     lo, hi, w = np.array([0, 0, 0.0]), np.array([10, 10, 6.0]), 2.0
     write_stl(folder / "hollow.stl", np.concatenate([box_triangles(lo, hi), box_triangles(lo + w, hi - w, True)]))
-    # Overlapping boxes with no corner in common: STL files share vertices by position, and boxes
-    # sharing corners would share edges between four faces.
-    walls = [(lo, [10, 10, w]), ([0, 0, 1], [w, 10, 6]), ([10 - w, 0, 1], hi), ([1, 0, 1], [9, w, 6]),
-             ([1, 10 - w, 1], [9, 10, 6])]
-    write_stl(folder / "cup.stl", np.concatenate([box_triangles(a, b) for a, b in walls]))
+    write_stl(folder / "cup.stl", np.concatenate([box_triangles(a, b) for a, b in cup_boxes(lo, hi, w)]))
     write_stl(folder / "solid.stl", box_triangles(lo, hi))
     return [folder / n for n in ("hollow.stl", "cup.stl", "solid.stl")]

@@ -5,7 +5,8 @@ import json
 import subprocess
 from pathlib import Path
 
-from conftest import ROOT, THICKNESS, write_printability_parts
+import numpy as np
+from conftest import ROOT, THICKNESS, box_triangles, cup_boxes, write_printability_parts, write_stl
 import slicereuse_pymeshlab as sr
 
 NOTHING = {"islands": 0, "overhangs": 0, "resin_traps": 0, "suction_cups": 0, "touching_bounds": 0}
@@ -55,3 +56,20 @@ def test_require_printable_refuses_each_failing_member_and_writes_the_others(pym
     assert not (tmp_path / "out" / "hollow.sl1s").exists() and not (tmp_path / "out" / "cup.sl1s").exists()
     assert solid_entry["printability"] == dict(NOTHING, trapped_mm3=0.0), solid_entry
     assert Path(solid_entry["output"]).is_file()
+
+
+def test_shells_sharing_corners_print_as_their_union(pymeshlab, tmp_path):
+    """An STL file of boxes that share corners (so its reader shares their vertices, and some edges
+    have four faces) prints exactly as the same union of boxes apart: no open contour, the same
+    masks, the same suction cup."""
+    lo, hi = np.array([0, 0, 0.0]), np.array([10, 10, 6.0])
+    results = {}
+    for shared in (False, True):
+        stl = tmp_path / f"cup_{shared}.stl"
+        write_stl(stl, np.concatenate([box_triangles(a, b) for a, b in cup_boxes(lo, hi, 2.0, shared)]))
+        results[shared] = pymeshlab.MeshSet().apply_filter(
+            "make_print_job", mesh_file=str(stl), layer_thickness=THICKNESS, output_path=str(tmp_path / f"{shared}"),
+            printer=0)  # the method's display
+        assert results[shared]["ignored_open_contours"] == 0 and results[shared]["suction_cups"] == 1, results
+    for a in sorted((tmp_path / "False").glob("*.png")):
+        assert a.read_bytes() == (tmp_path / "True" / a.name).read_bytes(), a.name

@@ -6,7 +6,8 @@ EdgeLinks edge_links(const Mesh& mesh) {
   const size_t nf = mesh.faces(), nv = mesh.vertices(), nh = 3 * nf;
   const uint32_t* F = mesh.F.data();
   // Half-edges grouped by their first vertex (counting sort), so the reverse of u->v is found
-  // among v's few outgoing half-edges: O(faces * valence), no hashing, no sorting.
+  // among v's few outgoing half-edges: O(faces * valence), no hashing, no sorting. Within a
+  // vertex's group half-edges stay in increasing order, which ranks those of one edge.
   std::vector<uint32_t> begin(nv + 1, 0);
   for (size_t h = 0; h < nh; ++h) ++begin[F[h] + 1];
   for (size_t v = 0; v < nv; ++v) begin[v + 1] += begin[v];
@@ -24,16 +25,19 @@ EdgeLinks edge_links(const Mesh& mesh) {
   for (long long hh = 0; hh < static_cast<long long>(nh); ++hh) {
     const uint32_t h = uint32_t(hh), u = F[h], v = head(h);
     uint32_t twin = kUnlinked;
-    int same = 0, reverse = 0;
     if (u != v) {
-      for (uint32_t i = begin[u]; i < begin[u + 1]; ++i) same += head(out[i]) == v;
-      for (uint32_t i = begin[v]; i < begin[v + 1]; ++i)
-        if (head(out[i]) == u) {
-          ++reverse;
-          twin = out[i];
+      // h's rank among the half-edges u->v (in half-edge order), and the reverse of that rank.
+      int same = 0, rank = 0, reverse = 0;
+      for (uint32_t i = begin[u]; i < begin[u + 1]; ++i)
+        if (head(out[i]) == v) {
+          rank += out[i] < h;
+          ++same;
         }
+      for (uint32_t i = begin[v]; i < begin[v + 1]; ++i)
+        if (head(out[i]) == u && reverse++ == rank) twin = out[i];
+      if (same != reverse) twin = kUnlinked;
     }
-    if (same == 1 && reverse == 1) {
+    if (twin != kUnlinked) {
       result.links[h] = ((twin / 3) << 2) | (twin % 3);
     } else {
       ++unlinked;

@@ -10,8 +10,9 @@
 //   duplicate_faces        faces with the same three vertices as an earlier face, in any order
 //   boundary_edges         edges of exactly one face: the rims of holes
 //   non_manifold_edges     edges of three or more faces
-// The slicer keeps working on all of them: open polylines end at boundary and non-manifold
-// edges (and at the edges a duplicate face doubles), and are flagged and counted.
+// The slicer keeps working on all of them: open polylines end at boundary edges and at
+// non-manifold edges not used as often one way as the other (edge_links.h; a duplicate face
+// doubles its edges one way), and are flagged and counted.
 // describe_mesh_defects gives one line naming each kind found, "" for a clean mesh.
 #include <cstdint>
 #include <string>

@@ -9,8 +9,9 @@
 // Robust by construction: a vertex with z >= plane counts as above it (symbolic perturbation),
 // so every crossing lies strictly inside an edge with one end below and one at or above, and
 // contours are chained through the shared edges of adjacent faces, never by comparing
-// coordinates. Edges that are boundary, non-manifold or inconsistently oriented end open
-// polylines, which are kept and flagged. Each crossing point is computed from the edge's lower
+// coordinates (closed shells touching along an edge are chained through it too: edge_links.h).
+// Edges that are boundary, unevenly shared or inconsistently oriented end open polylines, which
+// are kept and flagged. Each crossing point is computed from the edge's lower
 // vertex towards its upper one, so the same edge gives bit-identical points in every face and
 // in transfer_contours.
 #include <limits>

@@ -5,8 +5,8 @@
 // [z_start + k*thickness, z_start + (k+1)*thickness]. Its contours are
 // [layer_begin[k], layer_begin[k+1]); contour c's points are [contour_begin[c], contour_begin[c+1]).
 // Closed contours are loops (the last point connects back to the first): outer boundaries run
-// counter-clockwise and holes clockwise, seen from +z. Open contours (from holes or non-manifold
-// edges in the mesh) are polylines, flagged in contour_open.
+// counter-clockwise and holes clockwise, seen from +z. Open contours (from holes or unevenly
+// shared edges in the mesh, edge_links.h) are polylines, flagged in contour_open.
 //
 // Contour points (xyz) and their encoding (face, edge, t) are parallel arrays; either may be
 // empty: a contour file carries only xyz, an encoding file only the encoding.
