@@ -44,7 +44,8 @@ void compensate_faded_layers(std::vector<SlicePart>& parts, size_t a, const std:
   if (!owners.empty() && owners.size() != parts.size())
     throw Error(format("internal error: %zu owners for %zu parts of the faded layers", owners.size(), parts.size()));
   auto owner = [&](size_t i) { return owners.empty() ? size_t(0) : owners[i]; };
-  // Per part, the range's layers below this one are its owner's compensated ones.
+  auto has = [&](size_t i, size_t r) { return parts[i].first <= r && r < parts[i].first + parts[i].slices.layers(); };
+  // Per part, the range's layers below cut are its owner's compensated ones.
   std::vector<size_t> cut(parts.size());
   for (size_t i = 0; i < parts.size(); ++i) {
     if (owner(i) >= object_layers.size())
@@ -53,8 +54,10 @@ void compensate_faded_layers(std::vector<SlicePart>& parts, size_t a, const std:
     const size_t c = compensated_layers(profile, object_layers[owner(i)]);
     cut[i] = c > a ? c - a : 0;
   }
+  // Above every owner's fade (most ranges and layers): nothing to do.
+  if (std::all_of(cut.begin(), cut.end(), [](size_t c) { return c == 0; })) return;
   // One compensated layer per owner and layer below its cut that any of its parts has: its
-  // first part and the layer.
+  // first part there and the layer.
   struct Layer {
     size_t part, layer;
   };
@@ -62,29 +65,20 @@ void compensate_faded_layers(std::vector<SlicePart>& parts, size_t a, const std:
   std::vector<bool> listed(parts.size(), false);
   for (size_t i = 0; i < parts.size(); ++i) {
     if (listed[i]) continue;
-    size_t lo = SIZE_MAX, hi = 0;
-    for (size_t j = i; j < parts.size(); ++j)
-      if (owner(j) == owner(i)) {
-        listed[j] = true;
-        if (parts[j].slices.layers() == 0) continue;
-        lo = std::min(lo, parts[j].first);
-        hi = std::max(hi, parts[j].first + parts[j].slices.layers());
-      }
-    for (size_t r = lo; r < std::min(hi, cut[i]); ++r)
+    for (size_t j = i; j < parts.size(); ++j) listed[j] = listed[j] || owner(j) == owner(i);
+    for (size_t r = 0; r < cut[i]; ++r)
       for (size_t j = i; j < parts.size(); ++j)
-        if (owner(j) == owner(i) && parts[j].first <= r && r < parts[j].first + parts[j].slices.layers()) {
+        if (owner(j) == owner(i) && has(j, r)) {
           layers.push_back({j, r});
           break;
         }
   }
-  if (layers.empty()) return;
   std::vector<SlicePart> out(layers.size());
   auto compensate = [&](size_t l) {
     const size_t first = layers[l].part, r = layers[l].layer;
     std::vector<LayerPart> together;
     for (size_t j = first; j < parts.size(); ++j)
-      if (owner(j) == owner(first) && parts[j].first <= r && r < parts[j].first + parts[j].slices.layers())
-        together.push_back({&parts[j].slices, r - parts[j].first});
+      if (owner(j) == owner(first) && has(j, r)) together.push_back({&parts[j].slices, r - parts[j].first});
     const Slices& own = parts[first].slices;
     const size_t k = r - parts[first].first;
     Slices& made = out[l].slices;
