@@ -1,17 +1,22 @@
 // Supports kernel benchmark (a diagnosis; the end-to-end figures against PrusaSlicer are
 // bench/bench_supports.py's): on a family's source, generating support points and building the
 // support tree; on each member, slicing it, transferring the source's points (certify, add) and
-// building its tree. Prints median seconds and the points kept, moved, added, dropped.
+// building its tree, and exporting the member with its supports (by reuse) into a Prusa SL1S
+// SPEED .sl1s, anti-aliased, with its elephant-foot compensation and without. Prints median
+// seconds and the points kept, moved, added, dropped.
 // Usage: bench_supports [--shape ear] [--faces 200000] [--height 8.8] [--thickness 0.05]
 //                       [--runs 3] [--members 4]
 //        bench_supports --family DIR [--thickness 0.05] [--runs 3] [--members 4]
 // --family: the members gen_family wrote into DIR (member_000.ply the source), e.g. tilted.
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 
 #include "bench_args.h"
 #include "family.h"
 #include "slicereuse/formats/mesh_file.h"
+#include "slicereuse/plates/plate_job.h"
+#include "slicereuse/printer/printer_presets.h"
 #include "slicereuse/supports/generate_support_points.h"
 #include "slicereuse/supports/support_tree.h"
 #include "slicereuse/supports/transfer_support_points.h"
@@ -92,8 +97,18 @@ int main(int argc, char** argv) {
   });
   std::printf("source: %zu points in %.3f s; tree (%zu pillars, %zu on the part, %zu faces) in %.3f s\n",
               source_points.size(), generate, tree.pillars, tree.on_part, tree.mesh.faces(), build);
-  std::printf("%-6s %7s %9s %9s %9s %9s %5s %5s %5s %5s\n", "member", "slice", "contours", "transfer", "tree",
-              "generate", "kept", "moved", "added", "drop");
+  // The job's print file: the member on the source's planes, its supports below.
+  PrinterProfile foot = printer_preset("prusa_sl1s_speed").profile;
+  foot.antialiasing = true;
+  PrinterProfile no_foot = foot;
+  no_foot.elephant_foot_mm = 0;
+  std::filesystem::create_directories(args.out);
+  const std::string sl1s = args.out + "/supported_member.sl1s";
+  PlateJobOptions job;
+  job.encoding = &sliced.source;
+  job.layers_below = support_layers_below(tree_options, args.thickness);
+  std::printf("%-6s %7s %9s %9s %9s %9s %9s %9s %5s %5s %5s %5s\n", "member", "slice", "contours", "transfer", "tree",
+              "generate", "export", "no foot", "kept", "moved", "added", "drop");
   SliceOptions slice_options;
   slice_options.thickness = args.thickness;
   for (int i = 1; i < args.members; ++i) {
@@ -111,8 +126,12 @@ int main(int argc, char** argv) {
       tree = build_support_tree(member, points, ground, tree_options);
     });
     const double own = median_seconds(args.runs, [&] { generate_support_points(member, slicing, points_options); });
-    std::printf("%-6d %7.3f %9.3f %9.3f %9.3f %9.3f %5zu %5zu %5zu %5zu\n", i, slice, contours, transfer, member_tree,
-                own, stats.kept, stats.moved, stats.added, stats.dropped);
+    job.supports = {&tree.mesh};
+    const std::vector<Mesh> placed{member};
+    const double exported = median_seconds(args.runs, [&] { export_plate(placed, job, foot, sl1s); });
+    const double unfooted = median_seconds(args.runs, [&] { export_plate(placed, job, no_foot, sl1s); });
+    std::printf("%-6d %7.3f %9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %5zu %5zu %5zu %5zu\n", i, slice, contours, transfer,
+                member_tree, own, exported, unfooted, stats.kept, stats.moved, stats.added, stats.dropped);
   }
   return 0;
 }

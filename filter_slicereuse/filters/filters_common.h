@@ -43,8 +43,9 @@ extern const char* const kReference;
 // and anti-aliasing given apply to every printer. profile() refuses a preset given with display
 // or exposure values other than their defaults (Error naming them).
 inline const char* const kCustomPrinter = "custom";
-// elephant_foot: the first layer's elephant-foot compensation in mm, or kPrintersElephantFoot for
-// the printer's own (its preset's, 0 for custom).
+// elephant_foot: the first layer's elephant-foot compensation in mm (fading over the faded
+// layers, faded_layers.h), or kPrintersElephantFoot for the printer's own (its preset's, 0 for
+// custom).
 constexpr double kPrintersElephantFoot = -1;
 struct PrinterSettings {
   size_t printer = 0;

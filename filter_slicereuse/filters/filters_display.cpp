@@ -49,7 +49,7 @@ ParamList<PrinterProfile> custom_printer_params() {
       .whole(&PrinterProfile::faded_layers, "faded_layers", "Faded layers", d.faded_layers,
              Range::between(0, 1000, "layers"),
              "Custom printer: layers after the bottom ones whose exposure steps down to the normal one (SL1's "
-             "numFade).")
+             "numFade); the elephant-foot compensation fades over as many from the first (0: the first alone).")
       .whole(&PrinterProfile::file_version, "file_version", "Print file version", d.file_version,
              Range::between(0, 1000, ""),
              "Custom printer: the print file's version where its format has several: .ctb 3 or 4 (5, Chitu's "
@@ -139,8 +139,10 @@ ParamList<PrinterSettings> printer_params() {
               kPrintersElephantFoot, Range::at_least(kPrintersElephantFoot, "mm"),
               "How much the first layer (on the plate, or the pad's bottom) shrinks against elephant-foot spread, "
               "in mm (PrusaSlicer's elefant_foot_compensation; features narrower than the printer's "
-              "elefant_foot_min_width keep their width). -1 (the default): the printer's own, 0.2 mm on the SL1S "
-              "SPEED as PrusaSlicer's profile, 0 on the others (every printer).");
+              "elefant_foot_min_width keep their width); as PrusaSlicer's, it fades layer by layer to none over "
+              "the printer's faded layers (10 on the SL1S: 0.2 mm on layer 0, 0.022 mm on layer 8). -1 (the "
+              "default): the printer's own, 0.2 mm on the SL1S SPEED as PrusaSlicer's profile, 0 on the others "
+              "(every printer).");
   return l;
 }
 

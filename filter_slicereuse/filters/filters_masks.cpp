@@ -3,7 +3,7 @@
 #include "filter_params.h"
 #include "filters_common.h"
 #include "slicereuse/formats/slice_files.h"
-#include "slicereuse/plates/first_layer.h"
+#include "slicereuse/plates/faded_layers.h"
 #include "slicereuse/printfiles/export_masks.h"
 #include "slicereuse/util/error.h"
 
@@ -44,17 +44,16 @@ Result run_export_masks(const ExportParams& p, Host& host) {
       throw Error(std::string("contour_file is empty and ") + e.what());
     }
   }
-  // With elephant-foot compensation, the stack as one range whose layer 0 is compensated (as
-  // every print job's is, plate_job.h).
+  // With elephant-foot compensation, the stack as one range whose faded layers are compensated,
+  // the stack being one object (as every print job's members are, plate_job.h).
   const MaskExportStats stats =
       profile.elephant_foot_mm > 0 && s.layers() > 0
           ? export_masks(SliceChunks{{0, s.layers()}, s.thickness,
                                      [&](size_t, const Progress&) {
                                        std::vector<SlicePart> parts(1);
                                        parts[0].slices = std::move(s);
-                                       const Slices& whole = parts[0].slices;
-                                       compensate_first_layer(parts, {}, profile, whole.layer_z[0], whole.z_start,
-                                                              whole.thickness);
+                                       compensate_faded_layers(parts, 0, {}, {parts[0].slices.layers()}, profile,
+                                                               true);
                                        return parts;
                                      }},
                          profile, p.output_path, sub_progress(progress, 0.1, 1))

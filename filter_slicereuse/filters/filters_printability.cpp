@@ -5,7 +5,7 @@
 // point layer (a point at each finding's centre on the build plate).
 #include "filter_params.h"
 #include "filters_common.h"
-#include "slicereuse/plates/first_layer.h"
+#include "slicereuse/plates/faded_layers.h"
 #include "slicereuse/printability/printability_report.h"
 #include "slicereuse/printfiles/check_print_file.h"
 #include "slicereuse/printfiles/check_stack.h"
@@ -42,7 +42,7 @@ ParamList<PrintabilityParams> printability_params() {
 }
 
 // The masks of the current contour layer, or of the current mesh sliced directly, as a print job
-// makes them (layer 0 compensated against elephant foot), checked; the report written if asked.
+// makes them (compensated against elephant foot), checked; the report written if asked.
 PrintabilityReport check_current_layer(const PrintabilityParams& p, Host& host) {
   const PrinterProfile profile = p.printer.profile();
   const Progress progress = host.progress();
@@ -57,7 +57,7 @@ PrintabilityReport check_current_layer(const PrintabilityParams& p, Host& host) 
   const size_t layers = s.layers();
   if (layers == 0) throw Error("print_file is empty and the current layer has no layers to check");
   const double thickness = s.thickness;
-  compensate_first_layer(parts, {}, profile, s.layer_z[0], s.z_start, thickness);
+  compensate_faded_layers(parts, 0, {}, {layers}, profile, true);
   PrintabilityReport r = check_stack(parts, layers, thickness, profile, sub_progress(progress, 0.3, 1));
   if (!p.report_file.empty()) write_printability_csv(r, p.report_file);
   return r;

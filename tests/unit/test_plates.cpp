@@ -27,6 +27,7 @@
 #include "slicereuse/plates/plate_layout.h"
 #include "slicereuse/png/mask_png.h"
 #include "slicereuse/printfiles/check_print_file.h"
+#include "slicereuse/printfiles/compare_mask_stacks.h"
 #include "slicereuse/printfiles/export_masks.h"
 #include "slicereuse/transfer/transfer_contours.h"
 #include "slicereuse/util/format.h"
@@ -583,9 +584,10 @@ TEST_F(PlateJobTest, PlateMasksEqualTheUnionOfTheMembersOwnMasksByReuseAndDirect
   }
 }
 
-// With elephant-foot compensation (the first layer shrunk), a plate is still the union of its
-// members printed alone, each a plate of one on the same planes: every member's first layer is
-// compensated as it is alone, not with the others (together, far parts came out otherwise).
+// With elephant-foot compensation (faded over the first 10 layers), a plate is still the union
+// of its members printed alone, each a plate of one on the same planes, made where drawn or in
+// ranges that split the faded layers: every member's faded layers are compensated as it is
+// alone, not with the others (together, far parts came out otherwise).
 TEST_F(PlateJobTest, WithElephantFootThePlateIsStillTheUnionOfItsMembersAlone) {
   test::FamilyOptions o = small_arch();
   const Mesh base = test::make_family_base(o);
@@ -598,6 +600,7 @@ TEST_F(PlateJobTest, WithElephantFootThePlateIsStillTheUnionOfItsMembersAlone) {
   PrinterProfile profile = display(500, 400);
   profile.elephant_foot_mm = 0.2;
   profile.elephant_foot_min_width_mm = 0.2;
+  ASSERT_EQ(profile.faded_layers, 10);
   const std::vector<Mesh> placed = placed_on_one_plate(members, names, profile);
   ASSERT_EQ(placed.size(), members.size());
   SliceOptions so;
@@ -618,9 +621,28 @@ TEST_F(PlateJobTest, WithElephantFootThePlateIsStillTheUnionOfItsMembersAlone) {
     expect_union(path(tag + "_direct"), alone);
     PlateJobOptions reuse;
     reuse.encoding = &encoding;
-    export_plate(placed, reuse, profile, path(tag + "_reuse"));
+    EXPECT_EQ(export_plate(placed, reuse, profile, path(tag + "_reuse")).ranges, 0u);
     expect_union(path(tag + "_reuse"), alone);
+    reuse.range_budget_bytes = 50000;
+    direct.range_budget_bytes = 50000;
+    const PlateJobStats rr = export_plate(placed, reuse, profile, path(tag + "_reuse_ranges"));
+    const PlateJobStats dr = export_plate(placed, direct, profile, path(tag + "_direct_ranges"));
+    EXPECT_GT(rr.ranges, 4u);  // some within the faded layers
+    EXPECT_GT(dr.ranges, 4u);
+    expect_union(path(tag + "_reuse_ranges"), alone);
+    expect_union(path(tag + "_direct_ranges"), alone);
   }
+  // Anti-aliased, layers 0 to 8 differ from the uncompensated plate's, and no other.
+  PrinterProfile plain = profile;
+  plain.elephant_foot_mm = 0;
+  PlateJobOptions direct;
+  direct.slicing = so;
+  direct.slicing.z_start = encoding.z_start;
+  export_plate(placed, direct, plain, path("aa_plain"));
+  const StackComparison c = compare_mask_stacks(path("aa_plain"), path("aa_direct"), "");
+  ASSERT_GT(c.layers.size(), 9u);
+  for (size_t k = 0; k < c.layers.size(); ++k)
+    EXPECT_EQ(c.layers[k].max_grey_difference > 0, k < 9) << "layer " << k;
 }
 
 // A plate of members of two connectivities, by reuse: the member whose faces are not the

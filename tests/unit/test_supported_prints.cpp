@@ -223,7 +223,10 @@ TEST_F(SupportedPrintTest, WithoutSupportsTheCheckFindsIslands) {
   EXPECT_EQ(c.first_island_layer, raised.layers_below);
 }
 
-TEST_F(SupportedPrintTest, ElephantFootShrinksThePlatesFirstLayerOnlyAlikeBinaryAndAntiAliased) {
+// The SL1S's 0.2 mm elephant-foot compensation fades over its 10 faded layers from the pad's
+// bottom, as PrusaSlicer's does (faded_layers.h): each of the plate's layers 0 to 8 lights fewer
+// pixels than uncompensated, by less on each layer up, and layers 9 and above are untouched.
+TEST_F(SupportedPrintTest, ElephantFootShrinksThePlatesFadedLayersAlikeBinaryAndAntiAliased) {
   const test::FamilyOptions o = family_of("sphere");
   const std::vector<Mesh> placed =
       placed_on_plate({test::make_family_member(test::make_family_base(o), o, 1)});
@@ -231,6 +234,7 @@ TEST_F(SupportedPrintTest, ElephantFootShrinksThePlatesFirstLayerOnlyAlikeBinary
   PrinterProfile plain = sl1s(false);
   plain.elephant_foot_mm = 0;
   ASSERT_EQ(sl1s(false).elephant_foot_mm, 0.2);
+  ASSERT_EQ(sl1s(false).faded_layers, 10);
   export_plate(placed, s.options, plain, path("plain.sl1s"));
   export_plate(placed, s.options, sl1s(false), path("binary.sl1s"));
   PrinterProfile threshold = sl1s(true);
@@ -239,10 +243,16 @@ TEST_F(SupportedPrintTest, ElephantFootShrinksThePlatesFirstLayerOnlyAlikeBinary
   const StackComparison c = compare_mask_stacks(path("plain.sl1s"), path("binary.sl1s"), "");
   const test::StackSupport before = test::check_stack_support(path("plain.sl1s"), plain);
   const test::StackSupport after = test::check_stack_support(path("binary.sl1s"), plain);
-  std::printf("elephant foot 0.2 mm: plate layer 0 %zu -> %zu lit pixels\n", before.lit[0], after.lit[0]);
-  EXPECT_LT(after.lit[0], before.lit[0]);
-  EXPECT_GT(after.lit[0], 0u);
-  for (size_t k = 1; k < c.layers.size(); ++k) EXPECT_EQ(c.layers[k].max_grey_difference, 0) << "layer " << k;
+  ASSERT_GT(s.options.layers_below, 9u);  // the faded layers are the pad's
+  std::vector<size_t> fewer;
+  for (size_t k = 0; k < 9; ++k) {
+    ASSERT_LT(after.lit[k], before.lit[k]) << "layer " << k;
+    fewer.push_back(before.lit[k] - after.lit[k]);
+    if (k > 0) EXPECT_LT(fewer[k], fewer[k - 1]) << "layer " << k;
+  }
+  std::printf("elephant foot 0.2 mm: plate layer 0 %zu -> %zu lit pixels, layer 8 %zu -> %zu\n", before.lit[0],
+              after.lit[0], before.lit[8], after.lit[8]);
+  for (size_t k = 9; k < c.layers.size(); ++k) EXPECT_EQ(c.layers[k].max_grey_difference, 0) << "layer " << k;
   EXPECT_EQ(compare_mask_stacks(path("binary.sl1s"), path("gamma0.sl1s"), "").max_grey_difference, 0);
 }
 
@@ -250,7 +260,7 @@ TEST_F(SupportedPrintTest, SupportsJoinThePlateBelowTheirMembersAlikeInEveryWayO
   // Two members of a family (z edited in a band, so transfer re-slices some layers), each on a
   // column standing 7 layers below z_start and reaching 0.3 mm into it: the plate gains the 7
   // layers, the supports are sliced directly, and reuse (made where drawn and in ranges) and
-  // direct slicing (whole and in ranges) give the same masks, with the first layer compensated.
+  // direct slicing (whole and in ranges) give the same masks, with the faded layers compensated.
   test::FamilyOptions o;
   o.faces = 1500;
   o.height = 4;
@@ -296,10 +306,15 @@ TEST_F(SupportedPrintTest, SupportsJoinThePlateBelowTheirMembersAlikeInEveryWayO
     }
     for (size_t i = 1; i < outputs.size(); ++i)
       EXPECT_EQ(compare_mask_stacks(outputs[0], outputs[i], "").max_grey_difference, 0) << outputs[i];
-    // Below z_start only the columns: each layer lit on two 2 x 2 mm squares (40 x 40 pixels).
+    // Below z_start only the columns: each layer lit on two 2 x 2 mm squares (40 x 40 pixels),
+    // shrunk by the SL1S's 0.2 mm on layer 0, fading by a ninth a layer (faded_layers.h).
     const test::StackSupport c = test::check_stack_support(outputs[0], profile);
-    for (size_t k = 1; k < below; ++k) EXPECT_NEAR(double(c.lit[k]), 2 * 1600, 2 * 4 * 41) << "layer " << k;
-    EXPECT_LT(c.lit[0], c.lit[1]);  // compensated
+    ASSERT_EQ(profile.faded_layers, 10);
+    for (size_t k = 0; k < below; ++k) {
+      const double side = (2 - 2 * double(9 - k) * 0.2 / 9) / 0.05;
+      EXPECT_NEAR(double(c.lit[k]), 2 * side * side, 2 * 4 * 41) << "layer " << k;
+      if (k > 0) EXPECT_LT(c.lit[k - 1], c.lit[k]) << "layer " << k;
+    }
   }
   PlateJobOptions one = direct;
   one.supports.pop_back();

@@ -8,7 +8,7 @@
 #include <memory>
 #include <mutex>
 
-#include "slicereuse/plates/first_layer.h"
+#include "slicereuse/plates/faded_layers.h"
 #include "slicereuse/slicing/layer_chunks.h"
 #include "slicereuse/slicing/layer_planes.h"
 #include "slicereuse/slicing/slice_layers.h"
@@ -232,12 +232,23 @@ std::vector<SlicePart> plate_range(const std::vector<PlateMember>& members, cons
 }
 
 // The owners of the parts plate_range(members, ..., a, b) and MadeWhereDrawn::make (b = a + 1)
-// give, in their order: each member's, or its supports', for compensate_first_layer.
+// give, in their order: each member's, or its supports', for compensate_faded_layers.
 std::vector<size_t> part_owners(const std::vector<PlateMember>& members, size_t a, size_t b) {
   std::vector<size_t> owners;
   for (const PlateMember& p : members)
     if (std::max(a, p.offset) < std::min(b, p.end())) owners.push_back(p.owner);
   return owners;
+}
+
+// Per owner (member), its layers from the plate's layer 0 with its supports': what
+// compensate_faded_layers fades over, as PrusaSlicer over an object's from its pad's bottom.
+std::vector<size_t> object_layers(const std::vector<PlateMember>& members) {
+  std::vector<size_t> layers;
+  for (const PlateMember& p : members) {
+    if (p.owner >= layers.size()) layers.resize(p.owner + 1, 0);
+    layers[p.owner] = std::max(layers[p.owner], p.end());
+  }
+  return layers;
 }
 
 // A reused plate made a layer at a time where its masks are drawn (LayerMaker, export_masks.h):
@@ -443,11 +454,11 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
       const double share = direct_points > 0 ? 0.1 : 0;  // of the progress, for the direct slicing
       MadeWhereDrawn made(members, frame, sub_progress(progress, 0, share));
       st.ranges = 0;
+      const std::vector<size_t> objects = object_layers(members);
       st.masks = export_masks(LayerMaker{L, st.thickness, [&](size_t k, std::vector<SlicePart>& parts) {
                                            made.make(k, parts);
-                                           if (k == 0)
-                                             compensate_first_layer(parts, part_owners(members, 0, 1), profile,
-                                                                    frame.plane(0), frame.bottom(0), frame.thickness);
+                                           compensate_faded_layers(parts, k, part_owners(members, k, k + 1), objects,
+                                                                   profile, false);
                                          }},
                               profile, output_path, sub_progress(progress, share, 1), checks.get());
       made.stats(st);
@@ -461,15 +472,15 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
     first = plate_ranges(members, L, range_budget(o));
   st.ranges = first.size() - 1;
 
+  const std::vector<size_t> objects = object_layers(members);
   SliceChunks chunks{first, st.thickness, [&](size_t i, const Progress& range_progress) {
                        const auto t = std::chrono::steady_clock::now();
                        std::vector<SlicePart> parts =
                            plate_range(members, frame, first[i], first[i + 1], st, range_progress);
                        st.slicing_seconds += seconds_since(t);
                        if (o.whole_stack) o.whole_stack(parts);
-                       if (first[i] == 0)
-                         compensate_first_layer(parts, part_owners(members, 0, first[i + 1]), profile,
-                                                frame.plane(0), frame.bottom(0), frame.thickness);
+                       compensate_faded_layers(parts, first[i], part_owners(members, first[i], first[i + 1]),
+                                               objects, profile, true);
                        return parts;
                      }};
   st.masks = export_masks(chunks, profile, output_path, progress, checks.get());

@@ -23,8 +23,11 @@
 // member is) is sliced directly on the plate's planes from layer 0 up to its top, with no
 // encoding, and its layers follow the members' in each layer: the nonzero rule fills the union
 // of part and support where they meet.
-// Elephant foot (profile.elephant_foot_mm > 0): the plate's layer 0, all its parts together, is
-// replaced by compensate_elephant_foot's contours (elephant_foot.h) in every way of making it.
+// Elephant foot (profile.elephant_foot_mm > 0): each member's faded layers, counted from the
+// plate's layer 0 (its pad's bottom) and compensated with its supports together, apart from the
+// other members, are replaced by compensate_faded_layers' contours (faded_layers.h: the full
+// compensation on layer 0 fading to none over profile.faded_layers, as PrusaSlicer's) in every
+// way of making it.
 // Memory: reusing, each member's transfer is prepared once (ExactTransfer) and its layer k is
 // transferred where layer k's mask is drawn, on that thread (LayerMaker, export_masks.h), so the
 // plate holds a few layers of points plus those of the layers made directly beforehand (the

@@ -54,7 +54,8 @@ struct PrinterProfile {
   double exposure_s = 6;           // each layer's exposure
   double bottom_exposure_s = 35;   // the first layers' exposure
   int bottom_layers = 1;           // layers exposed bottom_exposure_s long
-  int faded_layers = 10;           // layers after those whose exposure steps down (SL1 numFade)
+  int faded_layers = 10;           // layers after those whose exposure steps down (SL1 numFade),
+                                   // and over which elephant_foot_mm fades
   double layer_move_s = 5;         // time between two exposures (tilt, or lift and retract)
 
   // Lift-and-retract printers (.goo, .ctb, Anycubic files): after each exposure the platform
@@ -69,9 +70,10 @@ struct PrinterProfile {
   // 0: the newest written.
   int file_version = 0;
 
-  // The layer on the build plate spreads (elephant foot): its mask is shrunk by this much
-  // (elephant_foot.h; PrusaSlicer's elefant_foot_compensation), keeping features at least the
-  // min width wide (elefant_foot_min_width). 0: no compensation.
+  // The layers on the build plate spread (elephant foot): the first is shrunk by this much, the
+  // next ones less, fading to none over faded_layers (faded_layers.h, elephant_foot.h;
+  // PrusaSlicer's elefant_foot_compensation), keeping features at least the min width wide
+  // (elefant_foot_min_width). 0: no compensation.
   double elephant_foot_mm = 0;
   double elephant_foot_min_width_mm = 0.2;
 };

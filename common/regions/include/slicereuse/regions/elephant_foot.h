@@ -1,6 +1,7 @@
 #pragma once
-// elephant_foot: the first layer shrunk against elephant-foot spread (PrusaSlicer's
-// elefant_foot_compensation and elefant_foot_min_width): the layer's region (layer_region.h)
+// elephant_foot: a layer shrunk against elephant-foot spread (PrusaSlicer's
+// elefant_foot_compensation and elefant_foot_min_width; faded_layers.h gives each of an object's
+// first layers its compensation): the layer's region (layer_region.h)
 // offset inwards by compensation_mm (miter joins), except where that would make a feature
 // narrower than min_width_mm: such features (those an opening by min_width_mm / 2 +
 // compensation_mm removes, at least 10 um wide: thinner slivers are the opening's rounding along
