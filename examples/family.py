@@ -4,7 +4,8 @@
                                       [--format EXT] [--direct] [--verify] [--keep-contours]
                                       [--plates [--spacing MM] [--placements FILE]]
                                       [--workers N | --scheduler tcp://HOST:PORT [--send-encoding]]
-                                      [--resume] [--strict] [--supports] [--require-printable]
+                                      [--resume] [--strict] [--supports]
+                                      [--require-printable | --no-check]
                                       MESH0 MESH1 ...
 
 Default: slices MESH0 once with encoding, then for each member MESH1 ...: reads it (STL, PLY or
@@ -27,6 +28,7 @@ Every print file is checked as it is written, as UVtools checks it: each entry (
 each plate member's) has "printability": {"islands", "overhangs", "resin_traps", "suction_cups",
 "touching_bounds"[, "trapped_mm3"]}. --require-printable: a member (or plate) whose file would
 hold an island, a resin trap or a suction cup is not written; its entry's "error" names each.
+--no-check: no check (it costs about half again a member's time; bench/RESULTS.md).
 Prints one JSON object: {"source": MESH0, "seconds": total, "source_seconds", "engine",
 "failed", "targets": [{"mesh", "layers", "points", "resliced_layers", "seconds", "output",
 "method", "worker", "printability"[, "min_similarity", "max_grey_difference"][, "resumed"]}
@@ -110,9 +112,13 @@ def main():
     ap.add_argument("--supports", action="store_true",
                     help="print every member on supports: MESH0's points transferred to every member "
                          "(--direct: generated on each)")
-    ap.add_argument("--require-printable", action="store_true",
-                    help="do not write a member (or plate) whose print file would hold an island, a resin trap or "
-                         "a suction cup; its entry's error names them")
+    checks = ap.add_mutually_exclusive_group()
+    checks.add_argument("--require-printable", action="store_const", dest="printability", const="require",
+                        default="check",
+                        help="do not write a member (or plate) whose print file would hold an island, a resin trap "
+                             "or a suction cup; its entry's error names them")
+    checks.add_argument("--no-check", action="store_const", dest="printability", const="off",
+                        help="do not check the print files' printability")
     ap.add_argument("--resume", action="store_true",
                     help="skip members whose outputs an earlier run made complete and valid")
     ap.add_argument("meshes", nargs="+", metavar="MESH", help="the sliced mesh, then its family members")
@@ -153,13 +159,13 @@ def main():
             result = sr.plates(args.meshes[0], args.meshes[1:], args.layer_thickness, args.out, profile=profile,
                                progress=bar, direct=args.direct, verify=args.verify, spacing_mm=args.spacing,
                                placements=args.placements, extension=extension, strict=args.strict,
-                               supports=args.supports, require_printable=args.require_printable, **engine)
+                               supports=args.supports, printability=args.printability, **engine)
         else:
             result = sr.family(args.meshes[0], args.meshes[1:], args.layer_thickness, args.out,
                                profile=profile, binary=not args.text, extension=extension, progress=bar,
                                direct=args.direct, verify=args.verify, keep_contours=args.keep_contours,
                                strict=args.strict, supports=args.supports,
-                               require_printable=args.require_printable, **engine)
+                               printability=args.printability, **engine)
     except Exception as e:  # pymeshlab.PyMeshLabException, OSError, RuntimeError, ValueError
         if sys.stderr.isatty():
             sys.stderr.write("\n")

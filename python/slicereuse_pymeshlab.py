@@ -113,7 +113,7 @@ class MemberJob(batch.Job):
     details: bool
     strict: bool
     supports: str
-    require_printable: bool
+    printability: str
 
 
 @dataclass
@@ -145,7 +145,7 @@ class PlateJob(batch.Job):
     plate_output: str
     check_output: str
     supports: str
-    require_printable: bool
+    printability: str
 
 
 def _encode_source(source, out, layer_thickness, epoch, resume, binary=True):
@@ -185,11 +185,25 @@ SUPPORT_KEYS = ("support_points", "kept", "moved", "added", "dropped")
 PRINTABILITY_KEYS = ("islands", "overhangs", "resin_traps", "suction_cups", "touching_bounds")
 
 
-def _printability(result, suffix=""):
+PRINTABILITY = ("check", "require", "off")
+
+
+def _check_parameters(printability):
+    """make_print_job's and make_plate_job's check parameters for printability: "check" (count the
+    findings), "require" (also refuse a file with an island, resin trap or suction cup), "off"."""
+    if printability not in PRINTABILITY:
+        raise ValueError(f"printability must be one of {', '.join(PRINTABILITY)}, not {printability!r}")
+    return {"check_printability": printability != "off", "require_printable": printability == "require"}
+
+
+def _add_printability(entry, result, suffix=""):
+    """The entry's "printability" from a checked job's result (a plate member's with suffix)."""
+    if result["islands"] < 0:  # not checked
+        return entry
     figures = {k: result[k + suffix] for k in PRINTABILITY_KEYS}
     if not suffix:
         figures["trapped_mm3"] = result["trapped_mm3"]
-    return figures
+    return dict(entry, printability=figures)
 
 
 def _generate_source_points(source, out, layer_thickness, epoch, resume):
@@ -245,7 +259,7 @@ def _job_supports(supports, direct, out, source, layer_thickness, epoch, resume)
 def family(source, targets, layer_thickness, out, profile=None, binary=True, progress=None,
            direct=False, verify=False, keep_contours=False, details=False, extension=None,
            workers=0, scheduler=None, resume=False, send_encoding=False, strict=False, supports=False,
-           require_printable=False):
+           printability="check"):
     """The production pipeline: one print job per family member, out/<member stem><extension>
     (one of print_file_extensions(), or "" for a folder of PNG images; None: the printer's own,
     printer_extension(profile's printer)).
@@ -271,11 +285,12 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     generates its own. Each entry then says "support_points", "kept", "moved", "added",
     "dropped" (as transfer_support_points; all but support_points 0 when generated) and
     "support_seconds" (the member's points and tree, inside its seconds).
-    Every print file is checked as it is written (UVtools' checks, docs/formats.md "Printability
-    report"): each entry's "printability" counts "islands", "overhangs", "resin_traps",
-    "suction_cups", "touching_bounds" and gives "trapped_mm3". require_printable=True: a member
-    whose file would hold an island, a resin trap or a suction cup is not written, and its entry's
-    "error" names each such finding, its layers and place.
+    printability="check" (the default): every print file is checked as it is written (UVtools'
+    checks, docs/formats.md "Printability report"), each entry's "printability" counting
+    "islands", "overhangs", "resin_traps", "suction_cups", "touching_bounds" and giving
+    "trapped_mm3"; "require": also, a member whose file would hold an island, a resin trap or a
+    suction cup is not written, and its entry's "error" names each such finding, its layers and
+    place; "off": no check (and no "printability").
 
     Where the members are made (slicereuse_batch.py): workers=0 (the default) in this process;
     workers=N an embedded Dask LocalCluster of N worker processes (None: one per two cores, slicereuse_batch.default_workers);
@@ -326,7 +341,8 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     parameters = dict(encoding=batch.file_identity(encoding) if encoding else None,
                       layer_thickness=layer_thickness, profile=profile, verify=verify, details=details,
                       strict=strict, supports=_supports_identity(member_supports),
-                      require_printable=require_printable)
+                      printability=printability)
+    _check_parameters(printability)
     jobs = []
     for target, stem in zip(targets, stems):
         output = out / f"{stem}{extension}"
@@ -339,7 +355,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
                               target=str(Path(target).resolve()), output=str(output), contours=str(contours or ""),
                               check=str(check or ""), layer_thickness=layer_thickness, profile=profile,
                               details=details, strict=strict, supports=member_supports,
-                              require_printable=require_printable))
+                              printability=printability))
     with batch.engine(workers, scheduler, setup=load) as engine:
         targets_out = _run_jobs(engine, jobs, _make_member, encoding, send_encoding, resume, progress, step, steps)
         engine.finish(_free_cached_memory)
@@ -404,11 +420,11 @@ def _make_member(job, encoding):
         supports = _support_parameters(job.supports)
         r = ms.apply_filter("make_print_job", mesh_file=job.target, encoding_file=encoding,
                             layer_thickness=job.layer_thickness, contour_file=job.contours, output_path=job.output,
-                            strict=job.strict, require_printable=job.require_printable, **supports,
+                            strict=job.strict, **_check_parameters(job.printability), **supports,
                             **job.profile)
-        entry = {"layers": r["layers"], "points": r["points"], "resliced_layers": r["resliced_layers"],
-                 "seconds": time.perf_counter() - t0, "output": job.output,
-                 "method": "reuse" if r["reused"] else "direct", "printability": _printability(r)}
+        entry = _add_printability({"layers": r["layers"], "points": r["points"],
+                                   "resliced_layers": r["resliced_layers"], "seconds": time.perf_counter() - t0,
+                                   "output": job.output, "method": "reuse" if r["reused"] else "direct"}, r)
         if job.supports:
             entry.update({k: r[k] for k in SUPPORT_KEYS}, support_seconds=r["support_seconds"])
         if encoding and not r["reused"]:
@@ -434,7 +450,7 @@ def _free_cached_memory():
 
 def plates(source, targets, layer_thickness, out, profile=None, progress=None, direct=False, verify=False,
            spacing_mm=2.0, placements=None, extension=None, workers=0, scheduler=None, resume=False,
-           strict=False, supports=False, require_printable=False):
+           strict=False, supports=False, printability="check"):
     """The lab's job: the targets arranged on build plates of the printer, one print file per
     plate, out/plate_<k><extension> (one of print_file_extensions(), or "" for folders of PNG images;
     None: the printer's own, printer_extension(profile's printer)), its top view
@@ -456,10 +472,10 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
     members' supports before placing them (placements then keep the supports' footprints apart),
     and each member of a plate's entry says "support_points", "kept", "moved", "added",
     "dropped"; the plate's entry "support_seconds".
-    Every plate is checked as it is written: its entry's "printability" (as family()'s), and each
-    member's its own counts (a finding goes to the member whose footprint holds it).
-    require_printable=True: a plate holding an island, a resin trap or a suction cup is not
-    written, its entry's "error" naming each such finding, its member and place.
+    printability as for family(): every plate checked as it is written, its entry's
+    "printability" (as family()'s) and each member's its own counts (a finding goes to the member
+    whose footprint holds it); "require": a plate holding an island, a resin trap or a suction cup
+    is not written, its entry's "error" naming each such finding, its member and place.
     Returns {"source", "members", "seconds", "arrange_seconds", "engine", "failed", "plates":
     [{"output", "layout", "members", "area_used", "layers", "points", "seconds", "worker"[,
     "min_similarity", "max_grey_difference"][, "resumed"]} or {"output", "layout", "members",
@@ -512,7 +528,7 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
         parameters = dict(placements=batch.file_identity(summary), encoding=batch.file_identity(encoding)
                           if encoding else None, layer_thickness=layer_thickness, profile=profile, verify=verify,
                           strict=strict, supports=_supports_identity(member_supports),
-                          require_printable=require_printable)
+                          printability=printability)
         jobs = []
         for k, plate in enumerate(layout["plates"], 1):
             output = plate["output"]
@@ -529,7 +545,7 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
                                  z_start=arranged["z_start"], profile=profile, strict=strict,
                                  plate_output=arrange.output,
                                  check_output=str(out / "direct" / f"plate{extension}") if verify else "",
-                                 supports=member_supports, require_printable=require_printable))
+                                 supports=member_supports, printability=printability))
         plates_out = _run_jobs(engine, jobs, _make_plate, encoding, False, resume, progress, 1, steps)
         engine.finish(_free_cached_memory)
     return {"source": str(source), "members": arranged["members"], "seconds": time.perf_counter() - start,
@@ -561,8 +577,9 @@ def _plate_member(member, encoding, result):
     """A plate member's summary entry: its name and method, and why when sliced for want of reuse;
     its support figures when it has supports; its printability."""
     name = member["name"]
-    member = dict(member, **{k: result[f"{k}_{name}"] for k in SUPPORT_KEYS if f"{k}_{name}" in result},
-                  printability=_printability(result, f"_{name}"))
+    member = _add_printability(
+        dict(member, **{k: result[f"{k}_{name}"] for k in SUPPORT_KEYS if f"{k}_{name}" in result}), result,
+        f"_{name}")
     if not encoding:
         return dict(member, method="direct")
     if result.get(f"sliced_directly_{name}"):
@@ -582,10 +599,10 @@ def _make_plate(job, encoding):
                       placements_file=job.summary, plate=job.plate, placements_output="", strict=job.strict,
                       **_support_parameters(job.supports), **job.profile)
         r = ms.apply_filter("make_plate_job", encoding_file=encoding, output_path=job.plate_output,
-                            require_printable=job.require_printable, **common)
+                            **_check_parameters(job.printability), **common)
         members = [_plate_member(m, encoding, r) for m in job.base["members"]]
-        entry = {"members": members, "layers": r["layers"], "points": r["points"],
-                 "seconds": time.perf_counter() - t0, "printability": _printability(r)}
+        entry = _add_printability({"members": members, "layers": r["layers"], "points": r["points"],
+                                   "seconds": time.perf_counter() - t0}, r)
         if job.supports:
             entry["support_seconds"] = r["support_seconds"]
         if job.check_output:

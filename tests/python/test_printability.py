@@ -48,7 +48,7 @@ def test_require_printable_refuses_the_plate_naming_its_findings(tmp_path):
 def test_require_printable_refuses_each_failing_member_and_writes_the_others(pymeshlab, tmp_path):
     hollow, cup, solid = write_printability_parts(tmp_path / "parts")
     r = sr.family(solid, [hollow, cup, solid], THICKNESS, tmp_path / "out", profile={"printer": "prusa_sl1s_speed"},
-                  direct=True, require_printable=True)
+                  direct=True, printability="require")
     assert r["failed"] == 2, r
     hollow_entry, cup_entry, solid_entry = r["targets"]
     assert "resin trap in hollow" in hollow_entry["error"], hollow_entry
@@ -73,3 +73,12 @@ def test_shells_sharing_corners_print_as_their_union(pymeshlab, tmp_path):
         assert results[shared]["ignored_open_contours"] == 0 and results[shared]["suction_cups"] == 1, results
     for a in sorted((tmp_path / "False").glob("*.png")):
         assert a.read_bytes() == (tmp_path / "True" / a.name).read_bytes(), a.name
+
+
+def test_no_check_leaves_the_files_unchecked(tmp_path):
+    hollow, cup, solid = write_printability_parts(tmp_path / "parts")
+    run = family_py("--plates", "--direct", "--no-check", "--out", tmp_path / "out", solid, hollow, cup)
+    assert run.returncode == 0, run.stderr
+    [plate] = json.loads(run.stdout)["plates"]
+    assert "printability" not in plate and all("printability" not in m for m in plate["members"]), plate
+    assert family_py("--no-check", "--require-printable", "--out", tmp_path / "x", solid, hollow).returncode == 2
