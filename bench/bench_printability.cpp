@@ -1,5 +1,6 @@
 // Cost of the printability checks (check_layers.h) per layer on a real print file, apart from
-// reading and decoding its layers (MaskStack).
+// reading and decoding its layers into runs (MaskStack, mask_runs_of): the checks a job runs on
+// the rasterizer's runs.
 // Usage: bench_printability FILE PIXEL_X_MM PIXEL_Y_MM LAYER_MM
 // Prints the layers, the lit share of the pixels, the time to read and decode them, the
 // checker's time per layer (mean, median, largest, and its layer), the findings per kind and each
@@ -29,7 +30,7 @@ int main(int argc, char** argv) {
   std::vector<uint8_t> bytes;
   std::vector<double> check_ms;
   double decode_ms = 0;
-  uint64_t lit = 0, pixels = 0;
+  uint64_t lit = 0, pixels = 0, mask_runs = 0;
   int width = 0, height = 0;
   for (size_t k = 0; k < stack.layers(); ++k) {
     MaskImage image;
@@ -42,7 +43,11 @@ int main(int argc, char** argv) {
     pixels += image.pixels.size();
     for (const uint8_t p : image.pixels) lit += p != 0;
     t = Clock::now();
-    checker.add_layer(std::move(image));
+    MaskRuns runs = mask_runs_of(image);  // what the rasterizer gives a job's checks
+    decode_ms += ms_since(t);
+    mask_runs += runs.levels.size();
+    t = Clock::now();
+    checker.add_layer(std::move(runs));
     check_ms.push_back(ms_since(t));
   }
   auto t = Clock::now();
@@ -54,7 +59,8 @@ int main(int argc, char** argv) {
   for (const double v : check_ms) total += v;
   const size_t worst = size_t(std::max_element(check_ms.begin(), check_ms.end()) - check_ms.begin());
   std::printf("%zu layers of %d x %d, %.2f%% of pixels lit\n", r.layers, width, height, 100.0 * double(lit) / double(pixels));
-  std::printf("read + decode: %.1f ms (%.2f ms per layer)\n", decode_ms, decode_ms / double(r.layers));
+  std::printf("read + decode into runs: %.1f ms (%.2f ms per layer), %.0f runs of one level per layer\n", decode_ms,
+              decode_ms / double(r.layers), double(mask_runs) / double(r.layers));
   std::printf("check: %.1f ms, per layer mean %.2f ms, median %.2f ms, largest %.2f ms (layer %zu); finish %.2f ms\n",
               total, total / double(r.layers), sorted[sorted.size() / 2], sorted.back(), worst, finish_ms);
   for (size_t kind = 0; kind < kFindingKinds; ++kind)

@@ -275,4 +275,37 @@ void decode_mask_png(const uint8_t* data, size_t size, const std::string& name, 
   if (!done) decode_any(data, size, name, out);
 }
 
+MaskRuns mask_runs_of(const MaskImage& image) {
+  MaskRuns r;
+  r.width = image.width;
+  r.height = image.height;
+  r.row_begin.reserve(size_t(image.height) + 1);
+  r.row_begin.push_back(0);
+  const int w = image.width;
+  for (int y = 0; y < image.height; ++y) {
+    const uint8_t* row = image.pixels.data() + size_t(y) * size_t(w);
+    int x = 0;
+    while (x < w) {
+      // Whole words of unlit pixels are skipped at once.
+      uint64_t word;
+      if (x + 8 <= w && (std::memcpy(&word, row + x, 8), word == 0)) {
+        x += 8;
+        continue;
+      }
+      const uint8_t level = row[x];
+      if (level == 0) {
+        ++x;
+        continue;
+      }
+      const int lo = x;
+      while (x < w && row[x] == level) ++x;
+      r.columns.push_back(uint16_t(lo));
+      r.columns.push_back(uint16_t(x));
+      r.levels.push_back(level);
+    }
+    r.row_begin.push_back(uint32_t(r.levels.size()));
+  }
+  return r;
+}
+
 }  // namespace slicereuse

@@ -29,39 +29,6 @@ uint64_t LevelRuns::pixels() const {
   return n;
 }
 
-MaskRuns mask_runs_of(const MaskImage& image) {
-  MaskRuns r;
-  r.width = image.width;
-  r.height = image.height;
-  r.row_begin.reserve(size_t(image.height) + 1);
-  r.row_begin.push_back(0);
-  const int w = image.width;
-  for (int y = 0; y < image.height; ++y) {
-    const uint8_t* row = image.pixels.data() + size_t(y) * size_t(w);
-    int x = 0;
-    while (x < w) {
-      // Whole words of unlit pixels are skipped at once.
-      uint64_t word;
-      if (x + 8 <= w && (std::memcpy(&word, row + x, 8), word == 0)) {
-        x += 8;
-        continue;
-      }
-      const uint8_t level = row[x];
-      if (level == 0) {
-        ++x;
-        continue;
-      }
-      const int lo = x;
-      while (x < w && row[x] == level) ++x;
-      r.columns.push_back(uint16_t(lo));
-      r.columns.push_back(uint16_t(x));
-      r.levels.push_back(level);
-    }
-    r.row_begin.push_back(uint32_t(r.levels.size()));
-  }
-  return r;
-}
-
 std::vector<LevelRuns> runs_at_levels(const MaskRuns& mask, const std::vector<uint8_t>& levels) {
   std::vector<LevelRuns> out;
   for (size_t j = 0; j < levels.size(); ++j) {

@@ -3,8 +3,6 @@
 // runs are [lo[i], hi[i]) for i in [row_begin[r], row_begin[r+1]), increasing and disjoint.
 // The checks work on these runs rather than on pixels: a plate's layer is mostly unlit.
 //
-// mask_runs_of: an image -> its runs of equal non-zero levels (mask_png.h's MaskRuns, what the
-//   rasterizer gives); it skips unlit pixels eight at a time.
 // runs_at_levels: a mask's runs -> for each of levels (ascending), the runs of its pixels >= that
 //   level, all in one pass over the mask's runs.
 // complement_runs: the runs of the pixels in no run of runs (same width and height).
@@ -31,7 +29,6 @@ struct LevelRuns {
   uint64_t pixels() const;
 };
 
-MaskRuns mask_runs_of(const MaskImage& image);
 std::vector<LevelRuns> runs_at_levels(const MaskRuns& mask, const std::vector<uint8_t>& levels);
 LevelRuns complement_runs(const LevelRuns& runs);
 LevelRuns subtract_runs(const LevelRuns& a, const LevelRuns& b);

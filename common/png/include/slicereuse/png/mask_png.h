@@ -46,6 +46,10 @@ struct MaskRuns {
   std::vector<uint8_t> levels;      // 1 per run
 };
 
+// mask_runs_of: an image -> its runs of equal non-zero levels (what the rasterizer gives); it
+// skips unlit pixels eight at a time.
+MaskRuns mask_runs_of(const MaskImage& image);
+
 void encode_mask_png(const uint8_t* pixels, int width, int height, int bits,
                      std::vector<uint8_t>& out);
 void encode_mask_png(const MaskRuns& runs, std::vector<uint8_t>& out);
