@@ -342,7 +342,7 @@ TEST(SupportTree, SphereAndHandleEnterThePartOnlyAtHeads) {
     ASSERT_GT(pts.size(), 10u);
     const double ground_z = support_ground_z(0, kLayer, SupportTreeOptions{});
     const SupportTree tree = build_support_tree(part, pts, ground_z, SupportTreeOptions{});
-    EXPECT_EQ(tree.pillars + tree.on_part, pts.size());
+    EXPECT_EQ(tree.pillars + tree.on_part + tree.bridged, pts.size());
     if (std::string(name) == "handle") EXPECT_GT(tree.on_part, 0u);
     expect_feet_on_part(part, tree, SupportTreeOptions{});
     EXPECT_GT(tree.pillars, 0u);
