@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include "bridge_path.h"
 #include "support_heads.h"
@@ -76,13 +75,8 @@ void route_heads(const PartColumns& columns, const SupportPoints& points, const 
   const double r_front = o.head_front_diameter_mm / 2, r_pillar = o.pillar_diameter_mm / 2;
   const double r_base = o.base_diameter_mm / 2, pen = o.head_penetration_mm;
   const bool joins = o.max_bridge_length_mm > 0 && o.max_bridges_on_pillar > 0;
-  std::vector<size_t> order(s.heads.size());
-  std::iota(order.begin(), order.end(), size_t(0));
-  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-    return points.xyz[3 * s.heads[a].point + 2] < points.xyz[3 * s.heads[b].point + 2];
-  });
   std::vector<size_t> bridges_on;  // per pillar, the heads' bridges ending on it
-  for (const size_t h : order) {
+  for (size_t h = 0; h < s.heads.size(); ++h) {
     SupportHead& head = s.heads[h];
     const WayDown& way = ways[h];
     const double x = head.cone.back[0], y = head.cone.back[1];

@@ -8,7 +8,7 @@
 //     (head_front_diameter_mm) sits head_penetration_mm inside the part above the point (halfway
 //     into a thinner wall), widening to the pillar's diameter head_width_mm below the point; and
 //     its way down, by vertical rays through the pillar's axis and rim (pillar_path.h);
-//   2. routes (support_routes.h), the heads taken lowest first: where the part below is nearer
+//   2. routes (support_routes.h), the heads in order: where the part below is nearer
 //     than the head's width, the head ends in it; else the head joins a neighbouring pillar by a
 //     bridge descending at least critical_angle_deg (at most max_bridge_length_mm long, at most
 //     max_bridges_on_pillar on a pillar, clear of the part) where that takes less resin than a
