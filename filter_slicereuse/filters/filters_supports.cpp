@@ -191,9 +191,10 @@ Result run_build(const BuildParams& p, Host& host) {
   host.add_mesh_layer(host.current_mesh_name() + " supports", tree.mesh);
   const double seconds = seconds_since(start);
   host.log(format("Build Supports: %zu points (%zu dropped: their surface faces up), %zu pillars to the %s, %zu "
-                  "ending on the part, ground at z %g mm (%zu layers below the part's first), %zu faces, %.3f s",
-                  points.size(), tree.up_facing, tree.pillars, p.tree.pad_enable ? "pad" : "plate", tree.on_part,
-                  tree.ground_z, below, tree.mesh.faces(), seconds));
+                  "heads bridged to a neighbour's pillar, %zu ending on the part, ground at z %g mm (%zu layers below "
+                  "the part's first), %zu faces, %.3f s",
+                  points.size(), tree.up_facing, tree.pillars, p.tree.pad_enable ? "pad" : "plate", tree.bridged,
+                  tree.on_part, tree.ground_z, below, tree.mesh.faces(), seconds));
   return {{"points", int64_t(points.size())},
           {"pillars", int64_t(tree.pillars)},
           {"on_part", int64_t(tree.on_part)},

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "bridge_path.h"
+#include "pillar_grid.h"
 
 namespace slicereuse {
 
@@ -49,16 +50,19 @@ bool zig_zag(const PartColumns& columns, size_t a, size_t b, double slope, Suppo
 void link_tall_pillars(const PartColumns& columns, const SupportTreeOptions& o, SupportStructure& s) {
   if (!(o.max_pillar_link_distance_mm > 0)) return;
   const double slope = std::tan(o.critical_angle_deg * M_PI / 180);
+  PillarGrid on_ground(o.max_pillar_link_distance_mm);
+  for (size_t p = 0; p < s.pillars.size(); ++p)
+    if (s.pillars[p].end == PillarEnd::Ground) on_ground.add(p, s.pillars[p].x, s.pillars[p].y);
   std::vector<size_t> links(s.pillars.size(), 0);
   std::set<std::pair<size_t, size_t>> linked;
   for (size_t a = 0; a < s.pillars.size(); ++a) {
     const SupportPillar& p = s.pillars[a];
     if (p.end != PillarEnd::Ground || links[a] >= links_needed(p)) continue;
     std::vector<std::pair<double, size_t>> near;  // (distance, pillar)
-    for (size_t b = 0; b < s.pillars.size(); ++b) {
+    for (const size_t b : on_ground.near(p.x, p.y)) {
       const SupportPillar& q = s.pillars[b];
       const double d = std::hypot(q.x - p.x, q.y - p.y);
-      if (b != a && q.end == PillarEnd::Ground && d >= p.radius + q.radius && d <= o.max_pillar_link_distance_mm &&
+      if (b != a && d >= p.radius + q.radius && d <= o.max_pillar_link_distance_mm &&
           !linked.count({std::min(a, b), std::max(a, b)}))
         near.emplace_back(d, b);
     }

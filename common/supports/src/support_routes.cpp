@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "bridge_path.h"
+#include "pillar_grid.h"
 #include "support_heads.h"
 
 namespace slicereuse {
@@ -16,6 +17,11 @@ constexpr double kFootRiseMm = 1;
 
 double cylinder_mm3(double r, double height) { return M_PI * r * r * height; }
 double cone_mm3(double r0, double r1, double height) { return M_PI * height * (r0 * r0 + r0 * r1 + r1 * r1) / 3; }
+
+// How far sideways the longest bridge reaches, at the critical angle.
+double max_bridge_run(const SupportTreeOptions& o) {
+  return o.max_bridge_length_mm * std::cos(o.critical_angle_deg * M_PI / 180);
+}
 
 // A head's bridge to a pillar: its upper end under the head (upper_z below the head's back
 // when the head needs a pillar of its own down to it), its lower end on the pillar.
@@ -41,15 +47,15 @@ size_t add_pillar(SupportStructure& s, size_t head, double z_bottom, PillarEnd e
 }
 
 // The cheapest clear bridge from head h to a pillar on the ground (see route_heads).
-Join cheapest_join(const PartColumns& columns, const SupportStructure& s, const std::vector<size_t>& bridges_on,
-                   size_t h, const WayDown& way, const SupportTreeOptions& o) {
+Join cheapest_join(const PartColumns& columns, const SupportStructure& s, const PillarGrid& on_ground,
+                   const std::vector<size_t>& bridges_on, size_t h, const WayDown& way, const SupportTreeOptions& o) {
   const double r = o.pillar_diameter_mm / 2, slope = std::tan(o.critical_angle_deg * M_PI / 180);
-  const double max_run = o.max_bridge_length_mm * std::cos(o.critical_angle_deg * M_PI / 180);
+  const double max_run = max_bridge_run(o);
   const Point3& back = s.heads[h].cone.back;
   std::vector<Join> joins;
-  for (size_t p = 0; p < s.pillars.size(); ++p) {
+  for (const size_t p : on_ground.near(back[0], back[1])) {
     const SupportPillar& q = s.pillars[p];
-    if (q.end != PillarEnd::Ground || bridges_on[p] >= o.max_bridges_on_pillar) continue;
+    if (bridges_on[p] >= o.max_bridges_on_pillar) continue;
     const double run = std::hypot(q.x - back[0], q.y - back[1]);
     if (run < r || run > max_run) continue;
     Join j{p, back[2], back[2] - run * slope};
@@ -74,7 +80,9 @@ void route_heads(const PartColumns& columns, const SupportPoints& points, const 
                  double floor, const SupportTreeOptions& o, SupportStructure& s) {
   const double r_front = o.head_front_diameter_mm / 2, r_pillar = o.pillar_diameter_mm / 2;
   const double r_base = o.base_diameter_mm / 2, pen = o.head_penetration_mm;
-  const bool joins = o.max_bridge_length_mm > 0 && o.max_bridges_on_pillar > 0;
+  const double max_run = max_bridge_run(o);
+  const bool joins = max_run > 0 && o.max_bridges_on_pillar > 0;
+  PillarGrid on_ground(joins ? max_run : 1);
   std::vector<size_t> bridges_on;  // per pillar, the heads' bridges ending on it
   for (size_t h = 0; h < s.heads.size(); ++h) {
     SupportHead& head = s.heads[h];
@@ -91,7 +99,7 @@ void route_heads(const PartColumns& columns, const SupportPoints& points, const 
     const double back = head.cone.back[2];
     const bool blocked = !std::isnan(way.blocked_z);
     if (joins && back > floor) {
-      const Join j = cheapest_join(columns, s, bridges_on, h, way, o);
+      const Join j = cheapest_join(columns, s, on_ground, bridges_on, h, way, o);
       const double base_top = std::min(floor + o.base_height_mm, back);
       const double own_mm3 = cylinder_mm3(r_pillar, back - base_top) + cone_mm3(r_base, r_pillar, base_top - floor);
       if (j.pillar != kNoPiece && (blocked || j.mm3 < own_mm3)) {
@@ -131,6 +139,7 @@ void route_heads(const PartColumns& columns, const SupportPoints& points, const 
     s.pillars[p].base_radius = r_base;
     s.pillars[p].base_top = std::min(floor + o.base_height_mm, back);
     bridges_on.push_back(0);
+    if (joins) on_ground.add(p, x, y);
   }
 }
 
