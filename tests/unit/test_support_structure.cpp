@@ -338,7 +338,6 @@ TEST(SupportStructure, AHeadJoinsItsNeighboursPillarByABridge) {
 // down to where a 45 degree bridge reaches the neighbour's head's back.
 TEST(SupportStructure, AHigherHeadComesDownOnAPillarOfItsOwnToItsBridge) {
   const Mesh part = joined(test::make_box(0, 0, 5, 4, 4, 6), test::make_box(4, 0, 12, 8, 4, 13));
-  const SupportPoints pts = points_under(part, {{6, 2}});
   SupportPoints both = points_under(part, {{2, 2}, {6, 2}});
   both.xyz[5] = 12;  // the second on the upper box
   const SupportTreeOptions o;
