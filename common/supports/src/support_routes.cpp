@@ -30,11 +30,13 @@ struct Join {
   double upper_z = 0, lower_z = 0, mm3 = INFINITY;
 };
 
+// A junction at `at`, on the pillar or at the back of the head given (kNoPiece for the other).
 size_t add_junction(SupportStructure& s, const Point3& at, size_t pillar, size_t head) {
   s.junctions.push_back({at, pillar, head});
   return s.junctions.size() - 1;
 }
 
+// A pillar from the head's back down to z_bottom, which the head then rests on.
 size_t add_pillar(SupportStructure& s, size_t head, double z_bottom, PillarEnd end, double r) {
   const SupportCone& c = s.heads[head].cone;
   SupportPillar p;
@@ -84,6 +86,10 @@ void route_heads(const PartColumns& columns, const SupportPoints& points, const 
   const bool joins = max_run > 0 && o.max_bridges_on_pillar > 0;
   PillarGrid on_ground(joins ? max_run : 1);
   std::vector<size_t> bridges_on;  // per pillar, the heads' bridges ending on it
+  auto new_pillar = [&](size_t h, double z_bottom, PillarEnd end) {
+    bridges_on.push_back(0);
+    return add_pillar(s, h, z_bottom, end, r_pillar);
+  };
   for (size_t h = 0; h < s.heads.size(); ++h) {
     SupportHead& head = s.heads[h];
     const WayDown& way = ways[h];
@@ -98,15 +104,14 @@ void route_heads(const PartColumns& columns, const SupportPoints& points, const 
     }
     const double back = head.cone.back[2];
     const bool blocked = !std::isnan(way.blocked_z);
+    const double base_top = std::min(floor + o.base_height_mm, back);
     if (joins && back > floor) {
       const Join j = cheapest_join(columns, s, on_ground, bridges_on, h, way, o);
-      const double base_top = std::min(floor + o.base_height_mm, back);
       const double own_mm3 = cylinder_mm3(r_pillar, back - base_top) + cone_mm3(r_base, r_pillar, base_top - floor);
       if (j.pillar != kNoPiece && (blocked || j.mm3 < own_mm3)) {
         size_t upper;
         if (j.upper_z < back) {
-          const size_t p = add_pillar(s, h, j.upper_z, PillarEnd::Bridge, r_pillar);
-          bridges_on.push_back(0);
+          const size_t p = new_pillar(h, j.upper_z, PillarEnd::Bridge);
           upper = add_junction(s, {x, y, j.upper_z}, p, kNoPiece);
         } else {
           head.rest = HeadRest::Bridge;
@@ -125,8 +130,7 @@ void route_heads(const PartColumns& columns, const SupportPoints& points, const 
       // rather than ending in the air on the axis.
       const double foot_top = std::min(full_back, way.blocked_z + kFootRiseMm);
       const double foot_bottom = std::max(way.blocked_z - pen, floor);
-      const size_t p = add_pillar(s, h, foot_top, PillarEnd::Foot, r_pillar);
-      bridges_on.push_back(0);
+      const size_t p = new_pillar(h, foot_top, PillarEnd::Foot);
       SupportFoot f;
       f.cone = {{way.blocked_x, way.blocked_y, foot_bottom}, {x, y, foot_top}, r_front, r_pillar};
       f.penetration = way.blocked_z - foot_bottom;
@@ -135,10 +139,9 @@ void route_heads(const PartColumns& columns, const SupportPoints& points, const 
       s.pillars[p].foot = s.feet.size() - 1;
       continue;
     }
-    const size_t p = add_pillar(s, h, floor, PillarEnd::Ground, r_pillar);
+    const size_t p = new_pillar(h, floor, PillarEnd::Ground);
     s.pillars[p].base_radius = r_base;
-    s.pillars[p].base_top = std::min(floor + o.base_height_mm, back);
-    bridges_on.push_back(0);
+    s.pillars[p].base_top = base_top;
     if (joins) on_ground.add(p, x, y);
   }
 }
