@@ -4,10 +4,9 @@
 
 namespace slicereuse {
 
-namespace {
-// The point's own face lies at its height: the wall above it starts higher than this.
-constexpr double kWallEpsilonMm = 1e-6;
-}  // namespace
+double depth_in_wall(double wall_mm, const SupportTreeOptions& o) {
+  return std::isnan(wall_mm) ? o.head_penetration_mm : std::min(o.head_penetration_mm, wall_mm / 2);
+}
 
 double head_radius_at(const SupportHead& head, double z, const SupportPoints& points, const SupportTreeOptions& o) {
   const double r_pillar = o.pillar_diameter_mm / 2;
@@ -19,14 +18,13 @@ std::vector<SupportHead> place_heads(const PartColumns& columns, const SupportPo
                                      const SupportTreeOptions& o, std::vector<WayDown>& ways) {
   std::vector<SupportHead> heads;
   ways.clear();
-  const double pen = o.head_penetration_mm;
   for (size_t i = 0; i < points.size(); ++i) {
     if (faces_up(points, i)) continue;
     const double x = points.xyz[3 * i], y = points.xyz[3 * i + 1], z = points.xyz[3 * i + 2];
     SupportHead h;
     h.point = i;
     const double wall_top = columns.lowest_hit_above(x, y, z + kWallEpsilonMm);
-    h.penetration = std::isnan(wall_top) ? pen : std::min(pen, (wall_top - z) / 2);
+    h.penetration = depth_in_wall(wall_top - z, o);
     h.cone.r_tip = o.head_front_diameter_mm / 2;
     h.cone.tip = {x, y, z + h.penetration};
     const double full_back = z - o.head_width_mm;

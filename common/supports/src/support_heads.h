@@ -20,6 +20,14 @@ namespace slicereuse {
 std::vector<SupportHead> place_heads(const PartColumns& columns, const SupportPoints& points, double floor,
                                      const SupportTreeOptions& options, std::vector<WayDown>& ways);
 
+// How deep a head goes into a wall of the given thickness (NaN: no other side met): the
+// penetration, or half the wall where that is thinner than twice it, so that it does not come
+// out of the other side.
+double depth_in_wall(double wall_mm, const SupportTreeOptions& options);
+
+// The wall above or below a point: surfaces nearer than this are its own face.
+constexpr double kWallEpsilonMm = 1e-6;
+
 // Head h's radius at height z, between its full width's bottom (head_width_mm below its point,
 // the pillar's radius) and its tip.
 double head_radius_at(const SupportHead& head, double z, const SupportPoints& points,

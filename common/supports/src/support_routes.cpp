@@ -96,7 +96,9 @@ void route_heads(const PartColumns& columns, const SupportPoints& points, const 
     const double x = head.cone.back[0], y = head.cone.back[1];
     const double full_back = points.xyz[3 * head.point + 2] - o.head_width_mm;
     if (way.axis_z > full_back) {
-      const double end = std::max({way.axis_z - pen, full_back, floor});
+      // Into the part below as deep as into the part above: not out of a thin wall's underside.
+      const double wall = way.axis_z - columns.highest_hit(x, y, way.axis_z - kWallEpsilonMm, floor);
+      const double end = std::max({way.axis_z - depth_in_wall(wall, o), full_back, floor});
       head.cone.back[2] = end;
       head.cone.r_back = head_radius_at(head, end, points, o);
       head.rest = HeadRest::Part;

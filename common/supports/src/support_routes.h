@@ -5,8 +5,8 @@
 // route_heads: takes the heads in order (not by height: points a rounding apart keep their
 // order, and so their structure) and gives each its rest:
 //   - the part, when the part below is nearer than the head's width (ways[h].axis_z above its
-//     full width's bottom): the head's back moves down into the part, as deep as its tip
-//     penetrates, not below floor nor its full width;
+//     full width's bottom): the head's back moves down into the part, head_penetration_mm deep
+//     or halfway through a thinner wall (depth_in_wall), not below floor nor its full width;
 //   - a bridge to a pillar on the ground of an earlier head (PrusaSlicer's connect_to_nearpillar): from
 //     the head's back, or from a pillar of its own down to where the bridge starts, to the
 //     pillar's axis, descending at critical_angle_deg, at most max_bridge_length_mm long, ending
