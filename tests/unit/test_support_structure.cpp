@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "error_of.h"
 #include "family.h"
 #include "shapes.h"
 #include "slicereuse/crossparam/surface_grid.h"
@@ -437,4 +438,17 @@ TEST(SupportStructure, JoiningHeadsSavesResinOnAnEarShell) {
   EXPECT_GT(joined_tree.bridged, 0u);
   EXPECT_EQ(apart.bridged, 0u);
   EXPECT_LT(test::signed_volume(joined_tree.mesh), test::signed_volume(apart.mesh));
+}
+
+TEST(SupportStructure, BridgeOptionsInWords) {
+  const Mesh part = test::make_box(0, 0, 10, 10, 4, 12);
+  const SupportPoints pts = points_under(part, {{3, 2}});
+  SupportTreeOptions flat;
+  flat.critical_angle_deg = 90;
+  EXPECT_ERROR(build_support_structure(part, pts, -6, flat),
+               "the supports' critical angle is 90 degrees; it must be more than 0 and less than 90");
+  SupportTreeOptions negative;
+  negative.max_bridge_length_mm = -1;
+  EXPECT_ERROR(build_support_structure(part, pts, -6, negative),
+               "the support option max_bridge_length_mm is -1 mm; it must be a finite, non-negative number");
 }

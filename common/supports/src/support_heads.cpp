@@ -1,5 +1,6 @@
 #include "support_heads.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace slicereuse {

@@ -9,7 +9,7 @@
 //     into a thinner wall), widening to the pillar's diameter head_width_mm below the point; and
 //     its way down, by vertical rays through the pillar's axis and rim (pillar_path.h);
 //   2. routes (support_routes.h), the heads in order: where the part below is nearer
-//     than the head's width, the head ends in it; else the head joins a neighbouring pillar by a
+//     than the head's width, the head ends in it (as deep as its tip goes); else the head joins a neighbouring pillar by a
 //     bridge descending at least critical_angle_deg (at most max_bridge_length_mm long, at most
 //     max_bridges_on_pillar on a pillar, clear of the part) where that takes less resin than a
 //     pillar of its own, or where its own way down is blocked; else a pillar of pillar_diameter_mm
@@ -32,7 +32,8 @@
 // No points: no structure (an empty mesh, ground_z set); no pillar reaching the ground: no pad.
 // Throws Error when a point (not facing up) lies at or below the pad's top (ground_z without a
 // pad), the structure would be taller than max_height_mm ("... pillar of H mm, taller than the
-// printer's ... mm"), an option or ground_z is not a finite number of the right sign, the pad's
+// printer's ... mm"), an option or ground_z is not a finite number of the right sign (the critical
+// angle not within (0, 90) degrees), the pad's
 // walls slope in by more than the base's radius and brim, or the points are inconsistent
 // (validate_support_points) or the part has no faces.
 #include <cstddef>
