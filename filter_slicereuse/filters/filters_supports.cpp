@@ -191,11 +191,13 @@ Result run_build(const BuildParams& p, Host& host) {
   host.add_mesh_layer(host.current_mesh_name() + " supports", tree.mesh);
   const double seconds = seconds_since(start);
   host.log(format("Build Supports: %zu points (%zu dropped: their surface faces up), %zu pillars to the %s, %zu "
-                  "ending on the part, ground at z %g mm (%zu layers below the part's first), %zu faces, %.3f s",
-                  points.size(), tree.up_facing, tree.pillars, p.tree.pad_enable ? "pad" : "plate", tree.on_part,
-                  tree.ground_z, below, tree.mesh.faces(), seconds));
+                  "heads bridged to a neighbour's pillar, %zu ending on the part, ground at z %g mm (%zu layers below "
+                  "the part's first), %zu faces, %.3f s",
+                  points.size(), tree.up_facing, tree.pillars, p.tree.pad_enable ? "pad" : "plate", tree.bridged,
+                  tree.on_part, tree.ground_z, below, tree.mesh.faces(), seconds));
   return {{"points", int64_t(points.size())},
           {"pillars", int64_t(tree.pillars)},
+          {"bridged", int64_t(tree.bridged)},
           {"on_part", int64_t(tree.on_part)},
           {"layers_below", int64_t(below)},
           {"ground_z", tree.ground_z},
@@ -244,7 +246,9 @@ FilterSpec build_supports_filter() {
       "<p>Builds the current mesh's support structure from its support points (a point layer, or a "
       "support-points file), after PrusaSlicer's SLA supports with its SL1S defaults: at each point a head "
       "(a cone whose tip enters the part), a pillar down to the pad or the plate standing on a base cone, or "
-      "onto the part with a small head where the way down is blocked; optionally a pad under it all. A point "
+      "onto the part with a small head where the way down is blocked, or, where that takes less resin or the "
+      "way down is blocked, a bridge at 45 degrees to a neighbouring pillar; pillars taller than 15 mm linked "
+      "to a neighbour by bridges; optionally a pad under it all. A point "
       "whose surface faces up (within 30 degrees of straight up) gets none, as in PrusaSlicer.</p>"
       "<p>The part is not moved: the supports stand <i>object elevation</i> (rounded to whole layers) below "
       "its first layer, so the print jobs slice the part on its own planes and add those layers below it. "
@@ -252,7 +256,8 @@ FilterSpec build_supports_filter() {
       kReference;
   return typed_filter({FilterId::BuildSupports, "Build Supports", "build_supports", description,
                        Arity::CurrentMesh, kLayerClass, true},
-                      build_params(), run_build, {"points", "pillars", "on_part", "layers_below", "ground_z", "seconds"});
+                      build_params(), run_build,
+                      {"points", "pillars", "bridged", "on_part", "layers_below", "ground_z", "seconds"});
 }
 
 }  // namespace slicereuse::plugin

@@ -64,7 +64,7 @@ TEST_F(SupportFilters, PointsAreGeneratedTransferredAndBuiltIntoSupports) {
   const FilterSpec& build = spec_named("build_supports");
   const Result from_file = build.run(defaults(build, {{"support_points_file", path("member.srp")}}), host);
   EXPECT_EQ(keys_of(from_file),
-            (std::set<std::string>{"points", "pillars", "on_part", "layers_below", "ground_z", "seconds"}));
+            (std::set<std::string>{"points", "pillars", "bridged", "on_part", "layers_below", "ground_z", "seconds"}));
   EXPECT_EQ(count(from_file, "points"), int64_t(member.size()));
   EXPECT_EQ(count(from_file, "layers_below"), 60);  // 5 mm and the pad's 1 mm in layers of 0.1 mm
   EXPECT_NEAR(std::get<double>(from_file.at("ground_z")), -5 - 6.0, 1e-9);

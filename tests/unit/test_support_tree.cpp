@@ -342,7 +342,7 @@ TEST(SupportTree, SphereAndHandleEnterThePartOnlyAtHeads) {
     ASSERT_GT(pts.size(), 10u);
     const double ground_z = support_ground_z(0, kLayer, SupportTreeOptions{});
     const SupportTree tree = build_support_tree(part, pts, ground_z, SupportTreeOptions{});
-    EXPECT_EQ(tree.pillars + tree.on_part, pts.size());
+    EXPECT_EQ(tree.pillars + tree.on_part + tree.bridged, pts.size());
     if (std::string(name) == "handle") EXPECT_GT(tree.on_part, 0u);
     expect_feet_on_part(part, tree, SupportTreeOptions{});
     EXPECT_GT(tree.pillars, 0u);
@@ -352,6 +352,25 @@ TEST(SupportTree, SphereAndHandleEnterThePartOnlyAtHeads) {
       EXPECT_GT(test::signed_volume(shells[s]), 0);
     }
     EXPECT_GT(check_sections(part, tree), 0u);
+  }
+}
+
+// Heads joined to their neighbours' pillars by bridges, and tall pillars linked by zig-zags:
+// every bridge's section rests on the layer below and stays out of the part.
+TEST(SupportTree, BridgesAndLinksLeaveNoIslands) {
+  for (const double z : {5.0, 20.0}) {
+    SCOPED_TRACE(z);
+    const Mesh part = test::make_box(0, 0, z, 12, 4, z + 2);
+    // On its bottom face, at x = 1, 3 and 11 (the second bridged to the first, the third too far).
+    SupportPoints pts = points_on(part, std::vector<uint32_t>(3, face_near(part, 6, 2, z)));
+    for (size_t i = 0; i < 3; ++i) pts.xyz[3 * i] = i == 2 ? 11 : 1 + 2.0 * double(i), pts.xyz[3 * i + 1] = 2;
+    const SupportTree tree = build_support_tree(part, pts, -6, SupportTreeOptions{});
+    EXPECT_EQ(tree.bridged, 1u);
+    EXPECT_EQ(tree.pillars, 2u);
+    const size_t links = size_t(std::count_if(tree.structure.bridges.begin(), tree.structure.bridges.end(),
+                                              [](const SupportBridge& b) { return b.link; }));
+    EXPECT_EQ(links > 0, z == 20.0);
+    check_sections(part, tree);
   }
 }
 

@@ -79,4 +79,18 @@ double PartColumns::lowest_hit_above(double x, double y, double z_from) const {
   return best;
 }
 
+bool PartColumns::inside(double x, double y, double z) const {
+  double lowest = INFINITY;
+  bool up = false;
+  for_each_hit(x, y, [&](uint32_t f, const double*, double zf) {
+    if (!(zf > z && zf < lowest)) return;
+    lowest = zf;
+    const double* a = &part_.V[3 * size_t(part_.F[3 * f])];
+    const double* b = &part_.V[3 * size_t(part_.F[3 * f + 1])];
+    const double* d = &part_.V[3 * size_t(part_.F[3 * f + 2])];
+    up = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]) > 0;
+  });
+  return up;
+}
+
 }  // namespace slicereuse

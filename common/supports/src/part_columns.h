@@ -12,6 +12,9 @@
 // (clamped to [0, 1], corner order, summing to 1), z the face's height there. highest_hit: the
 // highest such z in (z_floor, z_from) (walls never count); NaN when there is none.
 // lowest_hit_above: the lowest such z above z_from; NaN when there is none.
+// inside: whether (x, y, z) lies inside the (closed, outward) part, all its faces kept: the
+// lowest face above it faces up (walls aside, a vertical ray enters the part through a face
+// facing down and leaves it through one facing up).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -31,6 +34,7 @@ class PartColumns {
   explicit PartColumns(const Mesh& part, bool downward_only = false, double z_below = INFINITY);
   double highest_hit(double x, double y, double z_from, double z_floor) const;
   double lowest_hit_above(double x, double y, double z_from) const;
+  bool inside(double x, double y, double z) const;
   template <class Hit>
   void for_each_hit(double x, double y, Hit&& hit) const;
 

@@ -12,6 +12,11 @@
 
 namespace slicereuse {
 
+// The rim rays run this far outside the pillar: 0.1 mm between pillar and part, plus a mask
+// pixel (0.05 mm) so that the pillar's section never lights a pixel of the part's. Bridges keep
+// the same clearance (bridge_path.h).
+constexpr double kRimClearanceMm = 0.15;
+
 // Rays on the rim, besides the axis: 8, so that a surface between two of them rises at most
 // rim_radius * (1 - cos(pi/8)) < 0.05 mm (a pixel) into the circle before one sees it.
 constexpr int kRimRays = 8;

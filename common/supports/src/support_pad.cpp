@@ -55,8 +55,13 @@ size_t extreme_corner(const std::vector<Point>& hull, double a) {
 
 }  // namespace
 
-void append_pad(Mesh& mesh, const std::vector<Point>& axes, double r_bottom, double r_top, double z_bottom,
-                double z_top) {
+void place_pad(const SupportTreeOptions& o, double ground_z, SupportStructure& s) {
+  std::vector<Point> axes;
+  for (const SupportPillar& p : s.pillars)
+    if (p.end == PillarEnd::Ground) axes.push_back({p.x, p.y});
+  if (!o.pad_enable || axes.empty()) return;
+  const double r_top = o.base_diameter_mm / 2 + o.pad_brim_mm;
+  const double r_bottom = r_top - o.pad_wall_thickness_mm / std::tan(o.pad_wall_slope_deg * M_PI / 180);
   const std::vector<Point> hull = convex_hull(axes);
   const size_t n = hull.size();
   // Polygon corner j (angle 2 pi j / sides) is the farthest in the directions between its two
@@ -70,12 +75,12 @@ void append_pad(Mesh& mesh, const std::vector<Point>& axes, double r_bottom, dou
     for (; i != last; pairs.push_back({i, size_t(j)})) i = (i + 1) % n;
   }
   const Outline unit = circle_outline(0, 0, 1);
-  Outline bottom, top;
+  s.pad.z_bottom = ground_z;
+  s.pad.z_top = ground_z + o.pad_wall_thickness_mm;
   for (const auto& [i, j] : pairs) {
-    bottom.push_back({hull[i][0] + r_bottom * unit[j][0], hull[i][1] + r_bottom * unit[j][1]});
-    top.push_back({hull[i][0] + r_top * unit[j][0], hull[i][1] + r_top * unit[j][1]});
+    s.pad.bottom.push_back({hull[i][0] + r_bottom * unit[j][0], hull[i][1] + r_bottom * unit[j][1]});
+    s.pad.top.push_back({hull[i][0] + r_top * unit[j][0], hull[i][1] + r_top * unit[j][1]});
   }
-  append_loft(mesh, bottom, z_bottom, top, z_top);
 }
 
 }  // namespace slicereuse

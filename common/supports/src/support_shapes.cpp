@@ -13,6 +13,18 @@ Outline circle_outline(double x, double y, double r) {
   return out;
 }
 
+Outline section_outline(double x, double y, double r, double dx, double dy, double dz) {
+  const double run = std::hypot(dx, dy);
+  if (run == 0) return circle_outline(x, y, r);
+  const double ax = dx / run, ay = dy / run, along = r * std::hypot(run, dz) / std::fabs(dz);
+  Outline out(kSupportSides);
+  for (int i = 0; i < kSupportSides; ++i) {
+    const double a = 2 * M_PI * i / kSupportSides, u = along * std::cos(a), v = r * std::sin(a);
+    out[i] = {x + ax * u - ay * v, y + ay * u + ax * v};
+  }
+  return out;
+}
+
 void append_loft(Mesh& mesh, const Outline& bottom, double z_bottom, const Outline& top, double z_top) {
   const uint32_t n = uint32_t(bottom.size());
   const uint32_t b = uint32_t(mesh.vertices()), t = b + n;

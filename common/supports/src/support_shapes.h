@@ -21,6 +21,11 @@ using Outline = std::vector<std::array<double, 2>>;
 // angle 0, counter-clockwise.
 Outline circle_outline(double x, double y, double r);
 
+// The kSupportSides-gon inscribed in the horizontal section of the cylinder of radius r around an
+// axis through (x, y) along (dx, dy, dz), dz != 0: an ellipse, r across the axis and r |d| / |dz|
+// along it (corner 0 ahead along (dx, dy)), counter-clockwise; a circle for a vertical axis.
+Outline section_outline(double x, double y, double r, double dx, double dy, double dz);
+
 // Appends the loft from bottom at z_bottom to top at z_top (z_bottom < z_top, equal sizes >= 3).
 void append_loft(Mesh& mesh, const Outline& bottom, double z_bottom, const Outline& top, double z_top);
 

@@ -1,33 +1,39 @@
 #pragma once
-// support_tree: the support structure a part's support points ask for, as one mesh to slice with
-// the part (closed shells that may overlap each other and the part: the masks' nonzero rule
-// fills their union). The part is not moved: the structure stands below it, on ground_z.
-// For each point, after PrusaSlicer's SLA supports (SL1S defaults, its sla_print *SL1S*):
-//   head: a vertical cone whose narrow end (head_front_diameter_mm) sits head_penetration_mm
-//     inside the part above the point, widening to the pillar's diameter head_width_mm below the
-//     point;
-//   pillar: a vertical cylinder of pillar_diameter_mm from the head down to the pad's top (or
-//     ground_z without a pad), standing on a base cone (base_diameter_mm, base_height_mm);
-//     where the way down is blocked by the part (a vertical ray through the pillar's axis or its
-//     rim, with clearance, hits it), the pillar ends on the part with a small head
-//     (head_front_diameter_mm, penetrating head_penetration_mm) instead: a foot, upside down,
-//     whose cone starts 1 mm above the highest hit and ends in the part at that hit (leaning
-//     from the axis when a rim ray's hit is the highest); where the part below is nearer than
-//     the head's width, the head itself ends in it.
-// Every cone and cylinder is a 16-gon (support_shapes.h), the pad a loft between two outlines;
-// each shell closed, its faces counter-clockwise seen from outside.
-// pad (pad_enable): under everything that reaches ground_z, pad_wall_thickness_mm thick, its top
-//   the convex hull of the bases grown by pad_brim_mm, its walls sloping in towards the plate at
-//   pad_wall_slope_deg (its bottom smaller by thickness / tan(slope)), as PrusaSlicer's pad.
-// head_zones: where the structure may enter the part (each head, and each foot on the part), as
-// vertical cones (a leaning foot's around its tip, wide enough to hold it): the only places the
-// part's and the supports' sections may overlap.
+// support_tree: the support structure a part's support points ask for (support_structure.h), and
+// its mesh to slice with the part (closed shells that may overlap each other and the part: the
+// masks' nonzero rule fills their union). The part is not moved: the structure stands below it,
+// on ground_z. After PrusaSlicer's SLA supports (SL1S defaults, its sla_print *SL1S*), in stages
+// (build_support_structure):
+//   1. heads (support_heads.h): for each point, a vertical cone whose narrow end
+//     (head_front_diameter_mm) sits head_penetration_mm inside the part above the point (halfway
+//     into a thinner wall), widening to the pillar's diameter head_width_mm below the point; and
+//     its way down, by vertical rays through the pillar's axis and rim (pillar_path.h);
+//   2. routes (support_routes.h), the heads in order: where the part below is nearer
+//     than the head's width, the head ends in it (as deep as its tip goes); else the head joins a neighbouring pillar by a
+//     bridge descending at least critical_angle_deg (at most max_bridge_length_mm long, at most
+//     max_bridges_on_pillar on a pillar, clear of the part) where that takes less resin than a
+//     pillar of its own, or where its own way down is blocked; else a pillar of pillar_diameter_mm
+//     to the pad's top (or ground_z without a pad) on a base cone (base_diameter_mm,
+//     base_height_mm); where the part blocks the way down, the pillar ends on it in a foot: a
+//     small head upside down (head_front_diameter_mm, penetrating head_penetration_mm) whose cone
+//     starts 1 mm above the highest hit and ends in the part at that hit (leaning from the axis
+//     when a rim ray's hit is the highest);
+//   3. links (support_links.h): pillars on the pad taller than 15 mm (35 mm) are linked to their
+//     nearest one (two) within max_pillar_link_distance_mm by bridges zig-zagging down between
+//     them, PrusaSlicer's pillar interconnection;
+//   4. pad (support_pad.h, pad_enable): under the pillars on the ground, pad_wall_thickness_mm
+//     thick, its top the convex hull of the bases grown by pad_brim_mm, its walls sloping in
+//     towards the plate at pad_wall_slope_deg (its bottom smaller by thickness / tan(slope)).
+// mesh_support_structure: every cone and cylinder a 16-gon (support_shapes.h), a bridge the loft
+// between its horizontal sections at its ends, the pad a loft between its outlines; each shell
+// closed, its faces counter-clockwise seen from outside; the same structure, the same bytes.
 // A point whose surface faces up (faces_up, support_points.h) gets nothing: counted in
 // up_facing, as PrusaSlicer drops it.
 // No points: no structure (an empty mesh, ground_z set); no pillar reaching the ground: no pad.
 // Throws Error when a point (not facing up) lies at or below the pad's top (ground_z without a
 // pad), the structure would be taller than max_height_mm ("... pillar of H mm, taller than the
-// printer's ... mm"), an option or ground_z is not a finite number of the right sign, the pad's
+// printer's ... mm"), an option or ground_z is not a finite number of the right sign (the critical
+// angle not within (0, 90) degrees), the pad's
 // walls slope in by more than the base's radius and brim, or the points are inconsistent
 // (validate_support_points) or the part has no faces.
 #include <cstddef>
@@ -35,6 +41,7 @@
 
 #include "slicereuse/mesh/mesh.h"
 #include "slicereuse/supports/support_points.h"
+#include "slicereuse/supports/support_structure.h"
 
 namespace slicereuse {
 
@@ -53,24 +60,30 @@ struct SupportTreeOptions {  // PrusaSlicer 2.5's SL1S print profile (sla_print:
   // its pad ends at the bases.
   double pad_brim_mm = 0;
   double max_height_mm = 150;
-};
-
-// A vertical cone where supports may enter the part: radius r_bottom at z_bottom, r_top at z_top.
-struct HeadZone {
-  double x = 0, y = 0;
-  double z_bottom = 0, z_top = 0;
-  double r_bottom = 0, r_top = 0;
+  // Bridges (PrusaSlicer's support_critical_angle, the SL1S profile's support_max_bridge_length,
+  // its defaults' support_max_pillar_link_distance and support_max_bridges_on_pillar): 0 mm
+  // or 0 bridges turns joining heads, or linking pillars, off.
+  double critical_angle_deg = 45;  // from the horizontal
+  double max_bridge_length_mm = 10;
+  double max_pillar_link_distance_mm = 10;
+  size_t max_bridges_on_pillar = 3;
 };
 
 struct SupportTree {
-  Mesh mesh;
-  std::vector<HeadZone> head_zones;
-  size_t pillars = 0;         // reaching the pad or ground
-  size_t on_part = 0;         // ending on the part
+  SupportStructure structure;
+  Mesh mesh;                          // mesh_support_structure(structure)
+  std::vector<HeadZone> head_zones;   // head_zones_of(structure)
+  size_t pillars = 0;         // heads on pillars reaching the pad or ground
+  size_t on_part = 0;         // heads ending on the part: in it, or on a pillar ending in a foot
+  size_t bridged = 0;         // heads joined to a neighbouring pillar by a bridge
   size_t up_facing = 0;       // points dropped: their surface faces up
   double ground_z = 0;
 };
 
+SupportStructure build_support_structure(const Mesh& part, const SupportPoints& points, double ground_z,
+                                         const SupportTreeOptions& options);
+Mesh mesh_support_structure(const SupportStructure& structure);
+// The structure, its mesh, zones and counts.
 SupportTree build_support_tree(const Mesh& part, const SupportPoints& points, double ground_z,
                                const SupportTreeOptions& options);
 

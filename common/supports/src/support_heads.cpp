@@ -1,0 +1,40 @@
+#include "support_heads.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace slicereuse {
+
+double depth_in_wall(double wall_mm, const SupportTreeOptions& o) {
+  return std::isnan(wall_mm) ? o.head_penetration_mm : std::min(o.head_penetration_mm, wall_mm / 2);
+}
+
+double head_radius_at(const SupportHead& head, double z, const SupportPoints& points, const SupportTreeOptions& o) {
+  const double r_pillar = o.pillar_diameter_mm / 2;
+  const double full_back = points.xyz[3 * head.point + 2] - o.head_width_mm;
+  return r_pillar + (head.cone.r_tip - r_pillar) * (z - full_back) / (head.cone.tip[2] - full_back);
+}
+
+std::vector<SupportHead> place_heads(const PartColumns& columns, const SupportPoints& points, double floor,
+                                     const SupportTreeOptions& o, std::vector<WayDown>& ways) {
+  std::vector<SupportHead> heads;
+  ways.clear();
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (faces_up(points, i)) continue;
+    const double x = points.xyz[3 * i], y = points.xyz[3 * i + 1], z = points.xyz[3 * i + 2];
+    SupportHead h;
+    h.point = i;
+    const double wall_top = columns.lowest_hit_above(x, y, z + kWallEpsilonMm);
+    h.penetration = depth_in_wall(wall_top - z, o);
+    h.cone.r_tip = o.head_front_diameter_mm / 2;
+    h.cone.tip = {x, y, z + h.penetration};
+    const double full_back = z - o.head_width_mm;
+    h.cone.back = {x, y, std::max(full_back, floor)};
+    h.cone.r_back = head_radius_at(h, h.cone.back[2], points, o);
+    heads.push_back(h);
+    ways.push_back(find_way_down(columns, x, y, z, full_back, floor, o.pillar_diameter_mm / 2 + kRimClearanceMm));
+  }
+  return heads;
+}
+
+}  // namespace slicereuse

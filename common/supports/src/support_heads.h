@@ -1,0 +1,36 @@
+#pragma once
+// support_heads: the support structure's first stage, its heads (PrusaSlicer's pinheads).
+//
+// place_heads: for each support point whose surface does not face up (faces_up), in the
+// points' order, a vertical head (support_structure.h): its tip (head_front_diameter_mm) above
+// the point by head_penetration_mm, or by half the part's wall above the point where that is
+// thinner than twice the penetration (the tip must not come out of its other side); its back
+// (pillar_diameter_mm) head_width_mm below the point, but not below floor (the pad's top, or the
+// ground without a pad), where it is as wide as the cone is there; its rest not yet decided (the
+// routes stage does). And, in ways, each head's way down from head_width_mm below its point to
+// floor (find_way_down, the pillar's rim kRimClearanceMm outside it).
+#include <vector>
+
+#include "pillar_path.h"
+#include "slicereuse/supports/support_points.h"
+#include "slicereuse/supports/support_tree.h"
+
+namespace slicereuse {
+
+std::vector<SupportHead> place_heads(const PartColumns& columns, const SupportPoints& points, double floor,
+                                     const SupportTreeOptions& options, std::vector<WayDown>& ways);
+
+// How deep a head goes into a wall of the given thickness (NaN: no other side met): the
+// penetration, or half the wall where that is thinner than twice it, so that it does not come
+// out of the other side.
+double depth_in_wall(double wall_mm, const SupportTreeOptions& options);
+
+// The wall above or below a point: surfaces nearer than this are its own face.
+constexpr double kWallEpsilonMm = 1e-6;
+
+// Head h's radius at height z, between its full width's bottom (head_width_mm below its point,
+// the pillar's radius) and its tip.
+double head_radius_at(const SupportHead& head, double z, const SupportPoints& points,
+                      const SupportTreeOptions& options);
+
+}  // namespace slicereuse
