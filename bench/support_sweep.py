@@ -1,0 +1,91 @@
+"""The supports' property sweep over many parts (issue #35, item 5): random family members (any
+shape, tilts of 0 to 90 degrees, critical angles of 10 to 80 degrees, densities of 50 to 300 %),
+each supported and printed by the product and checked (tests/support/support_sweep.h): no island
+and no resin trap in the print file, nothing lit more than 1 mm from the layer below, no foot in
+the air, pillars entering the part only at heads; and, where PrusaSlicer is installed, the
+supports' resin (supports and pad: the supported stack's cured volume minus the part's alone)
+within 1.3x PrusaSlicer's for the same part, critical angle and density.
+
+    scripts/python bench/support_sweep.py [--parts 100] [--seed 1] [--thickness 0.05]
+        [--part "shape family_seed member tilt critical density height faces" ...] [--out DIR]
+
+Prints a line per part as it goes, then the table: parts, failures per property, the resin ratio
+(ours over PrusaSlicer's) median and maximum, and each failing part with its parameters and the
+--part text that reproduces it. Writes DIR/support_sweep.md and .json. Needs scripts/build
+(build/2020/tests/support_sweep); PrusaSlicer is optional (scripts/setup installs it).
+"""
+import argparse
+import json
+import shutil
+import statistics
+import sys
+from pathlib import Path
+
+from slicereuse_support_sweep import PROPERTIES, RESIN_LIMIT, sweep
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def table(rows, prusaslicer):
+    properties = PROPERTIES + (["resin"] if prusaslicer else [])
+    lines = [f"{len(rows)} parts; failures per property:",
+             "  ".join(f"{p}: {sum(p in r['failed'] for r in rows)}" for p in properties)]
+    ratios = [r["ratio"] for r in rows if "ratio" in r]
+    if ratios:
+        lines.append(f"supports' resin over PrusaSlicer's ({len(ratios)} parts): median {statistics.median(ratios):.2f}x, "
+                     f"min {min(ratios):.2f}x, max {max(ratios):.2f}x; over {RESIN_LIMIT}x: "
+                     f"{sum(x > RESIN_LIMIT for x in ratios)}")
+    elif not prusaslicer:
+        lines.append("prusa-slicer is not on PATH: the supports' resin is not compared")
+    ps_errors = [r for r in rows if "ps_error" in r]
+    if ps_errors:
+        lines.append(f"PrusaSlicer failed on {len(ps_errors)} parts: " +
+                     "; ".join(f"{r['index']}: {r['ps_error']}" for r in ps_errors))
+    failing = [r for r in rows if r["failed"]]
+    if failing:
+        lines.append("failing parts (shape family_seed member tilt critical density height faces):")
+    for r in failing:
+        what = []
+        for p in r["failed"]:
+            what.append({"error": lambda: f"error: {r['error']}",
+                         "island": lambda: f"{r['islands']} islands",
+                         "resin trap": lambda: f"{r['resin_traps']} resin traps",
+                         "far reach": lambda: f"lit {r['far_mm']} mm from the layer below (layer {r['far_layer']})",
+                         "foot in air": lambda: f"{r['feet_in_air']} of {r['feet']} feet off the part (up to "
+                                                f"{r['foot_off_mm']:.3g} mm), {r['support_islands']} support islands",
+                         "pillar into part": lambda: f"supports in the part outside the heads: {r['outside_zones_mm2']:.3g} "
+                                                     f"mm2 at z = {r['outside_zones_z']:.3f}",
+                         "resin": lambda: f"resin {r['ratio']:.2f}x PrusaSlicer's ({r['ours_mm3']:.1f} / "
+                                          f"{r['ps_mm3']:.1f} mm3)"}[p]())
+        lines.append(f"  part {r['index']}: --part \"{r['part']}\": " + "; ".join(what))
+    return "\n".join(lines)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--parts", type=int, default=100)
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--thickness", type=float, default=0.05)
+    ap.add_argument("--part", action="append", default=[], help="a part's text (repeatable), instead of --parts")
+    ap.add_argument("--out", type=Path, default=ROOT / "out" / "support_sweep")
+    a = ap.parse_args()
+    binary = ROOT / "build" / "2020" / "tests" / "support_sweep"
+    if not binary.is_file():
+        raise SystemExit(f"{binary} is missing: cmake --build build/2020 --target support_sweep")
+    prusaslicer = shutil.which("prusa-slicer") is not None
+    shutil.rmtree(a.out, ignore_errors=True)
+    rows = []
+    for r in sweep(binary, a.out, a.thickness, a.parts, a.seed, a.part, prusaslicer):
+        rows.append(r)
+        ratio = f"{r['ratio']:.2f}x" if "ratio" in r else "-"
+        print(f"{r['index']:4d} {r['part']:<40} {r['points']:4d} points {r['seconds']:6.2f} s  resin {ratio:>6}  "
+              f"{', '.join(r['failed']) or 'ok'}", file=sys.stderr, flush=True)
+    text = (f"support sweep: seed {a.seed}, {a.thickness:g} mm layers, SL1S\n" if not a.part else "") + \
+        table(rows, prusaslicer)
+    print(text)
+    (a.out / "support_sweep.md").write_text(text + "\n")
+    (a.out / "support_sweep.json").write_text(json.dumps(rows, indent=1))
+
+
+if __name__ == "__main__":
+    main()
