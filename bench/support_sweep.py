@@ -9,7 +9,8 @@ within 1.3x PrusaSlicer's for the same part, critical angle and density.
     scripts/python bench/support_sweep.py [--parts 100] [--seed 1] [--thickness 0.05]
         [--part "shape family_seed member tilt critical density height faces" ...] [--out DIR]
 
-Prints a line per part as it goes, then the table: parts, failures per property, the resin ratio
+Also, where bench_printability is built, UVtools' findings in PrusaSlicer's file of each part
+(for reference: what its supports give by the same definitions). Prints a line per part as it goes, then the table: parts, failures per property, the resin ratio
 (ours over PrusaSlicer's) median and maximum, and each failing part with its parameters and the
 --part text that reproduces it. Writes DIR/support_sweep.md and .json. Needs scripts/build
 (build/2020/tests/support_sweep); PrusaSlicer is optional (scripts/setup installs it).
@@ -37,6 +38,16 @@ def table(rows, prusaslicer):
                      f"{sum(x > RESIN_LIMIT for x in ratios)}")
     elif not prusaslicer:
         lines.append("prusa-slicer is not on PATH: the supports' resin is not compared")
+    checked = [r for r in rows if "ps_findings" in r]
+    if checked:
+        lines.append(f"for reference, UVtools' findings in PrusaSlicer's files of the same parts ({len(checked)}): "
+                     f"islands in {sum(r['ps_findings'].get('island', 0) > 0 for r in checked)} parts "
+                     f"({sum(r['ps_findings'].get('island', 0) for r in checked)}), resin traps in "
+                     f"{sum(r['ps_findings'].get('resin_trap', 0) > 0 for r in checked)} parts "
+                     f"({sum(r['ps_findings'].get('resin_trap', 0) for r in checked)}); ours: islands in "
+                     f"{sum(r['islands'] > 0 for r in checked)} ({sum(r['islands'] for r in checked)}), "
+                     f"resin traps in {sum(r['resin_traps'] > 0 for r in checked)} "
+                     f"({sum(r['resin_traps'] for r in checked)})")
     ps_errors = [r for r in rows if "ps_error" in r]
     if ps_errors:
         lines.append(f"PrusaSlicer failed on {len(ps_errors)} parts: " +
@@ -57,6 +68,9 @@ def table(rows, prusaslicer):
                                                      f"mm2 at z = {r['outside_zones_z']:.3f}",
                          "resin": lambda: f"resin {r['ratio']:.2f}x PrusaSlicer's ({r['ours_mm3']:.1f} / "
                                           f"{r['ps_mm3']:.1f} mm3)"}[p]())
+        ps = r.get("ps_findings")
+        if ps is not None:
+            what.append(f"PrusaSlicer's file: {ps.get('island', 0)} islands, {ps.get('resin_trap', 0)} resin traps")
         lines.append(f"  part {r['index']}: --part \"{r['part']}\": " + "; ".join(what))
     return "\n".join(lines)
 
@@ -75,7 +89,9 @@ def main():
     prusaslicer = shutil.which("prusa-slicer") is not None
     shutil.rmtree(a.out, ignore_errors=True)
     rows = []
-    for r in sweep(binary, a.out, a.thickness, a.parts, a.seed, a.part, prusaslicer):
+    checker = ROOT / "build" / "2020" / "bench" / "bench_printability"
+    for r in sweep(binary, a.out, a.thickness, a.parts, a.seed, a.part, prusaslicer,
+                   checker if checker.is_file() else None):
         rows.append(r)
         ratio = f"{r['ratio']:.2f}x" if "ratio" in r else "-"
         print(f"{r['index']:4d} {r['part']:<40} {r['points']:4d} points {r['seconds']:6.2f} s  resin {ratio:>6}  "

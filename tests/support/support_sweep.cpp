@@ -110,12 +110,17 @@ SweepFindings check_sweep_part(const SweepPart& part, double thickness, const st
     f.feet_in_air = feet.in_air;
     f.foot_off_mm = feet.farthest_mm;
 
-    // The SL1S's pixels, its display cropped to 50 x 50 mm around the part (a part spans at most
-    // about 30 mm), so that the checks read a sixth of its pixels; a crop too small shows as
-    // pixels touching its bounds, an error.
+    // The SL1S preset (anti-aliased, as PrusaSlicer writes it: binary masks add 1-pixel islands
+    // on sloped walls, the part's alone), its display cropped to a square around the part 5 mm
+    // wider each way than it (the bases reach 1.5 mm beyond a head), in hundreds of pixels, so
+    // that the checks read a fraction of its pixels; a crop too small shows as pixels touching
+    // its bounds, an error.
     PrinterProfile profile = printer_preset("prusa_sl1s_speed").profile;
-    profile.antialiasing = false;
-    profile.width_px = profile.height_px = 1000;
+    double reach = 0;
+    for (size_t v = 0; v < placed[0].vertices(); ++v)
+      reach = std::fmax(reach, std::fmax(std::fabs(placed[0].V[3 * v]), std::fabs(placed[0].V[3 * v + 1])));
+    const double pixel_mm = std::fmin(profile.pixel_size_x_um, profile.pixel_size_y_um) / 1000;
+    profile.width_px = profile.height_px = 100 * int(std::ceil(2 * (reach + 5) / pixel_mm / 100));
     PlateJobOptions job;
     job.slicing = so;
     job.supports = {&s.tree.mesh};

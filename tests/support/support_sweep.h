@@ -9,15 +9,17 @@
 // degrees, density 50..300 %, height 6..12 mm, 6000 faces; the same on every platform.
 //
 // check_sweep_part: the part's supports generated on it (make_member_supports), the print file
-// written by the product's plate job (export_plate, SL1S preset, binary masks, layers of
-// `thickness`) into folder, and checked:
+// written by the product's plate job (export_plate, the SL1S preset and its anti-aliased masks,
+// the display cropped to the part and 5 mm around, layers of `thickness`) into folder, and
+// checked:
 //   island, resin trap: UVtools' findings in the print file (check_print_file.h);
 //   far reach: a lit pixel more than 1 mm from a lit pixel of the layer below (support_checks.h);
 //   foot in air: a foot whose tip is off the part, or a piece of the supports' sections resting
 //     on nothing (support_tree_checks.h);
 //   pillar into part: part and supports overlapping outside the head zones (more than 1e-9 mm²).
 // With resin, the part is also printed alone (no supports, no elephant foot) so that the
-// supports' resin is the difference of the two stacks' lit volumes. A step that throws is the
+// supports' resin is the difference of the two stacks' lit volumes (pixels >= 128: the binary
+// threshold, as support_checks.h). A step that throws is the
 // finding `error` (its message).
 // failed_properties: the names of the properties a part fails ("error" when it threw).
 #include <cstddef>

@@ -68,23 +68,27 @@ TreeSections check_tree_sections(const Mesh& part, const SupportTree& tree, doub
   t.open_contours = ss.open_contours();
   Paths below;
   for (size_t k = 0; k < planes.size(); ++k) {
-    const Paths p = region_of(ps, k), s = region_of(ss, k);
+    // The supports' shells overlap: their union once, for every clip below.
+    const Paths p = region_of(ps, k), s = clip(region_of(ss, k), {}, ClipperLib::ctUnion);
     if (k == 0) t.ground_area_mm2 = region_area_mm2(s);
     const Paths both = clip(p, s, ClipperLib::ctIntersection);
-    if (!both.empty()) ++t.overlapping_layers;
-    const double outside = region_area_mm2(clip(both, zones_at(tree.head_zones, planes[k]), ClipperLib::ctDifference));
-    if (outside > t.outside_zones_mm2) t.outside_zones_mm2 = outside, t.outside_zones_layer = k, t.outside_zones_z = planes[k];
+    if (!both.empty()) {
+      ++t.overlapping_layers;
+      const double outside =
+          region_area_mm2(clip(both, zones_at(tree.head_zones, planes[k]), ClipperLib::ctDifference));
+      if (outside > t.outside_zones_mm2)
+        t.outside_zones_mm2 = outside, t.outside_zones_layer = k, t.outside_zones_z = planes[k];
+    }
     if (k > 0) {
-      // A piece of the sections' union rests when a piece of its overlap with the layer below
-      // lies in it (one clip for the layer: a clip per piece costs the pieces times the layer
-      // below). A piece in another's hole is credited with what rests in it too.
-      const Paths pieces = clip(s, {}, ClipperLib::ctUnion);
+      // A piece of the union rests when a piece of its overlap with the layer below lies in it
+      // (one clip for the layer: a clip per piece costs the pieces times the layer below). A
+      // piece in another's hole is credited with what rests in it too.
       std::vector<const ClipperLib::Path*> outer;
       std::vector<ClipperLib::IntRect> box;
-      for (const ClipperLib::Path& piece : pieces)
+      for (const ClipperLib::Path& piece : s)
         if (ClipperLib::Orientation(piece)) outer.push_back(&piece), box.push_back(bounds(piece));
       std::vector<bool> rests(outer.size(), false);
-      for (const ClipperLib::Path& r : clip(pieces, below, ClipperLib::ctIntersection))
+      for (const ClipperLib::Path& r : clip(s, below, ClipperLib::ctIntersection))
         for (size_t i = 0; i < outer.size() && !r.empty(); ++i)
           if (!rests[i] && near_or_in(r[0], *outer[i], box[i])) rests[i] = true;
       for (bool on_something : rests)

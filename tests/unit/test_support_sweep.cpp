@@ -22,7 +22,8 @@ namespace {
 
 class SupportSweepTest : public test::TempFolderTest {};
 
-// Part i of 12: shapes in turn, tilts in turn, critical angles rising, densities in another order.
+// Part i of 12: shapes in turn, tilts in turn, critical angles rising, densities in another
+// order; 5 mm tall, 4000 faces, so that the sweep takes seconds.
 test::SweepPart small_sweep_part(size_t i) {
   test::SweepPart p;
   p.shape = test::family_shapes()[i % test::family_shapes().size()];
@@ -32,6 +33,8 @@ test::SweepPart small_sweep_part(size_t i) {
   // Rounded as random_sweep_part's, so that the printed text reproduces the part.
   p.critical_angle_deg = std::round(2 * (10 + 70 * double(i) / 11)) / 2;
   p.density = std::round(20 * (0.5 + 2.5 * double(i * 5 % 12) / 11)) / 20;
+  p.height_mm = 5;
+  p.faces = 4000;
   return p;
 }
 
@@ -53,7 +56,6 @@ TEST_F(SupportSweepTest, EveryPartOfTheSmallSweepHoldsEveryProperty) {
     EXPECT_EQ(f.feet_in_air, 0u) << test::sweep_part_text(part) << ": the farthest " << f.foot_off_mm << " mm off";
     EXPECT_EQ(f.support_islands, 0u) << test::sweep_part_text(part);
     EXPECT_LT(f.outside_zones_mm2, 1e-9) << test::sweep_part_text(part) << ": at z = " << f.outside_zones_z;
-    EXPECT_EQ(test::failed_properties(f).size(), 0u);
   }
 }
 
