@@ -12,7 +12,7 @@ within 1.3x PrusaSlicer's for the same part, critical angle and density.
 Also, where bench_printability is built, UVtools' findings in PrusaSlicer's file of each part
 (for reference: what its supports give by the same definitions). Prints a line per part as it goes, then the table: parts, failures per property, the resin ratio
 (ours over PrusaSlicer's) median and maximum, and each failing part with its parameters and the
---part text that reproduces it. Writes DIR/support_sweep.md and .json. Needs scripts/build
+--part text that reproduces it. Writes DIR/support_sweep.md and .json (and .jsonl, a line per part as it goes). Needs scripts/build
 (build/2020/tests/support_sweep); PrusaSlicer is optional (scripts/setup installs it).
 """
 import argparse
@@ -88,11 +88,15 @@ def main():
         raise SystemExit(f"{binary} is missing: cmake --build build/2020 --target support_sweep")
     prusaslicer = shutil.which("prusa-slicer") is not None
     shutil.rmtree(a.out, ignore_errors=True)
+    a.out.mkdir(parents=True)
     rows = []
+    log = (a.out / "support_sweep.jsonl").open("w")  # as it goes: an interrupted sweep keeps its parts
     checker = ROOT / "build" / "2020" / "bench" / "bench_printability"
     for r in sweep(binary, a.out, a.thickness, a.parts, a.seed, a.part, prusaslicer,
                    checker if checker.is_file() else None):
         rows.append(r)
+        log.write(json.dumps(r) + "\n")
+        log.flush()
         ratio = f"{r['ratio']:.2f}x" if "ratio" in r else "-"
         print(f"{r['index']:4d} {r['part']:<40} {r['points']:4d} points {r['seconds']:6.2f} s  resin {ratio:>6}  "
               f"{', '.join(r['failed']) or 'ok'}", file=sys.stderr, flush=True)

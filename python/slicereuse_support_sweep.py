@@ -36,7 +36,8 @@ def sweep(binary, out, thickness, parts=0, seed=1, given=(), prusaslicer=True, c
             ours = r["supported_mm3"] - r["part_mm3"] if r["error"] == "" else None
             if prusaslicer and ours is not None:
                 try:
-                    r["ps_mm3"] = support_resin_mm3(r["stl"], out, thickness, r["critical_angle"], 100 * r["density"])
+                    r["ps_mm3"] = support_resin_mm3(r["stl"], out, thickness, r["critical_angle"], 100 * r["density"],
+                                                    r["display_px"])
                     if checker is not None:
                         r["ps_findings"] = printability_counts(checker, out / f"{Path(r['stl']).stem}_supported.sl1s",
                                                                thickness)

@@ -120,7 +120,7 @@ SweepFindings check_sweep_part(const SweepPart& part, double thickness, const st
     for (size_t v = 0; v < placed[0].vertices(); ++v)
       reach = std::fmax(reach, std::fmax(std::fabs(placed[0].V[3 * v]), std::fabs(placed[0].V[3 * v + 1])));
     const double pixel_mm = std::fmin(profile.pixel_size_x_um, profile.pixel_size_y_um) / 1000;
-    profile.width_px = profile.height_px = 100 * int(std::ceil(2 * (reach + 5) / pixel_mm / 100));
+    profile.width_px = profile.height_px = f.display_px = 100 * int(std::ceil(2 * (reach + 5) / pixel_mm / 100));
     PlateJobOptions job;
     job.slicing = so;
     job.supports = {&s.tree.mesh};

@@ -52,6 +52,7 @@ Mesh make_sweep_part(const SweepPart& part);
 
 struct SweepFindings {
   size_t layers = 0, points = 0, pillars = 0, on_part = 0, up_facing = 0;
+  int display_px = 0;  // the cropped display's side, in pixels
   size_t islands = 0, resin_traps = 0;
   double far_mm = 0;
   size_t far_layer = 0;
