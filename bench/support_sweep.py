@@ -10,10 +10,11 @@ within 1.3x PrusaSlicer's for the same part, critical angle and density.
         [--part "shape family_seed member tilt critical density height faces" ...] [--out DIR]
 
 Also, where bench_printability is built, UVtools' findings in PrusaSlicer's file of each part
-(for reference: what its supports give by the same definitions). Prints a line per part as it goes, then the table: parts, failures per property, the resin ratio
-(ours over PrusaSlicer's) median and maximum, and each failing part with its parameters and the
---part text that reproduces it. Writes DIR/support_sweep.md and .json (and .jsonl, a line per part as it goes). Needs scripts/build
-(build/2020/tests/support_sweep); PrusaSlicer is optional (scripts/setup installs it).
+(for reference: what its supports give by the same definitions). Prints a line per part as it
+goes, then the table: parts, failures per property, the resin ratio (ours over PrusaSlicer's)
+median and maximum, and each failing part with its parameters and the --part text that
+reproduces it. Writes DIR/support_sweep.md and .json (and .jsonl, a line per part as it goes).
+Needs scripts/build (build/2020/tests/support_sweep); PrusaSlicer is optional (scripts/setup installs it).
 """
 import argparse
 import json
@@ -27,13 +28,33 @@ from slicereuse_support_sweep import PROPERTIES, RESIN_LIMIT, sweep
 ROOT = Path(__file__).resolve().parent.parent
 
 
+def failure_text(r, prop):
+    """What part r's findings show for a failed property, in words."""
+    if prop == "error":
+        return f"error: {r['error']}"
+    if prop == "island":
+        return f"{r['islands']} islands"
+    if prop == "resin trap":
+        return f"{r['resin_traps']} resin traps"
+    if prop == "far reach":
+        return f"lit {r['far_mm']} mm from the layer below (layer {r['far_layer']})"
+    if prop == "foot in air":
+        return (f"{r['feet_in_air']} of {r['feet']} feet off the part (up to {r['foot_off_mm']:.3g} mm), "
+                f"{r['support_islands']} support islands")
+    if prop == "pillar into part":
+        return (f"supports in the part outside the heads: {r['outside_zones_mm2']:.3g} mm2 "
+                f"at z = {r['outside_zones_z']:.3f}")
+    return f"resin {r['ratio']:.2f}x PrusaSlicer's ({r['ours_mm3']:.1f} / {r['ps_mm3']:.1f} mm3)"
+
+
 def table(rows, prusaslicer):
     properties = PROPERTIES + (["resin"] if prusaslicer else [])
     lines = [f"{len(rows)} parts; failures per property:",
              "  ".join(f"{p}: {sum(p in r['failed'] for r in rows)}" for p in properties)]
     ratios = [r["ratio"] for r in rows if "ratio" in r]
     if ratios:
-        lines.append(f"supports' resin over PrusaSlicer's ({len(ratios)} parts): median {statistics.median(ratios):.2f}x, "
+        lines.append(f"supports' resin over PrusaSlicer's ({len(ratios)} parts): "
+                     f"median {statistics.median(ratios):.2f}x, "
                      f"min {min(ratios):.2f}x, max {max(ratios):.2f}x; over {RESIN_LIMIT}x: "
                      f"{sum(x > RESIN_LIMIT for x in ratios)}")
     elif not prusaslicer:
@@ -56,18 +77,7 @@ def table(rows, prusaslicer):
     if failing:
         lines.append("failing parts (shape family_seed member tilt critical density height faces):")
     for r in failing:
-        what = []
-        for p in r["failed"]:
-            what.append({"error": lambda: f"error: {r['error']}",
-                         "island": lambda: f"{r['islands']} islands",
-                         "resin trap": lambda: f"{r['resin_traps']} resin traps",
-                         "far reach": lambda: f"lit {r['far_mm']} mm from the layer below (layer {r['far_layer']})",
-                         "foot in air": lambda: f"{r['feet_in_air']} of {r['feet']} feet off the part (up to "
-                                                f"{r['foot_off_mm']:.3g} mm), {r['support_islands']} support islands",
-                         "pillar into part": lambda: f"supports in the part outside the heads: {r['outside_zones_mm2']:.3g} "
-                                                     f"mm2 at z = {r['outside_zones_z']:.3f}",
-                         "resin": lambda: f"resin {r['ratio']:.2f}x PrusaSlicer's ({r['ours_mm3']:.1f} / "
-                                          f"{r['ps_mm3']:.1f} mm3)"}[p]())
+        what = [failure_text(r, p) for p in r["failed"]]
         ps = r.get("ps_findings")
         if ps is not None:
             what.append(f"PrusaSlicer's file: {ps.get('island', 0)} islands, {ps.get('resin_trap', 0)} resin traps")

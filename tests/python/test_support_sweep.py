@@ -23,4 +23,5 @@ def test_supports_resin_within_limit_of_prusaslicers(support_sweep_binary, tmp_p
         print(f"{r['part']}: ours {r['ours_mm3']:.1f} mm3, PrusaSlicer {r['ps_mm3']:.1f} mm3, {r['ratio']:.2f}x")
     for r in rows:
         assert r["error"] == "" and "ps_error" not in r, r
-        assert r["ratio"] <= RESIN_LIMIT, f"{r['part']}: {r['ours_mm3']:.1f} mm3 against PrusaSlicer's {r['ps_mm3']:.1f}"
+        assert r["ratio"] <= RESIN_LIMIT, \
+            f"{r['part']}: {r['ours_mm3']:.1f} mm3 against PrusaSlicer's {r['ps_mm3']:.1f}"

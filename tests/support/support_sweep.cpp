@@ -134,7 +134,8 @@ SweepFindings check_sweep_part(const SweepPart& part, double thickness, const st
     f.resin_traps = r.count(FindingKind::ResinTrap);
     if (r.count(FindingKind::TouchingBounds) > 0)
       throw Error(format("the part and its supports reach the edge of the %g x %g mm display",
-                         profile.width_px * profile.pixel_size_x_um / 1000, profile.height_px * profile.pixel_size_y_um / 1000));
+                         profile.width_px * profile.pixel_size_x_um / 1000,
+                         profile.height_px * profile.pixel_size_y_um / 1000));
     const StackSupport stack = check_stack_support(supported, profile);
     f.far_mm = stack.max_distance_mm;
     f.far_layer = stack.max_distance_layer;
