@@ -40,10 +40,10 @@ def failure_text(r, prop):
         return f"lit {r['far_mm']} mm from the layer below (layer {r['far_layer']})"
     if prop == "foot in air":
         return (f"{r['feet_in_air']} of {r['feet']} feet off the part (up to {r['foot_off_mm']:.3g} mm), "
-                f"{r['support_islands']} support islands")
+                f"{r['support_islands']} support islands (the first on layer {r.get('support_island_layer')})")
     if prop == "pillar into part":
-        return (f"supports in the part outside the heads: {r['outside_zones_mm2']:.3g} mm2 "
-                f"at z = {r['outside_zones_z']:.3f}")
+        return (f"supports in the part outside the heads: {r['outside_zones_mm2']:.3g} mm2 at (x, y, z) = "
+                f"({', '.join(f'{v:.3f}' for v in r['outside_zones_xyz'])})")
     return f"resin {r['ratio']:.2f}x PrusaSlicer's ({r['ours_mm3']:.1f} / {r['ps_mm3']:.1f} mm3)"
 
 

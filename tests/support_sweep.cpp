@@ -96,14 +96,16 @@ int main(int argc, char** argv) {
           "\"thickness\": %g, \"display_px\": %d, \"stl\": %s, \"failed\": [%s], \"error\": %s, \"layers\": %zu, "
           "\"points\": %zu, \"pillars\": %zu, \"on_part\": %zu, \"up_facing\": %zu, \"islands\": %zu, "
           "\"resin_traps\": %zu, \"far_mm\": %s, \"far_layer\": %zu, \"feet\": %zu, \"feet_in_air\": %zu, "
-          "\"foot_off_mm\": %s, \"support_islands\": %zu, \"outside_zones_mm2\": %s, \"outside_zones_z\": %s, "
-          "\"supported_mm3\": %s, \"part_mm3\": %s, \"seconds\": %.3f}\n",
+          "\"foot_off_mm\": %s, \"support_islands\": %zu, \"support_island_layer\": %zu, \"outside_zones_mm2\": %s, "
+          "\"outside_zones_xyz\": [%s, %s, %s], \"supported_mm3\": %s, \"part_mm3\": %s, \"seconds\": %.3f}\n",
           i, json_string(test::sweep_part_text(p)).c_str(), json_string(p.shape).c_str(), p.tilt_deg,
           p.critical_angle_deg, p.density, thickness, f.display_px, stl ? json_string(stl_path).c_str() : "null",
           failed.c_str(), json_string(f.error).c_str(), f.layers, f.points, f.pillars, f.on_part, f.up_facing,
           f.islands, f.resin_traps, json_number(f.far_mm).c_str(), f.far_layer, f.feet, f.feet_in_air,
-          json_number(f.foot_off_mm).c_str(), f.support_islands, json_number(f.outside_zones_mm2).c_str(),
-          json_number(f.outside_zones_z).c_str(), json_number(f.supported_mm3).c_str(),
+          json_number(f.foot_off_mm).c_str(), f.support_islands, f.support_island_layer,
+          json_number(f.outside_zones_mm2).c_str(), json_number(f.outside_zones_xyz[0]).c_str(),
+          json_number(f.outside_zones_xyz[1]).c_str(), json_number(f.outside_zones_xyz[2]).c_str(),
+          json_number(f.supported_mm3).c_str(),
           resin ? json_number(f.part_mm3).c_str() : "null", f.seconds);
       std::fflush(stdout);
     }

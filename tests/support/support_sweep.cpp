@@ -103,8 +103,10 @@ SweepFindings check_sweep_part(const SweepPart& part, double thickness, const st
 
     const TreeSections t = check_tree_sections(placed[0], s.tree, thickness);
     f.outside_zones_mm2 = t.outside_zones_mm2;
-    f.outside_zones_z = t.outside_zones_z;
+    f.outside_zones_xyz[0] = t.outside_zones_xy[0], f.outside_zones_xyz[1] = t.outside_zones_xy[1];
+    f.outside_zones_xyz[2] = t.outside_zones_z;
     f.support_islands = t.support_islands;
+    f.support_island_layer = t.first_support_island_layer;
     const FeetOnPart feet = check_feet_on_part(placed[0], s.tree, mo.tree);
     f.feet = feet.feet;
     f.feet_in_air = feet.in_air;

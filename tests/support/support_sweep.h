@@ -57,9 +57,10 @@ struct SweepFindings {
   double far_mm = 0;
   size_t far_layer = 0;
   size_t feet = 0, feet_in_air = 0, support_islands = 0;
+  size_t support_island_layer = 0;  // the first, counted from the tree's ground (when support_islands > 0)
   double foot_off_mm = 0;
   double outside_zones_mm2 = 0;
-  double outside_zones_z = 0;
+  double outside_zones_xyz[3] = {0, 0, 0};  // where, in the part's frame
   double supported_mm3 = 0, part_mm3 = 0;  // lit volumes: part and supports, part alone (with resin)
   double support_mm3() const { return supported_mm3 - part_mm3; }
   double seconds = 0;

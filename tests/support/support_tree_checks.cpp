@@ -74,10 +74,18 @@ TreeSections check_tree_sections(const Mesh& part, const SupportTree& tree, doub
     const Paths both = clip(p, s, ClipperLib::ctIntersection);
     if (!both.empty()) {
       ++t.overlapping_layers;
-      const double outside =
-          region_area_mm2(clip(both, zones_at(tree.head_zones, planes[k]), ClipperLib::ctDifference));
-      if (outside > t.outside_zones_mm2)
+      const Paths out = clip(both, zones_at(tree.head_zones, planes[k]), ClipperLib::ctDifference);
+      const double outside = region_area_mm2(out);
+      if (outside > t.outside_zones_mm2) {
         t.outside_zones_mm2 = outside, t.outside_zones_layer = k, t.outside_zones_z = planes[k];
+        const auto by_area = [](const ClipperLib::Path& a, const ClipperLib::Path& b) {
+          return std::fabs(ClipperLib::Area(a)) < std::fabs(ClipperLib::Area(b));
+        };
+        const auto largest = std::max_element(out.begin(), out.end(), by_area);
+        const ClipperLib::IntRect b = bounds(*largest);
+        t.outside_zones_xy[0] = double(b.left + b.right) / 2 / kRegionScale;
+        t.outside_zones_xy[1] = double(b.top + b.bottom) / 2 / kRegionScale;
+      }
     }
     if (k > 0) {
       // A piece of the union rests when a piece of its overlap with the layer below lies in it

@@ -24,6 +24,7 @@ struct TreeSections {
   double outside_zones_mm2 = 0;      // the largest overlap outside the head zones in one layer
   size_t outside_zones_layer = 0;    // its layer (when outside_zones_mm2 > 0)
   double outside_zones_z = 0;
+  double outside_zones_xy[2] = {0, 0};  // the centre of its largest piece's bounding box
   size_t support_islands = 0;        // pieces of the supports' sections resting on nothing
   size_t first_support_island_layer = 0;
 };

@@ -55,7 +55,8 @@ TEST_F(SupportSweepTest, EveryPartOfTheSmallSweepHoldsEveryProperty) {
     EXPECT_LE(f.far_mm, 1.0) << test::sweep_part_text(part) << ": layer " << f.far_layer;
     EXPECT_EQ(f.feet_in_air, 0u) << test::sweep_part_text(part) << ": the farthest " << f.foot_off_mm << " mm off";
     EXPECT_EQ(f.support_islands, 0u) << test::sweep_part_text(part);
-    EXPECT_LT(f.outside_zones_mm2, 1e-9) << test::sweep_part_text(part) << ": at z = " << f.outside_zones_z;
+    EXPECT_LT(f.outside_zones_mm2, 1e-9) << test::sweep_part_text(part) << ": at (" << f.outside_zones_xyz[0] << ", "
+                                  << f.outside_zones_xyz[1] << ", " << f.outside_zones_xyz[2] << ")";
   }
 }
 
