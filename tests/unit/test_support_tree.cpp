@@ -271,6 +271,22 @@ TEST(SupportTree, HeadReachingThePartBelowEndsInIt) {
   check_sections(part, tree);
 }
 
+// Where the part below is thinner than twice the penetration (a shell's rim), the head ends
+// halfway into it rather than out of its underside, where its tip would hang under the part: an
+// island (the support sweep's arch 234 3 20.5 11.5 2.55 6.5 6000).
+TEST(SupportTree, HeadEndingInAThinPartBelowStaysInsideIt) {
+  Mesh part = test::make_box(0, 0, 1.7, 10, 10, 2);
+  const Mesh slab = test::make_box(0, 0, 4, 10, 10, 6);
+  const uint32_t offset = uint32_t(part.vertices());
+  part.V.insert(part.V.end(), slab.V.begin(), slab.V.end());
+  for (uint32_t i : slab.F) part.F.push_back(i + offset);
+  const SupportTree tree = build_support_tree(part, points_on(part, {face_near(part, 5, 5, 4)}), -5, {});
+  EXPECT_EQ(tree.on_part, 1u);
+  ASSERT_EQ(tree.head_zones.size(), 1u);
+  EXPECT_NEAR(tree.head_zones[0].z_bottom, 1.85, 1e-12);
+  check_sections(part, tree);
+}
+
 // Under a wall thinner than twice the penetration (a shell's), the head goes halfway into it and
 // does not come out of its other side; under a thick one, the full penetration.
 TEST(SupportTree, HeadsStayInsideThinWalls) {

@@ -103,8 +103,11 @@ SupportTree build_support_tree(const Mesh& part, const SupportPoints& points, do
     auto head_r = [&](double h) { return r_pillar + (r_front - r_pillar) * (h - z_head_bottom) / (z_top - z_head_bottom); };
     const WayDown way = find_way_down(columns, x, y, z, z_head_bottom, floor, r_pillar + kRimClearanceMm);
     if (way.axis_z > z_head_bottom) {
-      // The head reaches the part below it: it ends in it, penetrating as deep as at its top.
-      const double end = std::max({way.axis_z - pen, z_head_bottom, floor});
+      // The head reaches the part below it: it ends in it, penetrating as deep as at its top,
+      // and as there halfway into a part thinner than twice that, not out of its underside.
+      const double under = columns.highest_hit(x, y, way.axis_z - kWallEpsilonMm, floor);
+      const double depth = std::isnan(under) ? pen : std::min(pen, (way.axis_z - under) / 2);
+      const double end = std::max({way.axis_z - depth, z_head_bottom, floor});
       add_cone(x, y, end, head_r(end), z_top, r_front, true);
       ++tree.on_part;
       continue;

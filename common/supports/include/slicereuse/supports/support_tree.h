@@ -13,7 +13,8 @@
 //     (head_front_diameter_mm, penetrating head_penetration_mm) instead: a foot, upside down,
 //     whose cone starts 1 mm above the highest hit and ends in the part at that hit (leaning
 //     from the axis when a rim ray's hit is the highest); where the part below is nearer than
-//     the head's width, the head itself ends in it.
+//     the head's width, the head itself ends in it (halfway into a part thinner than twice the
+//     penetration, as the head's top into a thin wall).
 // Every cone and cylinder is a 16-gon (support_shapes.h), the pad a loft between two outlines;
 // each shell closed, its faces counter-clockwise seen from outside.
 // pad (pad_enable): under everything that reaches ground_z, pad_wall_thickness_mm thick, its top
