@@ -25,12 +25,11 @@ import subprocess
 import time
 from pathlib import Path
 
-import numpy as np
 import slicereuse_pymeshlab as sr
-from slicereuse_prusaslicer import prusaslicer_config, read_archive, write_config
+from slicereuse_prusaslicer import SL1S, prusaslicer_config, resin_mm3, write_config
 
 ROOT = Path(__file__).resolve().parent.parent
-PRINTER, PRESET = "Original Prusa SL1S SPEED", "prusa_sl1s_speed"
+PRINTER, PRESET = SL1S, "prusa_sl1s_speed"
 
 
 def median_seconds(runs, job):
@@ -40,11 +39,6 @@ def median_seconds(runs, job):
         job()
         times.append(time.perf_counter() - start)
     return statistics.median(times)
-
-
-def resin_mm3(archive, pixel_mm2, layer_mm):
-    layers, _, _ = read_archive(archive)
-    return sum(float(np.asarray(image, np.float64).sum()) for image in layers) / 255 * pixel_mm2 * layer_mm
 
 
 def main():

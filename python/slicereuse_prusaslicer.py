@@ -5,6 +5,7 @@ both (bench/bench_supports.py)."""
 import configparser
 import re
 import struct
+import subprocess
 import zipfile
 import zlib
 from pathlib import Path
@@ -12,6 +13,7 @@ from pathlib import Path
 import numpy as np
 
 VENDOR_PROFILES = Path("/usr/share/PrusaSlicer/profiles/PrusaResearch.ini")
+SL1S = "Original Prusa SL1S SPEED"
 
 
 def vendor_section(ini, section):
@@ -91,6 +93,43 @@ def archive_height(path):
         return int(config["numSlow"]) + int(config["numFast"]), float(config["layerHeight"])
     except (KeyError, ValueError) as e:
         raise ValueError(f"{path}: config.ini lacks a readable numSlow, numFast or layerHeight ({e})") from None
+
+
+def resin_mm3(archive, pixel_mm2, layer_mm):
+    """The cured volume of an archive's stack: every layer's grey levels / 255 x pixel area x layer
+    height."""
+    layers, _, _ = read_archive(archive)
+    return sum(float(np.asarray(image, np.float64).sum()) for image in layers) / 255 * pixel_mm2 * layer_mm
+
+
+def support_resin_mm3(stl, out, layer_height, critical_angle, density_percent, display_px=None, printer=SL1S):
+    """PrusaSlicer's supports and pad for the part in stl, in mm3: the cured volume of its
+    --export-sla with them (the printer's default print preset, at this layer height, critical
+    angle and support point density) minus that without them (nor elephant-foot compensation,
+    whose first layer is then the part's). display_px: the display cropped to a square of that many
+    pixels (their size kept), so that PrusaSlicer draws fewer. The configurations and archives go
+    to the folder out."""
+    config = prusaslicer_config(printer, layer_height=f"{layer_height:g}", initial_layer_height=f"{layer_height:g}",
+                                support_critical_angle=f"{critical_angle:g}",
+                                support_points_density_relative=f"{density_percent:g}")
+    pixel_mm = float(config["display_width"]) / int(config["display_pixels_x"]), \
+        float(config["display_height"]) / int(config["display_pixels_y"])
+    if display_px is not None:
+        width, height = display_px * pixel_mm[0], display_px * pixel_mm[1]
+        # The bed too: PrusaSlicer centres the part on the bed, the display spans it.
+        config.update(display_pixels_x=str(display_px), display_pixels_y=str(display_px),
+                      display_width=f"{width:g}", display_height=f"{height:g}",
+                      bed_shape=f"0x0,{width:g}x0,{width:g}x{height:g},0x{height:g}")
+    pixel_mm2 = pixel_mm[0] * pixel_mm[1]
+    volume = {}
+    for kind, changes in (("supported", {}),
+                          ("alone", {"supports_enable": "0", "pad_enable": "0", "elefant_foot_compensation": "0"})):
+        ini, archive = Path(out) / f"{Path(stl).stem}_{kind}.ini", Path(out) / f"{Path(stl).stem}_{kind}.sl1s"
+        write_config(ini, {**config, **changes})
+        subprocess.run(["prusa-slicer", "--export-sla", "--load", str(ini), "-o", str(archive), str(stl)],
+                       check=True, capture_output=True)
+        volume[kind] = resin_mm3(archive, pixel_mm2, layer_height)
+    return volume["supported"] - volume["alone"]
 
 
 def stl_z_extent(path):

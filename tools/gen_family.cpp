@@ -34,23 +34,6 @@ T number(const char* flag, const char* text) {
   return v;
 }
 
-// The members turned by deg about the x axis, then moved so that the base's lowest vertex lies at
-// z = 0 (x-y untouched).
-struct Tilt {
-  double c = 1, s = 0, dz = 0;
-  Tilt(const Mesh& base, double deg) : c(std::cos(deg * M_PI / 180)), s(std::sin(deg * M_PI / 180)) {
-    dz = INFINITY;
-    for (size_t v = 0; v < base.vertices(); ++v) dz = std::min(dz, s * base.V[3 * v + 1] + c * base.V[3 * v + 2]);
-  }
-  void apply(Mesh& m) const {
-    for (size_t v = 0; v < m.vertices(); ++v) {
-      const double y = m.V[3 * v + 1], z = m.V[3 * v + 2];
-      m.V[3 * v + 1] = c * y - s * z;
-      m.V[3 * v + 2] = s * y + c * z - dz;
-    }
-  }
-};
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -85,7 +68,7 @@ int main(int argc, char** argv) {
     if (members < 1 || members > 1000) throw Error("--members must be in 1..1000");
     std::filesystem::create_directories(out);
     const Mesh base = test::make_family_base(o);
-    const Tilt turn(base, tilt);
+    const test::FamilyTilt turn(base, tilt);
     for (int m = 0; m < members; ++m) {
       char name[32];
       std::snprintf(name, sizeof name, "member_%03d.ply", m);

@@ -22,11 +22,13 @@ THICKNESS = 0.1
 HEIGHT = 8.0  # mm: every shape then fits the default 76.8 x 57.6 mm mask area
 
 
-def _gen_family_binary():
-    env = os.environ.get("SLICEREUSE_GEN_FAMILY")
+def _built_tool(name, folder, env_variable):
+    """A tool of the C++ build: $env_variable, else build/2020/folder/name, else the newest
+    build/*/folder/name; None when there is none."""
+    env = os.environ.get(env_variable)
     candidates = [Path(env)] if env else []
-    candidates.append(ROOT / "build" / "2020" / "tools" / "gen_family")
-    candidates += sorted((ROOT / "build").glob("*/tools/gen_family"), key=lambda p: -p.stat().st_mtime)
+    candidates.append(ROOT / "build" / "2020" / folder / name)
+    candidates += sorted((ROOT / "build").glob(f"*/{folder}/{name}"), key=lambda p: -p.stat().st_mtime)
     for c in candidates:
         if c.is_file() and os.access(c, os.X_OK):
             return c
@@ -48,7 +50,7 @@ def make_family(tmp_path_factory):
     heights) or "everywhere" (z changes at every height); see tools/family/family.h.
     shuffle: members other than the base get renumbered vertices and faces (gen_family --shuffle),
     the same surfaces with other connectivity."""
-    binary = _gen_family_binary()
+    binary = _built_tool("gen_family", "tools", "SLICEREUSE_GEN_FAMILY")
     if binary is None:
         pytest.fail("gen_family not built: cmake --build build/2020 --target gen_family "
                     "(or set SLICEREUSE_GEN_FAMILY)")

@@ -9,12 +9,11 @@
 #include "error_of.h"
 #include "family.h"
 #include "shapes.h"
-#include "slicereuse/crossparam/surface_grid.h"
 #include "slicereuse/mesh/fingerprint.h"
 #include "slicereuse/regions/layer_region.h"
-#include "slicereuse/slicing/layer_planes.h"
 #include "slicereuse/slicing/slice_layers.h"
 #include "slicereuse/supports/support_tree.h"
+#include "support_tree_checks.h"
 
 using namespace slicereuse;
 using ClipperLib::Paths;
@@ -107,71 +106,23 @@ void expect_closed_outward_shells(const SupportTree& tree, size_t expected_shell
 
 Paths region_of(const Slices& s, size_t k) { return layer_region(LayerView(s, k)); }
 
-Paths clip(const Paths& a, const Paths& b, ClipperLib::ClipType type) {
-  ClipperLib::Clipper c;
-  c.AddPaths(a, ClipperLib::ptSubject, true);
-  c.AddPaths(b, ClipperLib::ptClip, true);
-  Paths out;
-  c.Execute(type, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-  return out;
-}
-
-// The head zones' sections at z, as circles around the 16-gons, grown by 1e-3 mm.
-Paths zones_at(const std::vector<HeadZone>& zones, double z) {
-  Paths out;
-  for (const HeadZone& h : zones) {
-    if (z < h.z_bottom || z > h.z_top) continue;
-    const double r = h.r_bottom + (h.r_top - h.r_bottom) * (z - h.z_bottom) / (h.z_top - h.z_bottom);
-    const double R = r / std::cos(M_PI / 64) + 1e-3;
-    ClipperLib::Path circle;
-    for (int i = 0; i < 64; ++i)
-      circle.emplace_back(region_units(h.x + R * std::cos(2 * M_PI * i / 64)),
-                          region_units(h.y + R * std::sin(2 * M_PI * i / 64)));
-    out.push_back(circle);
-  }
-  return clip(out, {}, ClipperLib::ctUnion);
-}
-
-// Slices part and tree on the same planes and checks, layer by layer: the part's and the
-// supports' sections overlap only within the head zones; every piece of the supports' section
-// above layer 0 overlaps the layer below (supports or part: a foot rests on the part).
-// Returns the number of layers where part and supports overlap.
+// The shared checks (support_tree_checks.h) as assertions. Returns the number of layers where
+// part and supports overlap.
 size_t check_sections(const Mesh& part, const SupportTree& tree) {
-  const std::vector<double> planes = layer_planes(tree.ground_z, kLayer, z_range(part).max);
-  const Slices ps = slice_planes(part, planes, {}, false), ss = slice_planes(tree.mesh, planes, {}, false);
-  EXPECT_EQ(ss.open_contours(), 0u);
-  if (tree.pillars > 0) EXPECT_GT(region_area_mm2(region_of(ss, 0)), 0);
-  size_t overlapping = 0;
-  Paths below;
-  for (size_t k = 0; k < planes.size(); ++k) {
-    const Paths p = region_of(ps, k), s = region_of(ss, k);
-    const Paths both = clip(p, s, ClipperLib::ctIntersection);
-    if (!both.empty()) ++overlapping;
-    const Paths outside = clip(both, zones_at(tree.head_zones, planes[k]), ClipperLib::ctDifference);
-    EXPECT_LT(region_area_mm2(outside), 1e-9) << "layer " << k << " at z = " << planes[k];
-    if (k > 0)
-      for (const ClipperLib::Path& piece : s)
-        if (ClipperLib::Orientation(piece))
-          EXPECT_FALSE(clip({piece}, below, ClipperLib::ctIntersection).empty())
-              << "an island of the supports in layer " << k << " at z = " << planes[k];
-    below = clip(p, s, ClipperLib::ctUnion);
-  }
-  return overlapping;
+  const test::TreeSections t = test::check_tree_sections(part, tree, kLayer);
+  EXPECT_EQ(t.open_contours, 0u);
+  if (tree.pillars > 0) EXPECT_GT(t.ground_area_mm2, 0);
+  EXPECT_LT(t.outside_zones_mm2, 1e-9) << "layer " << t.outside_zones_layer << " at z = " << t.outside_zones_z;
+  EXPECT_EQ(t.support_islands, 0u) << "islands of the supports, the first in layer " << t.first_support_island_layer;
+  return t.overlapping_layers;
 }
 
-// Every foot (a head zone narrowing downwards) ends on the part: its tip, the penetration
-// above its bottom, lies on the part's surface. Returns the number of feet.
+// Returns the number of feet.
 size_t expect_feet_on_part(const Mesh& part, const SupportTree& tree, const SupportTreeOptions& o) {
-  const SurfaceGrid grid(part);
-  size_t feet = 0;
-  for (const HeadZone& h : tree.head_zones) {
-    if (!(h.r_bottom < h.r_top)) continue;
-    ++feet;
-    const double tip[3] = {h.x, h.y, h.z_bottom + o.head_penetration_mm};
-    const double d = grid.nearest_on_surface(tip, nullptr, 0, INFINITY).distance;
-    EXPECT_LT(d, 1e-6) << "the foot at (" << h.x << ", " << h.y << ") ends " << d << " mm from the part";
-  }
-  return feet;
+  const test::FeetOnPart f = test::check_feet_on_part(part, tree, o);
+  EXPECT_EQ(f.in_air, 0u) << "the foot at (" << f.farthest_xy[0] << ", " << f.farthest_xy[1] << ") ends "
+                          << f.farthest_mm << " mm from the part";
+  return f.feet;
 }
 
 test::FamilyOptions shape(const char* name) {
@@ -317,6 +268,22 @@ TEST(SupportTree, HeadReachingThePartBelowEndsInIt) {
   ASSERT_EQ(tree.head_zones.size(), 1u);
   EXPECT_DOUBLE_EQ(tree.head_zones[0].z_bottom, 1.5);
   expect_closed_outward_shells(tree, 1);  // no pillar reaches the ground: no pad either
+  check_sections(part, tree);
+}
+
+// Where the part below is thinner than twice the penetration (a shell's rim), the head ends
+// halfway into it rather than out of its underside, where its tip would hang under the part: an
+// island (the support sweep's arch 234 3 20.5 11.5 2.55 6.5 6000).
+TEST(SupportTree, HeadEndingInAThinPartBelowStaysInsideIt) {
+  Mesh part = test::make_box(0, 0, 1.7, 10, 10, 2);
+  const Mesh slab = test::make_box(0, 0, 4, 10, 10, 6);
+  const uint32_t offset = uint32_t(part.vertices());
+  part.V.insert(part.V.end(), slab.V.begin(), slab.V.end());
+  for (uint32_t i : slab.F) part.F.push_back(i + offset);
+  const SupportTree tree = build_support_tree(part, points_on(part, {face_near(part, 5, 5, 4)}), -5, {});
+  EXPECT_EQ(tree.on_part, 1u);
+  ASSERT_EQ(tree.head_zones.size(), 1u);
+  EXPECT_NEAR(tree.head_zones[0].z_bottom, 1.85, 1e-12);
   check_sections(part, tree);
 }
 

@@ -58,4 +58,13 @@ Mesh make_family_member(const Mesh& base, const FamilyOptions& options, int inde
 std::vector<double> deform_like_family_member(const Mesh& base, const FamilyOptions& options, int index,
                                               const std::vector<double>& points);
 
+// The rigid turn gen_family --tilt gives every member, as a lab orients a shell for printing (its
+// overhangs then need supports): deg degrees about the x axis, then moved in z so that the turned
+// base's lowest vertex lies at z = 0; the same turn for all, so the family keeps its faces.
+struct FamilyTilt {
+  FamilyTilt(const Mesh& base, double deg);
+  void apply(Mesh& member) const;
+  double c = 1, s = 0, dz = 0;  // cos, sin of the angle; the move down
+};
+
 }  // namespace slicereuse::test
