@@ -9,14 +9,13 @@
 // PrusaSlicer. Each part's print files and printability report (printability.csv) go to
 // DIR/part_NNNN/, removed after its checks unless --keep.
 // Exits 1 when an argument is wrong (in words), 0 otherwise, whatever the findings.
-#include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "flag_number.h"
 #include "mesh_file_writers.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
@@ -25,15 +24,6 @@
 using namespace slicereuse;
 
 namespace {
-
-template <class T>
-T number(const char* flag, const char* text) {
-  T v{};
-  const char* end = text + std::strlen(text);
-  auto [p, ec] = std::from_chars(text, end, v);
-  if (ec != std::errc() || p != end) throw Error(std::string(flag) + ": not a number: '" + text + "'");
-  return v;
-}
 
 std::string json_string(const std::string& s) {
   std::string out = "\"";
@@ -66,9 +56,9 @@ int main(int argc, char** argv) {
       }
       if (i + 1 >= argc) throw Error(a + ": missing value");
       const char* v = argv[++i];
-      if (a == "--parts") parts = number<size_t>("--parts", v);
-      else if (a == "--seed") seed = number<uint64_t>("--seed", v);
-      else if (a == "--thickness") thickness = number<double>("--thickness", v);
+      if (a == "--parts") parts = test::flag_number<size_t>("--parts", v);
+      else if (a == "--seed") seed = test::flag_number<uint64_t>("--seed", v);
+      else if (a == "--thickness") thickness = test::flag_number<double>("--thickness", v);
       else if (a == "--part") given.push_back(test::sweep_part_from_text(v));
       else if (a == "--out") out = v;
       else throw Error("unknown option " + a);

@@ -9,32 +9,18 @@
 // writes DIR/member_000.ply (the base) ... and prints "path vertices faces" per file.
 // --shuffle renumbers the vertices and reorders and rotates the faces of every member but the
 // base (shuffle_mesh.h): the same surfaces with other connectivity in indices.
-#include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <string>
 
 #include "family.h"
+#include "flag_number.h"
 #include "shapes.h"
 #include "shuffle_mesh.h"
 #include "slicereuse/util/error.h"
 
 using namespace slicereuse;
-
-namespace {
-
-template <class T>
-T number(const char* flag, const char* text) {
-  T v{};
-  const char* end = text + std::strlen(text);
-  auto [p, ec] = std::from_chars(text, end, v);
-  if (ec != std::errc() || p != end) throw Error(std::string(flag) + ": not a number: '" + text + "'");
-  return v;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   try {
@@ -56,11 +42,11 @@ int main(int argc, char** argv) {
       if (i + 1 >= argc) throw Error(a + ": missing value");
       const char* v = argv[++i];
       if (a == "--shape") o.shape = v;
-      else if (a == "--faces") o.faces = number<size_t>("--faces", v);
-      else if (a == "--members") members = number<int>("--members", v);
-      else if (a == "--height") o.height = number<double>("--height", v);
-      else if (a == "--seed") o.seed = number<uint64_t>("--seed", v);
-      else if (a == "--tilt") tilt = number<double>("--tilt", v);
+      else if (a == "--faces") o.faces = test::flag_number<size_t>("--faces", v);
+      else if (a == "--members") members = test::flag_number<int>("--members", v);
+      else if (a == "--height") o.height = test::flag_number<double>("--height", v);
+      else if (a == "--seed") o.seed = test::flag_number<uint64_t>("--seed", v);
+      else if (a == "--tilt") tilt = test::flag_number<double>("--tilt", v);
       else if (a == "--out") out = v;
       else throw Error("unknown option " + a);
     }

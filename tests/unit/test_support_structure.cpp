@@ -18,6 +18,7 @@
 #include "slicereuse/slicing/slice_layers.h"
 #include "slicereuse/supports/generate_support_points.h"
 #include "slicereuse/supports/support_tree.h"
+#include "support_points_on.h"
 
 using namespace slicereuse;
 
@@ -25,19 +26,7 @@ namespace {
 
 constexpr double kLayer = 0.05;
 
-// Points at the centroids of the given faces of part.
-SupportPoints points_on(const Mesh& part, const std::vector<uint32_t>& faces) {
-  SupportPoints p;
-  p.fingerprint = mesh_fingerprint(part);
-  for (uint32_t f : faces) {
-    p.face.push_back(f);
-    p.bary.insert(p.bary.end(), {1.0 / 3, 1.0 / 3, 1 - 2.0 / 3});
-    p.kind.push_back(uint8_t(SupportKind::Overhang));
-    p.layer.push_back(0);
-  }
-  place_support_points(p, part);
-  return p;
-}
+using test::points_on;
 
 // Points on part's bottom face (z = its lowest) at the given (x, y).
 SupportPoints points_under(const Mesh& part, const std::vector<std::array<double, 2>>& xy) {

@@ -13,6 +13,7 @@
 #include "slicereuse/regions/layer_region.h"
 #include "slicereuse/slicing/slice_layers.h"
 #include "slicereuse/supports/support_tree.h"
+#include "support_points_on.h"
 #include "support_tree_checks.h"
 
 using namespace slicereuse;
@@ -22,19 +23,7 @@ namespace {
 
 constexpr double kLayer = 0.05;
 
-// Points at the centroids of the given faces of part.
-SupportPoints points_on(const Mesh& part, const std::vector<uint32_t>& faces) {
-  SupportPoints p;
-  p.fingerprint = mesh_fingerprint(part);
-  for (uint32_t f : faces) {
-    p.face.push_back(f);
-    p.bary.insert(p.bary.end(), {1.0 / 3, 1.0 / 3, 1 - 2.0 / 3});
-    p.kind.push_back(uint8_t(SupportKind::Overhang));
-    p.layer.push_back(0);
-  }
-  place_support_points(p, part);
-  return p;
-}
+using test::points_on;
 
 // The face of part whose centroid is nearest (x, y, z).
 uint32_t face_near(const Mesh& part, double x, double y, double z) {
