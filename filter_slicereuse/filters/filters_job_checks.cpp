@@ -53,9 +53,7 @@ void report_printability(Host& host, const char* filter, const std::string& plat
     const Finding& f = r.findings[i];
     const FindingPlace& at = st.finding_places[i];
     ++member_counts[at.member][size_t(f.kind)];
-    const bool blocks = f.kind == FindingKind::Island || f.kind == FindingKind::ResinTrap ||
-                        f.kind == FindingKind::SuctionCup;
-    if (!blocks || logged++ >= kLoggedFindings) continue;
+    if (!blocks_printing(f.kind) || logged++ >= kLoggedFindings) continue;
     const bool volume = f.kind != FindingKind::Island;
     host.log(format("%s: %s%s in %s, layers %zu-%zu, at (%.2f, %.2f) mm, %.2f x %.2f x %.2f mm, %.4g %s", filter,
                     where.c_str(), finding_kind_name(f.kind), names[at.member].c_str(), f.first_layer, f.last_layer,

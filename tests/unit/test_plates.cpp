@@ -734,7 +734,7 @@ TEST_F(PlateJobTest, ChecksItsMasksAsWrittenAndPlacesEachFindingOnItsMember) {
     EXPECT_EQ(r.count(FindingKind::Island), 0u);
     ASSERT_EQ(r.count(FindingKind::ResinTrap), 1u);
     ASSERT_EQ(r.count(FindingKind::SuctionCup), 1u);
-    EXPECT_TRUE(blocks_printing(r));
+    EXPECT_TRUE(r.blocks_printing());
     ASSERT_EQ(st.finding_places.size(), r.findings.size());
     for (size_t i = 0; i < r.findings.size(); ++i) {
       const Finding& f = r.findings[i];
@@ -782,7 +782,7 @@ TEST_F(PlateJobTest, RequiredPrintableRefusesATrapAndACupNamingThemAndWritesNoth
   const std::vector<Mesh> solid{plate.placed[1]};
   plate.options.names = {"solid"};
   const PlateJobStats st = export_plate(solid, plate.options, display(800, 600), path("s.goo"));
-  EXPECT_FALSE(blocks_printing(st.printability));
+  EXPECT_FALSE(st.printability.blocks_printing());
   EXPECT_TRUE(std::filesystem::exists(path("s.goo")));
 }
 

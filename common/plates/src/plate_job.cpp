@@ -404,9 +404,7 @@ struct PlateChecks {
           }
         }
         st.finding_places.push_back(place);
-        const bool blocks = f.kind == FindingKind::Island || f.kind == FindingKind::ResinTrap ||
-                            f.kind == FindingKind::SuctionCup;
-        if (o.require_printable && blocks) {
+        if (o.require_printable && blocks_printing(f.kind)) {
           std::string kind = finding_kind_name(f.kind);
           std::replace(kind.begin(), kind.end(), '_', ' ');
           refused += format("%s%s in %s, layers %zu-%zu, at x %.2f y %.2f mm (%.3g %s)", refused.empty() ? "" : "; ",
@@ -485,10 +483,6 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
                      }};
   st.masks = export_masks(chunks, profile, output_path, progress, checks.get());
   return st;
-}
-
-bool blocks_printing(const PrintabilityReport& r) {
-  return r.count(FindingKind::Island) + r.count(FindingKind::ResinTrap) + r.count(FindingKind::SuctionCup) > 0;
 }
 
 }  // namespace slicereuse

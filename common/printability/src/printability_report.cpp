@@ -16,6 +16,12 @@ const char* finding_kind_name(FindingKind kind) {
   return "";
 }
 
+bool PrintabilityReport::blocks_printing() const {
+  for (size_t kind = 0; kind < kFindingKinds; ++kind)
+    if (counts[kind] > 0 && slicereuse::blocks_printing(FindingKind(kind))) return true;
+  return false;
+}
+
 double PrintabilityReport::trapped_mm3() const {
   double v = 0;
   for (const Finding& f : findings)

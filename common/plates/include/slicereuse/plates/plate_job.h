@@ -118,9 +118,6 @@ struct PlateJobStats {
   std::vector<FindingPlace> finding_places;
 };
 
-// Whether a report holds what makes a print fail (an island, a resin trap or a suction cup);
-// overhangs and parts near the display's edge are warnings.
-bool blocks_printing(const PrintabilityReport& report);
 
 PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOptions& options,
                            const PrinterProfile& profile, const std::string& output_path,

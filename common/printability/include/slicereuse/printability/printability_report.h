@@ -23,6 +23,12 @@ constexpr size_t kFindingKinds = 5;
 // "island", "overhang", "resin_trap", "suction_cup", "touching_bounds".
 const char* finding_kind_name(FindingKind kind);
 
+// Whether a finding of this kind makes a print fail (an island, a resin trap, a suction cup);
+// overhangs and parts near the display's edges are warnings.
+inline bool blocks_printing(FindingKind kind) {
+  return kind == FindingKind::Island || kind == FindingKind::ResinTrap || kind == FindingKind::SuctionCup;
+}
+
 struct Finding {
   FindingKind kind = FindingKind::Island;
   size_t first_layer = 0, last_layer = 0;
@@ -40,6 +46,7 @@ struct PrintabilityReport {
 
   size_t count(FindingKind kind) const { return counts[size_t(kind)]; }
   double trapped_mm3() const;  // the resin traps' volumes summed
+  bool blocks_printing() const;  // holds a finding that makes a print fail
 };
 
 void write_printability_csv(const PrintabilityReport& report, const std::string& path);
