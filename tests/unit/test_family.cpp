@@ -245,9 +245,7 @@ TEST(Family, SectionsHaveTheIntendedLoops) {
 TEST(Family, SelfIntersectionCheckSeesOverlappingBoxes) {
   Mesh a = make_box(0, 0, 0, 2, 2, 2, 2);
   const Mesh b = make_box(0.7, 0.6, 0.5, 2.9, 2.8, 2.7, 3);
-  const uint32_t offset = uint32_t(a.vertices());
-  a.V.insert(a.V.end(), b.V.begin(), b.V.end());
-  for (uint32_t v : b.F) a.F.push_back(v + offset);
+  test::append_mesh(a, b);
   EXPECT_GT(self_intersections(a), 0u);
 }
 

@@ -350,9 +350,7 @@ TEST(SupportPoints, RefuseSlicingsOfOtherMeshesTooManyPointsAndBadPositions) {
 TEST(SupportPoints, WideLedgeGetsPointsAtEveryCriticalAngle) {
   Mesh ledge = test::make_box(0, 0, 0, 5, 5, 4);
   const Mesh slab = test::make_box(0, 0, 3, 7.5, 5, 5);
-  const uint32_t offset = uint32_t(ledge.vertices());
-  ledge.V.insert(ledge.V.end(), slab.V.begin(), slab.V.end());
-  for (uint32_t i : slab.F) ledge.F.push_back(i + offset);
+  test::append_mesh(ledge, slab);
   const Slices s = slice(ledge);
   for (const double angle : {1.0, 5.0, 20.0, 45.0, 70.0, 89.0}) {
     SCOPED_TRACE(angle);

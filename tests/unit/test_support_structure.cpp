@@ -40,9 +40,7 @@ SupportPoints points_under(const Mesh& part, const std::vector<std::array<double
 }
 
 Mesh joined(Mesh a, const Mesh& b) {
-  const uint32_t offset = uint32_t(a.vertices());
-  a.V.insert(a.V.end(), b.V.begin(), b.V.end());
-  for (uint32_t i : b.F) a.F.push_back(i + offset);
+  test::append_mesh(a, b);
   return a;
 }
 

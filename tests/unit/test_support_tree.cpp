@@ -193,9 +193,7 @@ TEST(SupportTree, BlockedPillarEndsOnThePartWithAFoot) {
   // A wide slab above a small block: under the block the way down is blocked, beside it clear.
   Mesh part = test::make_box(0, 0, 0, 10, 10, 2);
   const Mesh slab = test::make_box(0, 0, 8, 20, 10, 10);
-  const uint32_t offset = uint32_t(part.vertices());
-  part.V.insert(part.V.end(), slab.V.begin(), slab.V.end());
-  for (uint32_t i : slab.F) part.F.push_back(i + offset);
+  test::append_mesh(part, slab);
   const SupportPoints pts = points_on(part, {face_near(part, 5, 5, 8), face_near(part, 15, 5, 8)});
   ASSERT_LT(pts.xyz[0], 10);
   ASSERT_GT(pts.xyz[3], 10);
@@ -218,9 +216,7 @@ TEST(SupportTree, BlockedPillarEndsOnThePartWithAFoot) {
 TEST(SupportTree, FootUnderABlockedRimStandsOnThePart) {
   Mesh part = test::make_box(0, 0, 0, 10, 10, 2);
   const Mesh slab = test::make_box(0, 0, 8, 20, 10, 10);
-  const uint32_t offset = uint32_t(part.vertices());
-  part.V.insert(part.V.end(), slab.V.begin(), slab.V.end());
-  for (uint32_t i : slab.F) part.F.push_back(i + offset);
+  test::append_mesh(part, slab);
   SupportPoints pts = points_on(part, {face_near(part, 15, 5, 8)});
   pts.xyz[0] = 10.4, pts.xyz[1] = 5, pts.xyz[2] = 8;
   const SupportTree tree = build_support_tree(part, pts, -5, SupportTreeOptions{});
@@ -248,9 +244,7 @@ TEST(SupportTree, PointsFacingUpAreDropped) {
 TEST(SupportTree, HeadReachingThePartBelowEndsInIt) {
   Mesh part = test::make_box(0, 0, 0, 10, 10, 2);
   const Mesh slab = test::make_box(0, 0, 4, 10, 10, 6);
-  const uint32_t offset = uint32_t(part.vertices());
-  part.V.insert(part.V.end(), slab.V.begin(), slab.V.end());
-  for (uint32_t i : slab.F) part.F.push_back(i + offset);
+  test::append_mesh(part, slab);
   const SupportTree tree = build_support_tree(part, points_on(part, {face_near(part, 5, 5, 4)}), -5, {});
   EXPECT_EQ(tree.pillars, 0u);
   EXPECT_EQ(tree.on_part, 1u);
@@ -266,9 +260,7 @@ TEST(SupportTree, HeadReachingThePartBelowEndsInIt) {
 TEST(SupportTree, HeadEndingInAThinPartBelowStaysInsideIt) {
   Mesh part = test::make_box(0, 0, 1.7, 10, 10, 2);
   const Mesh slab = test::make_box(0, 0, 4, 10, 10, 6);
-  const uint32_t offset = uint32_t(part.vertices());
-  part.V.insert(part.V.end(), slab.V.begin(), slab.V.end());
-  for (uint32_t i : slab.F) part.F.push_back(i + offset);
+  test::append_mesh(part, slab);
   const SupportTree tree = build_support_tree(part, points_on(part, {face_near(part, 5, 5, 4)}), -5, {});
   EXPECT_EQ(tree.on_part, 1u);
   ASSERT_EQ(tree.head_zones.size(), 1u);

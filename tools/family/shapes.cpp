@@ -86,10 +86,7 @@ std::vector<uint32_t> torus_grid_faces(int rows, int cols) {
   return F;
 }
 
-namespace {
-
-// a's faces and vertices, then b's (turned inside out when inverted).
-void append_mesh(Mesh& a, const Mesh& b, bool inverted = false) {
+void append_mesh(Mesh& a, const Mesh& b, bool inverted) {
   const uint32_t base = uint32_t(a.vertices());
   a.V.insert(a.V.end(), b.V.begin(), b.V.end());
   for (size_t f = 0; f < b.faces(); ++f) {
@@ -100,8 +97,6 @@ void append_mesh(Mesh& a, const Mesh& b, bool inverted = false) {
       a.F.insert(a.F.end(), {base + t[0], base + t[1], base + t[2]});
   }
 }
-
-}  // namespace
 
 Mesh make_hollow_box(double x0, double y0, double z0, double x1, double y1, double z1, double wall) {
   Mesh m = make_box(x0, y0, z0, x1, y1, z1);

@@ -13,6 +13,9 @@ namespace slicereuse::test {
 // Axis-aligned box [x0,x1]x[y0,y1]x[z0,z1], each side split into n x n quads (2 triangles each),
 // corners and edges shared: 6n^2+2 vertices, 12n^2 faces.
 Mesh make_box(double x0, double y0, double z0, double x1, double y1, double z1, int n = 1);
+// append_mesh: b's vertices and faces after a's (turned inside out when inverted: a cavity), as
+// separate shells of one mesh.
+void append_mesh(Mesh& a, const Mesh& b, bool inverted = false);
 // Printability's test parts, both [x0,x1]x[y0,y1]x[z0,z1] with walls `wall` thick:
 // make_hollow_box: a closed box around a sealed cavity (a second box turned inside out, so the
 //   nonzero rule leaves it empty): a resin trap;
