@@ -235,6 +235,16 @@ TEST(Printability, PartWithinFivePixelsOfTheEdgeTouchesBounds) {
   expect_counts(check(100, 80, std::vector<std::vector<Rect>>(3, {{5, 5, 95, 75}})), 0, 0, 0, 0, 0);
 }
 
+TEST(Printability, TouchingBoundsCountsBothMarginsOfARowAndOnlyBrightPixels) {
+  // A bar across the image (rows 30-31): 5 pixels in each margin of each row; a grey block (100,
+  // under UVtools' 127) in the right margin: nothing; a bright one (200) there: 4 pixels.
+  const PrintabilityReport r = check(100, 80, {{{0, 30, 100, 32}, {93, 50, 100, 52, 100}, {96, 60, 100, 61, 200}}});
+  ASSERT_EQ(r.count(FindingKind::TouchingBounds), 1u);
+  const Finding f = of_kind(r, FindingKind::TouchingBounds)[0];
+  expect_box(f, 0, 30, 100, 61);
+  EXPECT_DOUBLE_EQ(f.area_mm2, (2 * 2 * 5 + 4) * kPixel * kPixel);
+}
+
 TEST(Printability, LedgeOverhangsAtItsLayer) {
   // A column [10, 60) x [10, 90); from layer 10 a ledge [60, 130) beside it. Eroding 40 from the
   // column's side (the other sides are the layers' box, which does not erode) leaves x >= 100.

@@ -1,13 +1,12 @@
 #include "air_regions.h"
 
 #include <algorithm>
-#include <unordered_map>
+
+#include "uvtools_settings.h"
 
 namespace slicereuse {
 namespace {
 
-constexpr uint64_t kRequiredAreaToProcessCheck = 4;  // UVtools: ResinTrap RequiredAreaToProcessCheck
-constexpr uint64_t kRequiredBlackPixelsToDrain = 10;  // UVtools: ResinTrap RequiredBlackPixelsToDrain
 constexpr uint32_t kSolid = UINT32_MAX;
 
 }  // namespace
@@ -33,20 +32,17 @@ void AirRegions::merge(uint32_t a, uint32_t b) {
   to.plate |= from.plate;
 }
 
-void AirRegions::add_layer(LevelRuns air, size_t layer) {
-  const RunLabels labels = label_runs(air, false);
-  // This layer's regions, each a new node after the regions carried from the layer below.
-  const uint32_t carried = uint32_t(regions_.size());
-  std::vector<AirRegion> pieces(labels.count);
-  for (AirRegion& p : pieces) {
+AirLayer air_layer_of(LevelRuns air) {
+  AirLayer a;
+  a.labels = label_runs(air, false);
+  a.regions.resize(a.labels.count);
+  for (AirRegion& p : a.regions) {
     p.x0 = air.width;
     p.y0 = air.height;
-    p.first_layer = p.last_layer = layer;
-    p.plate = layer == 0;
   }
   for (int y = 0; y < air.height; ++y) {
     for (uint32_t i = air.row_begin[size_t(y)]; i < air.row_begin[size_t(y) + 1]; ++i) {
-      AirRegion& p = pieces[labels.of_run[i]];
+      AirRegion& p = a.regions[a.labels.of_run[i]];
       p.pixels += air.hi[i] - air.lo[i];
       p.x0 = std::min<int>(p.x0, air.lo[i]);
       p.x1 = std::max<int>(p.x1, air.hi[i]);
@@ -55,35 +51,60 @@ void AirRegions::add_layer(LevelRuns air, size_t layer) {
       p.border |= y == 0 || y == air.height - 1 || air.lo[i] == 0 || air.hi[i] == air.width;
     }
   }
+  a.solid.resize(a.labels.count);
+  for (uint32_t c = 0; c < a.labels.count; ++c)
+    a.solid[c] = a.regions[c].pixels < kRequiredAreaToProcessCheck && !a.regions[c].border;
+  a.runs = std::move(air);
+  return a;
+}
+
+void AirRegions::add_layer(AirLayer layer_air, size_t layer) {
+  const LevelRuns& air = layer_air.runs;
+  const RunLabels& labels = layer_air.labels;
+  std::vector<AirRegion>& pieces = layer_air.regions;
+  // This layer's regions, each a new node after the regions carried from the layer below.
+  const uint32_t carried = uint32_t(regions_.size());
   std::vector<uint32_t> node(labels.count, kSolid);
   for (uint32_t c = 0; c < labels.count; ++c) {
+    if (layer_air.solid[c]) continue;
     AirRegion& p = pieces[c];
-    if (p.pixels < kRequiredAreaToProcessCheck && !p.border) continue;
+    p.first_layer = p.last_layer = layer;
+    p.plate = layer == 0;
     p.layer_pixels = p.pixels;
     node[c] = sets_.add();
     regions_.push_back(p);
   }
 
-  // Pixels shared with each region of the layer below, per (piece, region below) pair.
+  // Pixels shared with each region of the layer below, per (piece, region below) pair: the
+  // overlaps of a row come mostly in runs of the same pair, so they are summed as they come,
+  // then sorted and summed by pair (the area below is the last overlapping piece's, as it came).
   struct Shared {
-    uint64_t pixels = 0, below_area = 0;
+    uint64_t key = 0, pixels = 0, below_area = 0;
   };
-  std::unordered_map<uint64_t, Shared> shared;
+  std::vector<Shared> shared;
   if (previous_air_.height == air.height && previous_air_.width == air.width) {
     for (int y = 0; y < air.height; ++y) {
       for_each_overlap(air, previous_air_, y, [&](uint32_t i, uint32_t j, int lo, int hi) {
         const uint32_t c = labels.of_run[i];
         if (node[c] == kSolid || previous_node_[j] == kSolid) return;
-        Shared& s = shared[uint64_t(c) << 32 | previous_node_[j]];
-        s.pixels += uint64_t(hi - lo);
-        s.below_area = previous_area_[j];
+        const uint64_t key = uint64_t(c) << 32 | previous_node_[j];
+        if (shared.empty() || shared.back().key != key) shared.push_back({key, 0, 0});
+        shared.back().pixels += uint64_t(hi - lo);
+        shared.back().below_area = previous_area_[j];
       });
     }
   }
-  for (const auto& [key, s] : shared) {
+  std::stable_sort(shared.begin(), shared.end(), [](const Shared& a, const Shared& b) { return a.key < b.key; });
+  for (size_t k = 0; k < shared.size();) {
+    const uint64_t key = shared[k].key;
+    uint64_t pixels = 0, below_area = 0;
+    for (; k < shared.size() && shared[k].key == key; ++k) {
+      pixels += shared[k].pixels;
+      below_area = shared[k].below_area;
+    }
     const uint32_t c = uint32_t(key >> 32), below = uint32_t(key);
-    const uint64_t needed = std::min({kRequiredBlackPixelsToDrain, pieces[c].pixels, s.below_area});
-    if (s.pixels >= needed) merge(node[c], below);
+    const uint64_t needed = std::min({kRequiredBlackPixelsToDrain, pieces[c].pixels, below_area});
+    if (pixels >= needed) merge(node[c], below);
   }
 
   // Regions carried from below that no piece continues are closed.
@@ -118,7 +139,7 @@ void AirRegions::add_layer(LevelRuns air, size_t layer) {
   }
   regions_ = std::move(alive);
   sets_ = UnionFind(regions_.size());
-  previous_air_ = std::move(air);
+  previous_air_ = std::move(layer_air.runs);
 }
 
 void AirRegions::finish() {

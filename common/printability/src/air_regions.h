@@ -3,9 +3,11 @@
 // labelled in 3D as it streams in, bottom to top, as UVtools' resin trap and suction cup
 // detection sees it.
 //
-// add_layer(air, layer): the layer's air runs (level_runs.h). Within a layer air joins by
-//   4-connectivity; a region of a layer under 4 pixels (RequiredAreaToProcessCheck) that does not
-//   touch the image border is taken as solid. A region joins the air of the layer below that it
+// air_layer_of(air): a layer's air runs (level_runs.h) -> its regions in the layer, joined by
+//   4-connectivity, each with its pixels, box and whether it touches the image border; a region
+//   under 4 pixels (RequiredAreaToProcessCheck) that does not touch the border is taken as solid.
+//   Depends on the layer alone (a job computes it in parallel).
+// add_layer(air, layer): the next layer's air regions. A region joins the air of the layer below that it
 //   overlaps by at least 10 pixels (RequiredBlackPixelsToDrain), or by all of the smaller one's
 //   pixels when either has fewer (a narrow vent still connects).
 // finish(): the air of the last layer opens to the air above the part; every region closes.
@@ -31,9 +33,20 @@ struct AirRegion {
   bool border = false, top = false, plate = false;
 };
 
+// A layer's air: its runs, the region of each run, and the regions (pixels, box, border; their
+// layers are set as the layer is added); a region too small to count is solid.
+struct AirLayer {
+  LevelRuns runs;
+  RunLabels labels;
+  std::vector<AirRegion> regions;
+  std::vector<bool> solid;  // per region: too small to count
+};
+
+AirLayer air_layer_of(LevelRuns air);
+
 class AirRegions {
  public:
-  void add_layer(LevelRuns air, size_t layer);
+  void add_layer(AirLayer air, size_t layer);
   void finish();
   // The regions closed since the last call (moved out).
   std::vector<AirRegion> take_closed();

@@ -4,80 +4,18 @@
 #include <optional>
 #include <vector>
 
-#include "air_regions.h"
-#include "level_runs.h"
+#include "layer_facts.h"
 #include "overhang_pixels.h"
+#include "uvtools_settings.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
 
 namespace slicereuse {
-namespace {
-
-constexpr uint8_t kIslandLit = 2;  // UVtools: Island BinaryThreshold 1 (pixels <= 1 are black)
-constexpr uint8_t kIslandPointLevel = 10;  // UVtools: Island RequiredPixelBrightnessToProcessCheck
-constexpr uint8_t kSupportLevel = 150;  // UVtools: Island RequiredPixelBrightnessToSupport
-constexpr double kSupportMultiplier = 0.25;  // UVtools: Island RequiredPixelsToSupportMultiplier
-constexpr uint64_t kPixelsToSupport = 10;  // UVtools: Island RequiredPixelsToSupport (enhanced detection)
-constexpr uint64_t kIslandMinArea = 1;  // UVtools: Island RequiredAreaToProcessCheck
-constexpr uint64_t kOverhangMinPixels = 1;  // UVtools: Overhang RequiredPixelsToConsider
-constexpr uint8_t kTrapSolid = 101;  // UVtools: ResinTrap BinaryThreshold 100 (pixels <= 100 are air)
-constexpr uint64_t kCupMinArea = 100;  // UVtools: ResinTrap RequiredAreaToConsiderSuctionCup
-constexpr double kCupMinHeightMm = 0.5;  // UVtools: ResinTrap RequiredHeightToConsiderSuctionCup
-constexpr uint8_t kTouchLevel = 127;  // UVtools: TouchingBound MinimumPixelBrightness
-constexpr int kTouchMargin = 5;  // UVtools: TouchingBound MarginLeft/Top/Right/Bottom
-
-// A box of pixels grown by runs and rows.
-struct PixelBox {
-  int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;
-  void add(int lo, int hi, int y) {
-    x0 = std::min(x0, lo);
-    x1 = std::max(x1, hi);
-    y0 = std::min(y0, y);
-    y1 = std::max(y1, y + 1);
-  }
-  void add(const PixelBox& b) {
-    x0 = std::min(x0, b.x0);
-    x1 = std::max(x1, b.x1);
-    y0 = std::min(y0, b.y0);
-    y1 = std::max(y1, b.y1);
-  }
-  bool empty() const { return x1 < 0; }
-};
-
-// Per connected region of a layer's runs: pixels and box.
-struct Region {
-  uint64_t pixels = 0;
-  PixelBox box;
-};
-
-std::vector<Region> regions_of(const LevelRuns& runs, const RunLabels& labels) {
-  std::vector<Region> regions(labels.count);
-  for (int y = 0; y < runs.height; ++y)
-    for (uint32_t i = runs.row_begin[size_t(y)]; i < runs.row_begin[size_t(y) + 1]; ++i) {
-      Region& r = regions[labels.of_run[i]];
-      r.pixels += runs.hi[i] - runs.lo[i];
-      r.box.add(runs.lo[i], runs.hi[i], y);
-    }
-  return regions;
-}
-
-// Per region of labels (over runs), the pixels of other inside it.
-std::vector<uint64_t> pixels_inside(const LevelRuns& other, const LevelRuns& runs, const RunLabels& labels) {
-  std::vector<uint64_t> n(labels.count, 0);
-  for (int y = 0; y < runs.height; ++y)
-    for_each_overlap(other, runs, y, [&](uint32_t, uint32_t j, int lo, int hi) { n[labels.of_run[j]] += uint64_t(hi - lo); });
-  return n;
-}
-
-}  // namespace
-
 struct LayerChecker::State {
   double pixel_x = 0, pixel_y = 0, height = 0;
   size_t layers = 0;
   int width = 0, rows = 0;
-  // The layer below: its image and runs.
-  MaskRuns below;
-  LevelRuns below_nonzero, below_128, below_support;
+  LayerFacts below;
   AirRegions air;
   std::optional<Finding> touching;  // touching bounds still growing
   std::vector<Finding> findings;
@@ -120,25 +58,7 @@ struct LayerChecker::State {
     }
   }
 
-  void check_touching(const LevelRuns& lit, size_t layer) {
-    PixelBox box;
-    uint64_t pixels = 0;
-    const auto touch = [&](int lo, int hi, int y) {
-      if (lo >= hi) return;
-      box.add(lo, hi, y);
-      pixels += uint64_t(hi - lo);
-    };
-    for (int y = 0; y < rows; ++y) {
-      const bool edge_row = y < kTouchMargin || y >= rows - kTouchMargin;
-      for (uint32_t i = lit.row_begin[size_t(y)]; i < lit.row_begin[size_t(y) + 1]; ++i) {
-        if (edge_row) {
-          touch(lit.lo[i], lit.hi[i], y);
-          continue;
-        }
-        touch(lit.lo[i], std::min<int>(lit.hi[i], kTouchMargin), y);
-        touch(std::max<int>(lit.lo[i], width - kTouchMargin), lit.hi[i], y);
-      }
-    }
+  void check_touching(const PixelBox& box, uint64_t pixels, size_t layer) {
     const bool continues = touching && touching->last_layer + 1 == layer;
     if (touching && (box.empty() || !continues)) {
       findings.push_back(*touching);
@@ -159,36 +79,53 @@ struct LayerChecker::State {
   }
 
   // Islands and overhangs of a layer above layer 0.
-  void check_islands_and_overhangs(const MaskRuns& mask, const LevelRuns& nonzero, const LevelRuns& lit,
-                                   const LevelRuns& points, const LevelRuns& at_least_128, size_t layer) {
-    const LevelRuns overhang = overhang_pixels({&mask, &nonzero, &at_least_128}, {&below, &below_nonzero, &below_128});
+  void check_islands_and_overhangs(const LayerFacts& f, size_t layer) {
+    const LevelRuns overhang =
+        overhang_pixels({&f.mask, &f.nonzero_box, &f.at_least_128}, {&below.mask, &below.nonzero_box, &below.at_least_128});
     const RunLabels overhang_labels = label_runs(overhang, true);  // contours, as UVtools finds them
-    for (const Region& r : regions_of(overhang, overhang_labels)) {
-      if (r.pixels < kOverhangMinPixels) continue;
-      Finding f = finding(FindingKind::Overhang, layer, layer, r.box);
-      f.area_mm2 = double(r.pixels) * pixel_x * pixel_y;
-      findings.push_back(f);
+    std::vector<PixelBox> overhang_boxes(overhang_labels.count);
+    std::vector<uint64_t> overhang_pixels_of(overhang_labels.count, 0);
+    for (int y = 0; y < overhang.height; ++y)
+      for (uint32_t i = overhang.row_begin[size_t(y)]; i < overhang.row_begin[size_t(y) + 1]; ++i) {
+        overhang_boxes[overhang_labels.of_run[i]].add(overhang.lo[i], overhang.hi[i], y);
+        overhang_pixels_of[overhang_labels.of_run[i]] += overhang.hi[i] - overhang.lo[i];
+      }
+    for (uint32_t c = 0; c < overhang_labels.count; ++c) {
+      if (overhang_pixels_of[c] < kOverhangMinPixels) continue;
+      Finding o = finding(FindingKind::Overhang, layer, layer, overhang_boxes[c]);
+      o.area_mm2 = double(overhang_pixels_of[c]) * pixel_x * pixel_y;
+      findings.push_back(o);
     }
 
-    const RunLabels labels = label_runs(lit, false);  // UVtools: AllowDiagonalBonds false
-    const std::vector<Region> regions = regions_of(lit, labels);
-    const std::vector<uint64_t> point_pixels = pixels_inside(points, lit, labels);
-    const std::vector<uint64_t> supported = pixels_inside(intersect_runs(points, below_support), lit, labels);
-    const std::vector<uint64_t> overhanging = pixels_inside(overhang, lit, labels);
-    for (uint32_t c = 0; c < labels.count; ++c) {
-      if (regions[c].pixels < kIslandMinArea || point_pixels[c] == 0) continue;
-      const double required = std::max(1.0, double(point_pixels[c]) * kSupportMultiplier);
+    const std::vector<uint64_t> supported = pixels_inside(intersect_runs(f.points, below.support), f.lit, f.lit_labels);
+    std::vector<uint64_t> overhanging;  // only where a region is held well enough to need it
+    for (uint32_t c = 0; c < f.lit_labels.count; ++c) {
+      const LitRegion& r = f.lit_regions[c];
+      if (r.pixels < kIslandMinArea || r.point_pixels == 0) continue;
+      const double required = std::max(1.0, double(r.point_pixels) * kSupportMultiplier);
       if (double(supported[c]) >= required) continue;
       // Enhanced detection: well enough held to be an island only where it overhangs.
-      if (supported[c] >= kPixelsToSupport && double(supported[c]) >= required / 4 &&
-          overhanging[c] < kOverhangMinPixels)
-        continue;
-      Finding f = finding(FindingKind::Island, layer, layer, regions[c].box);
-      f.area_mm2 = double(point_pixels[c]) * pixel_x * pixel_y;
-      findings.push_back(f);
+      if (supported[c] >= kPixelsToSupport && double(supported[c]) >= required / 4) {
+        if (overhanging.empty()) overhanging = pixels_inside(overhang, f.lit, f.lit_labels);
+        if (overhanging[c] < kOverhangMinPixels) continue;
+      }
+      Finding i = finding(FindingKind::Island, layer, layer, r.box);
+      i.area_mm2 = double(r.point_pixels) * pixel_x * pixel_y;
+      findings.push_back(i);
     }
   }
 };
+
+PreparedLayer::PreparedLayer() = default;
+PreparedLayer::~PreparedLayer() = default;
+PreparedLayer::PreparedLayer(PreparedLayer&&) noexcept = default;
+PreparedLayer& PreparedLayer::operator=(PreparedLayer&&) noexcept = default;
+
+PreparedLayer prepare_layer(MaskRuns layer) {
+  PreparedLayer p;
+  p.facts = std::make_unique<LayerFacts>(layer_facts_of(std::move(layer)));
+  return p;
+}
 
 LayerChecker::LayerChecker(double pixel_x_mm, double pixel_y_mm, double layer_height_mm) : state_(new State) {
   if (!(pixel_x_mm > 0) || !(pixel_y_mm > 0) || !(layer_height_mm > 0))
@@ -201,31 +138,26 @@ LayerChecker::LayerChecker(double pixel_x_mm, double pixel_y_mm, double layer_he
 
 LayerChecker::~LayerChecker() = default;
 
-void LayerChecker::add_layer(const MaskImage& layer) { add_layer(mask_runs_of(layer)); }
+void LayerChecker::add_layer(const MaskImage& layer) { add_layer(prepare_layer(mask_runs_of(layer))); }
 
-void LayerChecker::add_layer(MaskRuns layer) {
+void LayerChecker::add_layer(MaskRuns layer) { add_layer(prepare_layer(std::move(layer))); }
+
+void LayerChecker::add_layer(PreparedLayer prepared) {
   State& s = *state_;
+  LayerFacts& f = *prepared.facts;
   const size_t k = s.layers;
   if (k == 0) {
-    s.width = layer.width;
-    s.rows = layer.height;
-  } else if (layer.width != s.width || layer.height != s.rows) {
-    throw Error(format("printability check: layer %zu is %d x %d pixels, layer 0 is %d x %d", k, layer.width,
-                       layer.height, s.width, s.rows));
+    s.width = f.mask.width;
+    s.rows = f.mask.height;
+  } else if (f.mask.width != s.width || f.mask.height != s.rows) {
+    throw Error(format("printability check: layer %zu is %d x %d pixels, layer 0 is %d x %d", k, f.mask.width,
+                       f.mask.height, s.width, s.rows));
   }
-  // Every level the checks compare with, ascending, in one pass over the layer's runs.
-  std::vector<LevelRuns> at = runs_at_levels(layer, {1, kIslandLit, kIslandPointLevel, kTrapSolid, kTouchLevel, 128,
-                                                     kSupportLevel});
-  LevelRuns &nonzero = at[0], &lit = at[1], &points = at[2], &solid = at[3], &touching = at[4], &at_least_128 = at[5],
-            &support = at[6];
-  s.check_touching(touching, k);
-  if (k > 0) s.check_islands_and_overhangs(layer, nonzero, lit, points, at_least_128, k);
-  s.air.add_layer(complement_runs(solid), k);
+  s.check_touching(f.touching_box, f.touching_pixels, k);
+  if (k > 0) s.check_islands_and_overhangs(f, k);
+  s.air.add_layer(std::move(f.air), k);
   s.add_air_findings(s.air.take_closed());
-  s.below_support = std::move(support);
-  s.below_nonzero = std::move(nonzero);
-  s.below_128 = std::move(at_least_128);
-  s.below = std::move(layer);
+  s.below = std::move(f);
   ++s.layers;
 }
 

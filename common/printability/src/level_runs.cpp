@@ -30,31 +30,50 @@ uint64_t LevelRuns::pixels() const {
 }
 
 std::vector<LevelRuns> runs_at_levels(const MaskRuns& mask, const std::vector<uint8_t>& levels) {
-  std::vector<LevelRuns> out;
+  // One level at a time into arrays sized for every run: no reallocation and no bookkeeping of
+  // the other levels in the loop.
+  const size_t n = mask.levels.size();
+  const uint16_t* columns = mask.columns.data();
+  const uint8_t* run_level = mask.levels.data();
+  std::vector<LevelRuns> out(levels.size());
   for (size_t j = 0; j < levels.size(); ++j) {
-    out.push_back(empty_like(mask.width, mask.height));
-    out.back().lo.reserve(mask.levels.size());
-    out.back().hi.reserve(mask.levels.size());
-  }
-  const size_t n = levels.size();
-  std::vector<uint32_t> row_start(n);
-  for (int y = 0; y < mask.height; ++y) {
-    for (size_t j = 0; j < n; ++j) row_start[j] = out[j].runs();
-    for (uint32_t i = mask.row_begin[size_t(y)]; i < mask.row_begin[size_t(y) + 1]; ++i) {
-      const uint8_t level = mask.levels[i];
-      const uint16_t lo = mask.columns[2 * size_t(i)], hi = mask.columns[2 * size_t(i) + 1];
-      // Ascending levels: those this run reaches come first.
-      for (size_t j = 0; j < n && levels[j] <= level; ++j) {
-        LevelRuns& r = out[j];
-        if (r.runs() > row_start[j] && r.hi.back() == lo)
-          r.hi.back() = hi;  // runs of different levels side by side: one run here
-        else
-          add_run(r, lo, hi);
+    LevelRuns& r = out[j];
+    r.width = mask.width;
+    r.height = mask.height;
+    r.row_begin.resize(size_t(mask.height) + 1);
+    r.lo.resize(n);
+    r.hi.resize(n);
+    uint16_t *lo = r.lo.data(), *hi = r.hi.data();
+    const uint8_t level = levels[j];
+    uint32_t count = 0;
+    for (int y = 0; y < mask.height; ++y) {
+      const uint32_t first = count;
+      r.row_begin[size_t(y)] = first;
+      for (uint32_t i = mask.row_begin[size_t(y)]; i < mask.row_begin[size_t(y) + 1]; ++i) {
+        if (run_level[i] < level) continue;
+        const uint16_t a = columns[2 * size_t(i)], b = columns[2 * size_t(i) + 1];
+        if (count > first && hi[count - 1] == a) {
+          hi[count - 1] = b;  // runs of different levels side by side: one run here
+        } else {
+          lo[count] = a;
+          hi[count++] = b;
+        }
       }
     }
-    for (size_t j = 0; j < n; ++j) out[j].row_begin.push_back(out[j].runs());
+    r.row_begin[size_t(mask.height)] = count;
+    r.lo.resize(count);
+    r.hi.resize(count);
   }
   return out;
+}
+
+PixelBox box_of(const LevelRuns& runs) {
+  PixelBox box;
+  for (int y = 0; y < runs.height; ++y) {
+    const uint32_t b = runs.row_begin[size_t(y)], e = runs.row_begin[size_t(y) + 1];
+    if (b != e) box.add(runs.lo[b], runs.hi[e - 1], y);
+  }
+  return box;
 }
 
 LevelRuns complement_runs(const LevelRuns& runs) {
@@ -120,6 +139,13 @@ RunLabels label_runs(const LevelRuns& runs, bool diagonal) {
     labels.of_run[i] = label;
   }
   return labels;
+}
+
+std::vector<uint64_t> pixels_inside(const LevelRuns& other, const LevelRuns& runs, const RunLabels& labels) {
+  std::vector<uint64_t> n(labels.count, 0);
+  for (int y = 0; y < runs.height; ++y)
+    for_each_overlap(other, runs, y, [&](uint32_t, uint32_t j, int lo, int hi) { n[labels.of_run[j]] += uint64_t(hi - lo); });
+  return n;
 }
 
 }  // namespace slicereuse

@@ -3,13 +3,18 @@
 // runs are [lo[i], hi[i]) for i in [row_begin[r], row_begin[r+1]), increasing and disjoint.
 // The checks work on these runs rather than on pixels: a plate's layer is mostly unlit.
 //
-// runs_at_levels: a mask's runs -> for each of levels (ascending), the runs of its pixels >= that
-//   level, all in one pass over the mask's runs.
+// PixelBox: the box [x0, x1) x [y0, y1) of the pixels added to it (runs of a row, other boxes);
+//   empty until the first.
+// runs_at_levels: a mask's runs -> for each of levels, the runs of its pixels >= that level
+//   (runs of different levels side by side join), one tight pass over the mask's runs per level.
+// box_of: the box of the runs' pixels.
 // complement_runs: the runs of the pixels in no run of runs (same width and height).
 // subtract_runs: the pixels of a not in b; intersect_runs: the pixels in both.
 // label_runs: runs -> the connected component of each run (0..count-1, in order of first run),
 //   runs of neighbouring rows joining when they share a column (4-connectivity) or, with
 //   diagonal, also when they touch at a corner (8-connectivity).
+// pixels_inside(other, runs, labels): per component of runs (labels, from label_runs), the
+//   pixels of other inside it.
 // for_each_overlap(a, b, row, f): f(i, j, lo, hi) for each pair of run i of a and run j of b in
 //   that row sharing columns [lo, hi), in increasing column order.
 #include <cstdint>
@@ -18,6 +23,24 @@
 #include "slicereuse/png/mask_png.h"
 
 namespace slicereuse {
+
+struct PixelBox {
+  int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;
+  void add(int lo, int hi, int y) {
+    x0 = x0 < lo ? x0 : lo;
+    x1 = x1 > hi ? x1 : hi;
+    y0 = y0 < y ? y0 : y;
+    y1 = y1 > y + 1 ? y1 : y + 1;
+  }
+  void add(const PixelBox& b) {
+    x0 = x0 < b.x0 ? x0 : b.x0;
+    x1 = x1 > b.x1 ? x1 : b.x1;
+    y0 = y0 < b.y0 ? y0 : b.y0;
+    y1 = y1 > b.y1 ? y1 : b.y1;
+  }
+  bool empty() const { return x1 < 0; }
+  bool contains(int x, int y) const { return x >= x0 && x < x1 && y >= y0 && y < y1; }
+};
 
 struct LevelRuns {
   int width = 0;
@@ -30,6 +53,7 @@ struct LevelRuns {
 };
 
 std::vector<LevelRuns> runs_at_levels(const MaskRuns& mask, const std::vector<uint8_t>& levels);
+PixelBox box_of(const LevelRuns& runs);
 LevelRuns complement_runs(const LevelRuns& runs);
 LevelRuns subtract_runs(const LevelRuns& a, const LevelRuns& b);
 LevelRuns intersect_runs(const LevelRuns& a, const LevelRuns& b);
@@ -39,6 +63,7 @@ struct RunLabels {
   uint32_t count = 0;
 };
 RunLabels label_runs(const LevelRuns& runs, bool diagonal);
+std::vector<uint64_t> pixels_inside(const LevelRuns& other, const LevelRuns& runs, const RunLabels& labels);
 
 template <class F>
 void for_each_overlap(const LevelRuns& a, const LevelRuns& b, int row, F f) {

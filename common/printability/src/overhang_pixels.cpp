@@ -3,27 +3,10 @@
 #include <algorithm>
 #include <vector>
 
+#include "uvtools_settings.h"
+
 namespace slicereuse {
 namespace {
-
-constexpr int kErodeIterations = 40;  // UVtools: Overhang ErodeIterations
-constexpr int kDifferenceThreshold = 127;  // UVtools: overhang image thresholded at 127
-
-struct Box {
-  int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;  // [x0, x1) x [y0, y1)
-  void add(const LevelRuns& r) {
-    for (int y = 0; y < r.height; ++y) {
-      const uint32_t b = r.row_begin[size_t(y)], e = r.row_begin[size_t(y) + 1];
-      if (b == e) continue;
-      y0 = std::min(y0, y);
-      y1 = y + 1;
-      x0 = std::min<int>(x0, r.lo[b]);
-      x1 = std::max<int>(x1, r.hi[e - 1]);
-    }
-  }
-  bool empty() const { return x1 < 0; }
-  bool contains(int x, int y) const { return x >= x0 && x < x1 && y >= y0 && y < y1; }
-};
 
 // The level of row y's pixel x in mask, walking the row's runs forwards from i (kept between
 // calls with increasing x), and the first column past x where it may change.
@@ -74,9 +57,8 @@ LevelRuns overhang_pixels(const LayerRuns& layer, const LayerRuns& below) {
     }
     brighter.row_begin.push_back(brighter.runs());
   }
-  Box crop;
-  crop.add(*layer.nonzero);
-  crop.add(*below.nonzero);
+  PixelBox crop = *layer.nonzero_box;
+  crop.add(*below.nonzero_box);
   // Only a pixel whose row has 40 brighter pixels on either side (or the crop's border, which
   // does not erode) can survive: most layers' brighter pixels are thin rims, and end here.
   LevelRuns core;
@@ -97,8 +79,7 @@ LevelRuns overhang_pixels(const LayerRuns& layer, const LayerRuns& below) {
   kept.width = mask.width;
   kept.height = mask.height;
   kept.row_begin.assign(size_t(mask.height) + 1, 0);
-  Box found;
-  found.add(core);
+  const PixelBox found = box_of(core);
   if (found.empty()) return kept;
 
   // L1 distance to the nearest pixel of the crop that is not brighter, over the core's box and

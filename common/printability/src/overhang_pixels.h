@@ -5,7 +5,8 @@
 // within L1 distance 40 is one too. Erosion works inside the union of the two layers' bounding
 // boxes (UVtools crops both to it and reflects at its border, which never erodes: a pixel
 // mirrored across the border is farther than the pixel it mirrors).
-// In: both masks as runs of levels (same size) with their runs of pixels > 0 and >= 128; out:
+// In: both masks as runs of levels (same size) with the box of their pixels > 0 and their runs
+// of pixels >= 128; out:
 // runs (level_runs.h).
 // Time: the lit runs, plus a distance transform over the box of the pixels with 40 brighter
 // pixels on either side in their row (and 41 pixels around it): none where the layer only
@@ -17,7 +18,7 @@ namespace slicereuse {
 
 struct LayerRuns {
   const MaskRuns* mask = nullptr;
-  const LevelRuns* nonzero = nullptr;
+  const PixelBox* nonzero_box = nullptr;
   const LevelRuns* at_least_128 = nullptr;
 };
 

@@ -22,11 +22,11 @@ PrintabilityReport check_print_file(const std::string& path, double pixel_x_mm, 
   LayerChecker checker(pixel_x_mm, pixel_y_mm, layer_height_mm);
   MaskStack stack(path);
   const size_t layers = stack.layers();
-  // The file is read on this thread (one handle); a batch is decoded into runs on all cores, then
-  // checked in order, since the checks stream from the bottom up.
+  // The file is read on this thread (one handle); a batch is decoded into runs and prepared for the
+  // checks on all cores, then checked in order, since the checks stream from the bottom up.
   const size_t batch = size_t(2) * size_t(omp_get_max_threads());
   std::vector<std::vector<uint8_t>> bytes(batch);
-  std::vector<MaskRuns> masks(batch);
+  std::vector<PreparedLayer> masks(batch);
   for (size_t first = 0; first < layers; first += batch) {
     report_progress(progress, double(first) / double(layers), kPhase);
     const size_t n = std::min(batch, layers - first);
@@ -36,7 +36,7 @@ PrintabilityReport check_print_file(const std::string& path, double pixel_x_mm, 
         [&](size_t i) {
           thread_local MaskImage image;
           stack.decode(first + i, bytes[i], image);
-          masks[i] = mask_runs_of(image);
+          masks[i] = prepare_layer(mask_runs_of(image));
         },
         {}, kPhase);
     for (size_t i = 0; i < n; ++i) {

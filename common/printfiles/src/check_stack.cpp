@@ -20,9 +20,10 @@ PrintabilityReport check_stack(const std::vector<SlicePart>& parts, size_t layer
   for (const SlicePart& p : parts) validate_slices(p.slices);
   const MaskImageLayout layout = mask_image_layout(profile);
   LayerChecker checker(layout.column_um / 1000, layout.row_um / 1000, thickness);
-  // A batch is drawn on all cores, then checked in order: the checks stream from the bottom up.
+  // A batch is drawn and prepared for the checks on all cores, then checked in order: the checks
+  // stream from the bottom up.
   const size_t batch = size_t(2) * size_t(omp_get_max_threads());
-  std::vector<MaskRuns> masks(batch);
+  std::vector<PreparedLayer> masks(batch);
   for (size_t first = 0; first < layers; first += batch) {
     report_progress(progress, double(first) / double(layers), kPhase);
     const size_t n = std::min(batch, layers - first);
@@ -34,10 +35,12 @@ PrintabilityReport check_stack(const std::vector<SlicePart>& parts, size_t layer
           for (const SlicePart& p : parts)
             if (k >= p.first && k - p.first < p.slices.layers()) view.push_back({&p.slices, k - p.first});
           const LayerView layer(view.data(), view.size());
+          MaskRuns mask;
           if (profile.antialiasing)
-            rasterize_layer_antialiased_runs(layer, profile, masks[i]);
+            rasterize_layer_antialiased_runs(layer, profile, mask);
           else
-            rasterize_layer_runs(layer, profile, masks[i]);
+            rasterize_layer_runs(layer, profile, mask);
+          masks[i] = prepare_layer(std::move(mask));
         },
         {}, kPhase);
     for (size_t i = 0; i < n; ++i) checker.add_layer(std::move(masks[i]));

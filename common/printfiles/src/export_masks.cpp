@@ -314,8 +314,10 @@ void export_folder(Stack& stack, const PrinterProfile& p, const std::string& fol
 // Encodes layers on all cores, a window ahead of the archive writer (write_sl1, write_goo, write_ctb), which
 // asks for them in order: range by range, the next one made when the writer first asks for one
 // of its layers. encode(layer, k, bytes, mask) makes the layer, layer k of the stack; with checks,
-// mask is not null and receives its mask as runs, which go to the checker in order as the writer
-// takes each layer, and the report to checks->done once it takes the last, before it commits.
+// mask is not null and receives its mask as runs, which the same worker prepares for the checks
+// (prepare_layer: most of their work, in parallel); the checker takes the prepared layers in order
+// as the writer takes each layer, and the report goes to checks->done once it takes the last,
+// before the writer commits.
 class OrderedLayers {
  public:
   using Encode = std::function<void(const LayerView& layer, size_t k, std::vector<uint8_t>& bytes, MaskRuns* mask)>;
@@ -327,7 +329,7 @@ class OrderedLayers {
     if (!checks) return;
     const MaskImageLayout layout = mask_image_layout(p);
     checker_ = std::make_unique<LayerChecker>(layout.column_um / 1000, layout.row_um / 1000, stack.thickness());
-    masks_.resize(window_);
+    prepared_.resize(window_);
   }
 
   const std::vector<uint8_t>& operator()(size_t k) {
@@ -338,7 +340,7 @@ class OrderedLayers {
     const std::vector<uint8_t>& bytes = items_->get(local);
     if (checker_ && k == checked_) {  // a writer may ask for a layer twice (libzip: its size, then its bytes)
       // Item local's slot is not made again before the writer asks for item local + 1.
-      checker_->add_layer(std::move(masks_[local % window_]));
+      checker_->add_layer(std::move(prepared_[local % window_]));
       if (++checked_ == stack_.layers()) checks_->done(checker_->finish());
     }
     return bytes;
@@ -354,8 +356,13 @@ class OrderedLayers {
     items_ = std::make_unique<OrderedParallel>(stack_.end(range_) - first, window_,
                                                [this, first](size_t local, std::vector<uint8_t>& bytes) {
                                                  thread_local MadeLayer made;
-                                                 encode_(stack_.layer(local, made), first + local, bytes,
-                                                         checker_ ? &masks_[local % window_] : nullptr);
+                                                 if (!checker_) {
+                                                   encode_(stack_.layer(local, made), first + local, bytes, nullptr);
+                                                   return;
+                                                 }
+                                                 MaskRuns mask;
+                                                 encode_(stack_.layer(local, made), first + local, bytes, &mask);
+                                                 prepared_[local % window_] = prepare_layer(std::move(mask));
                                                });
   }
 
@@ -366,7 +373,7 @@ class OrderedLayers {
   const size_t window_;
   const MaskChecks* checks_;
   std::unique_ptr<LayerChecker> checker_;
-  std::vector<MaskRuns> masks_;  // per slot of the window: its layer's mask, for the checker
+  std::vector<PreparedLayer> prepared_;  // per slot of the window: its layer, prepared for the checker
   size_t checked_ = 0;           // layers given to the checker
   Progress range_progress_;
   size_t range_ = 0;

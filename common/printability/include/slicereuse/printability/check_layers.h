@@ -25,6 +25,10 @@
 // costs no more than a 10-layer one. Time per layer: proportional to the runs and lit pixels,
 // plus the pixels of the bounding box of each layer's new overhanging pixels.
 // add_layer throws Error when a layer's size differs from the first layer's.
+//
+// prepare_layer: a layer's mask -> what the checks need of it alone (its runs at the checks'
+// levels, its lit and air regions), for add_layer. Thread-safe: a job prepares each layer on
+// the thread that made it, so that the checker's work in order is only joining the layers.
 #include <cstddef>
 #include <memory>
 
@@ -32,6 +36,18 @@
 #include "slicereuse/printability/printability_report.h"
 
 namespace slicereuse {
+
+struct LayerFacts;
+
+struct PreparedLayer {
+  PreparedLayer();
+  ~PreparedLayer();
+  PreparedLayer(PreparedLayer&&) noexcept;
+  PreparedLayer& operator=(PreparedLayer&&) noexcept;
+  std::unique_ptr<LayerFacts> facts;
+};
+
+PreparedLayer prepare_layer(MaskRuns layer);
 
 class LayerChecker {
  public:
@@ -44,6 +60,7 @@ class LayerChecker {
   // print files' decoders give: checked in time proportional to its runs, not its pixels).
   void add_layer(const MaskImage& layer);
   void add_layer(MaskRuns layer);
+  void add_layer(PreparedLayer layer);
   PrintabilityReport finish();
 
  private:

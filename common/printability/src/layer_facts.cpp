@@ -1,0 +1,74 @@
+#include "layer_facts.h"
+
+#include <algorithm>
+
+#include "uvtools_settings.h"
+
+namespace slicereuse {
+namespace {
+
+PixelBox nonzero_box_of(const MaskRuns& mask) {
+  PixelBox box;
+  for (int y = 0; y < mask.height; ++y) {
+    const uint32_t b = mask.row_begin[size_t(y)], e = mask.row_begin[size_t(y) + 1];
+    if (b != e) box.add(mask.columns[2 * size_t(b)], mask.columns[2 * size_t(e) - 1], y);
+  }
+  return box;
+}
+
+// Pixels >= kTouchLevel within kTouchMargin of the edges: whole rows near the top and bottom,
+// elsewhere only the runs reaching into the left or right margin (the first and last of a row).
+void find_touching(const MaskRuns& mask, PixelBox& box, uint64_t& pixels) {
+  const auto touch = [&](int lo, int hi, int y) {
+    if (lo >= hi) return;
+    box.add(lo, hi, y);
+    pixels += uint64_t(hi - lo);
+  };
+  const int right = mask.width - kTouchMargin;
+  for (int y = 0; y < mask.height; ++y) {
+    const uint32_t b = mask.row_begin[size_t(y)], e = mask.row_begin[size_t(y) + 1];
+    const bool edge_row = y < kTouchMargin || y >= mask.height - kTouchMargin;
+    for (uint32_t i = b; i < e; ++i) {
+      const int lo = mask.columns[2 * size_t(i)], hi = mask.columns[2 * size_t(i) + 1];
+      if (!edge_row && lo >= kTouchMargin) break;
+      if (mask.levels[i] >= kTouchLevel) touch(lo, edge_row ? hi : std::min(hi, kTouchMargin), y);
+    }
+    if (edge_row) continue;
+    // From the right, their parts in the right margin (a run across the row counts in both).
+    for (uint32_t i = e; i > b; --i) {
+      const int lo = mask.columns[2 * size_t(i - 1)], hi = mask.columns[2 * size_t(i - 1) + 1];
+      if (hi <= right) break;
+      if (mask.levels[i - 1] >= kTouchLevel) touch(std::max(lo, right), hi, y);
+    }
+  }
+}
+
+}  // namespace
+
+LayerFacts layer_facts_of(MaskRuns mask) {
+  LayerFacts f;
+  std::vector<LevelRuns> at = runs_at_levels(mask, {kIslandLit, kIslandPointLevel, kTrapSolid, 128, kSupportLevel});
+  f.lit = std::move(at[0]);
+  f.points = std::move(at[1]);
+  f.at_least_128 = std::move(at[3]);
+  f.support = std::move(at[4]);
+  f.nonzero_box = nonzero_box_of(mask);
+  find_touching(mask, f.touching_box, f.touching_pixels);
+
+  f.lit_labels = label_runs(f.lit, false);  // UVtools: AllowDiagonalBonds false
+  f.lit_regions.resize(f.lit_labels.count);
+  for (int y = 0; y < f.lit.height; ++y) {
+    for (uint32_t i = f.lit.row_begin[size_t(y)]; i < f.lit.row_begin[size_t(y) + 1]; ++i) {
+      LitRegion& r = f.lit_regions[f.lit_labels.of_run[i]];
+      r.pixels += f.lit.hi[i] - f.lit.lo[i];
+      r.box.add(f.lit.lo[i], f.lit.hi[i], y);
+    }
+  }
+  const std::vector<uint64_t> point_pixels = pixels_inside(f.points, f.lit, f.lit_labels);
+  for (uint32_t c = 0; c < f.lit_labels.count; ++c) f.lit_regions[c].point_pixels = point_pixels[c];
+  f.air = air_layer_of(complement_runs(at[2]));
+  f.mask = std::move(mask);
+  return f;
+}
+
+}  // namespace slicereuse
