@@ -30,39 +30,55 @@ uint64_t LevelRuns::pixels() const {
 }
 
 std::vector<LevelRuns> runs_at_levels(const MaskRuns& mask, const std::vector<uint8_t>& levels) {
-  // One level at a time into arrays sized for every run: no reallocation and no bookkeeping of
-  // the other levels in the loop.
-  const size_t n = mask.levels.size();
+  // All levels in one pass over the mask's runs (each read once) into arrays sized for every run.
+  const size_t n = mask.levels.size(), count_of_levels = levels.size();
   const uint16_t* columns = mask.columns.data();
   const uint8_t* run_level = mask.levels.data();
-  std::vector<LevelRuns> out(levels.size());
-  for (size_t j = 0; j < levels.size(); ++j) {
+  std::vector<LevelRuns> out(count_of_levels);
+  struct Out {
+    uint16_t *lo, *hi;
+    uint32_t count;
+    int open_end;  // the end of the row's open run, -1 when the row's last run was below the level
+    uint8_t level;
+  };
+  std::vector<Out> o(count_of_levels);
+  for (size_t j = 0; j < count_of_levels; ++j) {
     LevelRuns& r = out[j];
     r.width = mask.width;
     r.height = mask.height;
     r.row_begin.resize(size_t(mask.height) + 1);
     r.lo.resize(n);
     r.hi.resize(n);
-    uint16_t *lo = r.lo.data(), *hi = r.hi.data();
-    const uint8_t level = levels[j];
-    uint32_t count = 0;
-    for (int y = 0; y < mask.height; ++y) {
-      const uint32_t first = count;
-      r.row_begin[size_t(y)] = first;
-      for (uint32_t i = mask.row_begin[size_t(y)]; i < mask.row_begin[size_t(y) + 1]; ++i) {
-        if (run_level[i] < level) continue;
-        const uint16_t a = columns[2 * size_t(i)], b = columns[2 * size_t(i) + 1];
-        if (count > first && hi[count - 1] == a) {
-          hi[count - 1] = b;  // runs of different levels side by side: one run here
-        } else {
-          lo[count] = a;
-          hi[count++] = b;
+    o[j] = {r.lo.data(), r.hi.data(), 0, -1, levels[j]};
+  }
+  for (int y = 0; y < mask.height; ++y) {
+    for (size_t j = 0; j < count_of_levels; ++j) {
+      out[j].row_begin[size_t(y)] = o[j].count;
+      o[j].open_end = -1;
+    }
+    for (uint32_t i = mask.row_begin[size_t(y)]; i < mask.row_begin[size_t(y) + 1]; ++i) {
+      const uint16_t a = columns[2 * size_t(i)], b = columns[2 * size_t(i) + 1];
+      const uint8_t v = run_level[i];
+      for (Out& q : o) {
+        if (v < q.level) {
+          q.open_end = -1;
+          continue;
         }
+        if (q.open_end == a) {
+          q.hi[q.count - 1] = b;  // runs of different levels side by side: one run here
+        } else {
+          q.lo[q.count] = a;
+          q.hi[q.count++] = b;
+        }
+        q.open_end = b;
       }
     }
-    r.row_begin[size_t(mask.height)] = count;
-    r.lo.resize(count);
-    r.hi.resize(count);
+  }
+  for (size_t j = 0; j < count_of_levels; ++j) {
+    LevelRuns& r = out[j];
+    r.row_begin[size_t(mask.height)] = o[j].count;
+    r.lo.resize(o[j].count);
+    r.hi.resize(o[j].count);
   }
   return out;
 }
