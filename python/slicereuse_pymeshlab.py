@@ -314,6 +314,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     same span as "seconds" (for benchmarks on a shared machine, where CPU time is less disturbed
     than wall time). progress(step, steps, text) is called after each step."""
     _check_files([source, *targets])
+    _check_parameters(printability)  # before the source is sliced
     stems = [Path(t).stem for t in targets]
     repeated = {s for s in stems if stems.count(s) > 1}
     if repeated:
@@ -342,7 +343,6 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
                       layer_thickness=layer_thickness, profile=profile, verify=verify, details=details,
                       strict=strict, supports=_supports_identity(member_supports),
                       printability=printability)
-    _check_parameters(printability)
     jobs = []
     for target, stem in zip(targets, stems):
         output = out / f"{stem}{extension}"
@@ -483,6 +483,7 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
     that failed), "method" "reuse" or "direct" (the filter's "sliced_directly_<name>"); "seconds"
     covers arranging and making every plate (not slicing the source)."""
     _check_files([source, *targets])
+    _check_parameters(printability)  # before anything is arranged
     by_name = {Path(t).name: str(Path(t).resolve()) for t in targets}
     if len(by_name) != len(targets):
         names = [Path(t).name for t in targets]

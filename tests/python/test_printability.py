@@ -82,3 +82,17 @@ def test_no_check_leaves_the_files_unchecked(tmp_path):
     [plate] = json.loads(run.stdout)["plates"]
     assert "printability" not in plate and all("printability" not in m for m in plate["members"]), plate
     assert family_py("--no-check", "--require-printable", "--out", tmp_path / "x", solid, hollow).returncode == 2
+
+
+def test_an_unknown_printability_is_refused_before_any_work(pymeshlab, tmp_path):
+    hollow, cup, solid = write_printability_parts(tmp_path / "parts")
+    for batch in (sr.family, sr.plates):
+        out = tmp_path / batch.__name__
+        try:
+            batch(solid, [hollow], THICKNESS, out, profile={"printer": "prusa_sl1s_speed"}, printability="strict")
+        except ValueError as e:
+            assert "printability must be one of check, require, off, not 'strict'" in str(e)
+        else:
+            raise AssertionError(f"{batch.__name__} took printability='strict'")
+        # Refused before the source was sliced or anything arranged: nothing in out.
+        assert not out.exists() or not any(out.iterdir()), list(out.iterdir())
