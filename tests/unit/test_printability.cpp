@@ -278,6 +278,21 @@ TEST(Printability, LedgeErodesFromEverySideButTheLayersBox) {
   EXPECT_DOUBLE_EQ(f.area_mm2, 100 * 20 * kPixel * kPixel);
 }
 
+TEST(Printability, LedgeErodesFromTheUnlitRowsOfItsOwnLayersBox) {
+  // Below: a band [10, 150) x [0, 20). Above: the band, a ledge [10, 150) x [20, 140) under it
+  // and a speck at row 160, so the box of the two layers reaches row 161 though the layer below
+  // ends at row 20. The ledge erodes from the band (rows >= 60 remain) and from the unlit rows
+  // [140, 160) (rows < 100 remain), not from its sides, the box's. (The box once ended at the
+  // layer below's last row, and the ledge then kept rows [60, 140).)
+  const std::vector<std::vector<Rect>> layers = {{{10, 0, 150, 20}},
+                                                 {{10, 0, 150, 20}, {10, 20, 150, 140}, {10, 160, 11, 161}}};
+  const PrintabilityReport r = check(200, 180, layers);
+  ASSERT_EQ(r.count(FindingKind::Overhang), 1u);
+  const Finding f = of_kind(r, FindingKind::Overhang)[0];
+  expect_box(f, 10, 60, 150, 100);
+  EXPECT_DOUBLE_EQ(f.area_mm2, 140 * 40 * kPixel * kPixel);
+}
+
 TEST(Printability, NarrowLedgeErodesAway) {
   std::vector<std::vector<Rect>> layers(15);
   for (int k = 0; k < 15; ++k) {

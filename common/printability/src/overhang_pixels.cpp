@@ -33,6 +33,26 @@ LevelRuns overhang_pixels(const LayerRuns& layer, const LayerRuns& below) {
   const MaskRuns& mask = *layer.mask;
   // Brighter by more than 127 needs >= 128 here and < 128 below; the levels decide the rest.
   const LevelRuns candidates = subtract_runs(*layer.at_least_128, *below.at_least_128);
+  PixelBox crop = *layer.nonzero_box;
+  crop.add(*below.nonzero_box);
+  // Only a pixel whose row has 40 brighter pixels on either side (or the crop's border, which
+  // does not erode) can survive. The brighter pixels lie within the candidates, so where no
+  // candidate run is that long (most layers: thin rims), none survives.
+  const auto core_of = [&](int lo, int hi, int& core_lo, int& core_hi) {
+    core_lo = lo == crop.x0 ? lo : lo + kErodeIterations;
+    core_hi = hi == crop.x1 ? hi : hi - kErodeIterations;
+    return core_lo < core_hi;
+  };
+  LevelRuns kept;
+  kept.width = mask.width;
+  kept.height = mask.height;
+  kept.row_begin.assign(size_t(mask.height) + 1, 0);
+  bool any_core = false;
+  for (uint32_t i = 0; i < candidates.runs() && !any_core; ++i) {
+    int core_lo, core_hi;
+    any_core = core_of(candidates.lo[i], candidates.hi[i], core_lo, core_hi);
+  }
+  if (!any_core) return kept;
   LevelRuns brighter;
   brighter.width = mask.width;
   brighter.height = mask.height;
@@ -57,28 +77,19 @@ LevelRuns overhang_pixels(const LayerRuns& layer, const LayerRuns& below) {
     }
     brighter.row_begin.push_back(brighter.runs());
   }
-  PixelBox crop = *layer.nonzero_box;
-  crop.add(*below.nonzero_box);
-  // Only a pixel whose row has 40 brighter pixels on either side (or the crop's border, which
-  // does not erode) can survive: most layers' brighter pixels are thin rims, and end here.
   LevelRuns core;
   core.width = mask.width;
   core.height = mask.height;
   core.row_begin.push_back(0);
   for (int y = 0; y < mask.height; ++y) {
     for (uint32_t i = brighter.row_begin[size_t(y)]; i < brighter.row_begin[size_t(y) + 1]; ++i) {
-      const int lo = brighter.lo[i] == crop.x0 ? brighter.lo[i] : brighter.lo[i] + kErodeIterations;
-      const int hi = brighter.hi[i] == crop.x1 ? brighter.hi[i] : brighter.hi[i] - kErodeIterations;
-      if (lo >= hi) continue;
+      int lo, hi;
+      if (!core_of(brighter.lo[i], brighter.hi[i], lo, hi)) continue;
       core.lo.push_back(uint16_t(lo));
       core.hi.push_back(uint16_t(hi));
     }
     core.row_begin.push_back(core.runs());
   }
-  LevelRuns kept;
-  kept.width = mask.width;
-  kept.height = mask.height;
-  kept.row_begin.assign(size_t(mask.height) + 1, 0);
   const PixelBox found = box_of(core);
   if (found.empty()) return kept;
 
