@@ -78,15 +78,23 @@ void AirRegions::add_layer(AirLayer layer_air, size_t layer) {
   // Pixels shared with each region of the layer below, per (piece, region below) pair: the
   // overlaps of a row come mostly in runs of the same pair, so they are summed as they come,
   // then sorted and summed by pair (the area below is the last overlapping piece's, as it came).
+  // Air that reaches the image border drains whatever it joins, so pairs of such air need no
+  // counting, and rows with no other air (every row of a layer without holes) no visit.
   struct Shared {
     uint64_t key = 0, pixels = 0, below_area = 0;
   };
   std::vector<Shared> shared;
+  std::vector<uint8_t> inner_rows(size_t(air.height), 0);
+  for (int y = 0; y < air.height; ++y)
+    for (uint32_t i = air.row_begin[size_t(y)]; i < air.row_begin[size_t(y) + 1]; ++i)
+      if (node[labels.of_run[i]] != kSolid && !pieces[labels.of_run[i]].border) inner_rows[size_t(y)] = 1;
   if (previous_air_.height == air.height && previous_air_.width == air.width) {
     for (int y = 0; y < air.height; ++y) {
+      if (!inner_rows[size_t(y)] && !previous_inner_rows_[size_t(y)]) continue;
       for_each_overlap(air, previous_air_, y, [&](uint32_t i, uint32_t j, int lo, int hi) {
         const uint32_t c = labels.of_run[i];
         if (node[c] == kSolid || previous_node_[j] == kSolid) return;
+        if (pieces[c].border && regions_[previous_node_[j]].border) return;
         const uint64_t key = uint64_t(c) << 32 | previous_node_[j];
         if (shared.empty() || shared.back().key != key) shared.push_back({key, 0, 0});
         shared.back().pixels += uint64_t(hi - lo);
@@ -139,6 +147,10 @@ void AirRegions::add_layer(AirLayer layer_air, size_t layer) {
   }
   regions_ = std::move(alive);
   sets_ = UnionFind(regions_.size());
+  previous_inner_rows_.assign(size_t(air.height), 0);
+  for (int y = 0; y < air.height; ++y)
+    for (uint32_t i = air.row_begin[size_t(y)]; i < air.row_begin[size_t(y) + 1]; ++i)
+      if (previous_node_[i] != kSolid && !regions_[previous_node_[i]].border) previous_inner_rows_[size_t(y)] = 1;
   previous_air_ = std::move(layer_air.runs);
 }
 
@@ -152,6 +164,7 @@ void AirRegions::finish() {
   previous_air_ = LevelRuns();
   previous_node_.clear();
   previous_area_.clear();
+  previous_inner_rows_.clear();
 }
 
 std::vector<AirRegion> AirRegions::take_closed() {

@@ -60,6 +60,7 @@ class AirRegions {
   LevelRuns previous_air_;
   std::vector<uint32_t> previous_node_;  // per run of previous_air_, UINT32_MAX: solid
   std::vector<uint64_t> previous_area_;  // per run: its layer region's pixels
+  std::vector<uint8_t> previous_inner_rows_;  // per row: holds air not reaching the image border
   std::vector<AirRegion> closed_;
 };
 
