@@ -63,8 +63,12 @@ void compensate_elephant_foot(const LayerView& layer, double z, double compensat
     const ClipperLib::Paths opened = offset_region(offset_region(coarse, -half), half);
     const ClipperLib::Paths narrow =
         offset_region(offset_region(clip(coarse, opened, ClipperLib::ctDifference), -kSliverMm), kSliverMm);
-    const ClipperLib::Paths kept = clip(region, offset_region(narrow, compensation_mm), ClipperLib::ctIntersection);
-    region = clip(offset_region(region, -compensation_mm), kept, ClipperLib::ctUnion);
+    if (narrow.empty()) {
+      region = offset_region(region, -compensation_mm);  // most layers: nothing narrow to keep
+    } else {
+      const ClipperLib::Paths kept = clip(region, offset_region(narrow, compensation_mm), ClipperLib::ctIntersection);
+      region = clip(offset_region(region, -compensation_mm), kept, ClipperLib::ctUnion);
+    }
   }
   region_into_layer(region, z, out);
 }
