@@ -786,6 +786,78 @@ TEST_F(PlateJobTest, RequiredPrintableRefusesATrapAndACupNamingThemAndWritesNoth
   EXPECT_TRUE(std::filesystem::exists(path("s.goo")));
 }
 
+// Labels cut into each member's base (mirrored, the largest height that fits, 3 mm deep): by
+// reuse as by direct slicing, made where drawn and in ranges alike, with the elephant foot
+// compensated after; the layers below the depth lose the letters and no other layer changes.
+TEST_F(PlateJobTest, LabelsAreCutIntoEachBaseByReuseAsByDirect) {
+  // One family: boxes of the same faces, the second a little longer (same connectivity).
+  const Mesh base = test::make_box(0, 0, 0, 30, 15, 4, 6);
+  Mesh longer = base;
+  for (size_t v = 0; v < longer.vertices(); ++v) longer.V[3 * v] *= 1.05;
+  const std::vector<std::string> names{"b1", "b2"};
+  PrinterProfile profile = display(500, 400);
+  profile.antialiasing = true;
+  profile.elephant_foot_mm = 0.2;
+  const std::vector<Mesh> placed = placed_on_one_plate({base, longer}, names, profile);
+  ASSERT_EQ(placed.size(), 2u);
+  SliceOptions so;
+  so.thickness = 0.1;
+  const Slices encoding = slice_layers(base, so);
+  PlateJobOptions direct;
+  direct.slicing = so;
+  direct.slicing.z_start = encoding.z_start;
+  direct.names = names;
+  export_plate(placed, direct, profile, path("plain"));
+  direct.labels = {"CASE1", "CASE2"};
+  const PlateJobStats d = export_plate(placed, direct, profile, path("direct"));
+  // "CASE1" is 31.7 mm long at 7.5 mm, 28.5 at 6.75: 28 mm of the 30 mm box fit it at 6.075 mm.
+  // The longer box (31.5 mm) holds 6.75 mm.
+  ASSERT_EQ(d.label_heights_mm.size(), 2u);
+  EXPECT_DOUBLE_EQ(d.label_heights_mm[0], 7.5 * 0.9 * 0.9);
+  EXPECT_DOUBLE_EQ(d.label_heights_mm[1], 7.5 * 0.9);
+  PlateJobOptions reuse = direct;
+  reuse.encoding = &encoding;
+  EXPECT_EQ(export_plate(placed, reuse, profile, path("reuse")).ranges, 0u);
+  direct.range_budget_bytes = 20000;
+  EXPECT_GT(export_plate(placed, direct, profile, path("direct_ranges")).ranges, 2u);  // some in the engraved layers
+  for (const char* made : {"reuse", "direct_ranges"}) {
+    const StackComparison same = compare_mask_stacks(path("direct"), path(made), "");
+    EXPECT_EQ(same.max_grey_difference, 0) << made;
+  }
+  // 3 mm deep: layers 0-29 of 0.1 mm lose the letters, and no other layer changes.
+  const StackComparison c = compare_mask_stacks(path("plain"), path("direct"), "");
+  ASSERT_EQ(c.layers.size(), 40u);
+  for (size_t k = 0; k < c.layers.size(); ++k)
+    EXPECT_EQ(c.layers[k].max_grey_difference > 0, k < 30) << "layer " << k;
+  MaskStack plain(path("plain")), labelled(path("direct"));
+  for (size_t k : {size_t(0), size_t(29)}) {
+    uint64_t before = 0, after = 0;
+    for (uint8_t v : layer(plain, k).pixels) before += v;
+    for (uint8_t v : layer(labelled, k).pixels) after += v;
+    EXPECT_LT(after, before) << "layer " << k;  // only cut, never lit
+  }
+}
+
+TEST_F(PlateJobTest, ALabelThatFitsNowhereFailsTheJobUnlessAllowedUnlabelled) {
+  const std::vector<Mesh> placed{test::make_box(-3, -3, 0, 3, 3, 2, 2), test::make_box(10, -3, 0, 40, 12, 2, 2)};
+  PlateJobOptions o;
+  o.slicing.thickness = 0.1;
+  o.names = {"tiny", "big"};
+  o.labels = {"CASE12", "CASE13"};
+  const std::string message = test::error_of([&] { export_plate(placed, o, display(500, 400), path("p.sl1")); });
+  EXPECT_NE(message.find("the label 'CASE12' does not fit on the base of tiny: even 2.5 mm high it is "), std::string::npos)
+      << message;
+  EXPECT_TRUE(std::filesystem::is_empty(dir));
+  o.allow_unlabelled = true;
+  const PlateJobStats st = export_plate(placed, o, display(500, 400), path("p.sl1"));
+  // "CASE13" is 5.107 times as long as high: 5.47 mm high (27.92 mm long) it would fit the 28 mm
+  // inside the margins only 0.08 mm either side of the middle, between two centres of the
+  // 0.112 mm grid tried; 4.92 mm high it fits.
+  EXPECT_EQ(st.label_heights_mm, (std::vector<double>{0, 7.5 * 0.9 * 0.9 * 0.9 * 0.9}));
+  o.labels = {"CASE12"};
+  EXPECT_ERROR(export_plate(placed, o, display(500, 400), path("q.sl1")), "a plate of 2 members was given 1 labels");
+}
+
 TEST_F(PlateJobTest, CancellingAPlateLeavesNothing) {
   test::FamilyOptions o = small_arch();
   const Mesh base = test::make_family_base(o);

@@ -28,10 +28,6 @@ struct FaceGrid {
   std::vector<uint8_t> inside;
   std::vector<double> clearance;  // in cells
 
-  bool inside_at(double x, double y) const {
-    const int i = int(std::floor((x - x0) / step)), j = int(std::floor((y - y0) / step));
-    return i >= 0 && i < w && j >= 0 && j < h && inside[size_t(j) * size_t(w) + size_t(i)];
-  }
 };
 
 // 1-D squared distance transform of f (n values) into d (Felzenszwalb and Huttenlocher).
@@ -144,6 +140,14 @@ ClipperLib::Paths placed_region(const ClipperLib::Paths& label, double x_mm, dou
   return out;
 }
 
+// Whether (x, y) mm lies inside the region (its loops do not cross: inside an odd number).
+bool covers(const ClipperLib::Paths& region, double x, double y) {
+  const ClipperLib::IntPoint p{region_units(x), region_units(y)};
+  int loops = 0;
+  for (const ClipperLib::Path& loop : region) loops += ClipperLib::PointInPolygon(p, loop) != 0;
+  return loops % 2 == 1;
+}
+
 bool inside(const ClipperLib::Paths& label, const ClipperLib::Paths& fit) {
   ClipperLib::Clipper clipper;
   clipper.AddPaths(label, ClipperLib::ptSubject, true);
@@ -202,11 +206,11 @@ LabelPlacement place_label(const ClipperLib::Paths& face, const std::string& tex
         if (g.clearance[centre] < half_height_cells - 1) break;
         const double x = g.x0 + (double(centre % size_t(g.w)) + 0.5) * g.step;
         const double y = g.y0 + (double(centre / size_t(g.w)) + 0.5) * g.step;
-        // The box's corners first, on the grid: most centres fail there.
+        // The box's corners first: most centres fail there.
         bool corners = true;
         for (const double u : {-0.5, 0.5})
           for (const double v : {-0.5, 0.5})
-            corners = corners && g.inside_at(x + c * u * box[0] - s * v * box[1], y + s * u * box[0] + c * v * box[1]);
+            corners = corners && covers(fit, x + c * u * box[0] - s * v * box[1], y + s * u * box[0] + c * v * box[1]);
         if (!corners) continue;
         ClipperLib::Paths placed = placed_region(label, x, y, cs);
         if (inside(placed, fit)) {

@@ -72,6 +72,22 @@ void layers_into(const Slices& s, size_t a, size_t b, Slices& out, bool with_poi
   out.t.clear();
 }
 
+void append_layers(const Slices& s, size_t a, size_t b, Slices& out) {
+  const size_t c0 = s.layer_begin[a], c1 = s.layer_begin[b];
+  const size_t p0 = s.contour_begin[c0], p1 = s.contour_begin[c1];
+  if (out.layer_begin.empty()) out.layer_begin.push_back(0);
+  if (out.contour_begin.empty()) out.contour_begin.push_back(0);
+  const uint64_t contours = out.contours(), points = out.points();
+  out.layer_z.insert(out.layer_z.end(), s.layer_z.begin() + long(a), s.layer_z.begin() + long(b));
+  for (size_t k = a + 1; k <= b; ++k) out.layer_begin.push_back(s.layer_begin[k] - c0 + contours);
+  for (size_t c = c0 + 1; c <= c1; ++c) out.contour_begin.push_back(s.contour_begin[c] - p0 + points);
+  out.contour_open.insert(out.contour_open.end(), s.contour_open.begin() + long(c0), s.contour_open.begin() + long(c1));
+  out.xyz.insert(out.xyz.end(), s.xyz.begin() + long(3 * p0), s.xyz.begin() + long(3 * p1));
+  out.face.clear();
+  out.edge.clear();
+  out.t.clear();
+}
+
 size_t Slices::open_contours() const {
   size_t n = 0;
   for (uint8_t o : contour_open) n += o != 0;

@@ -28,6 +28,10 @@
 // other members, are replaced by compensate_faded_layers' contours (faded_layers.h: the full
 // compensation on layer 0 fading to none over profile.faded_layers, as PrusaSlicer's) in every
 // way of making it.
+// Labels (options.labels): a member's label is placed once on the region its first layers share
+// down to options.label.depth_mm (place_label.h, mirrored to read from below), and cut from
+// those layers' contours before the elephant-foot compensation, in every way of making it: from
+// its own contours, so a reused member's labelled masks are those of direct slicing.
 // Memory: reusing, each member's transfer is prepared once (ExactTransfer) and its layer k is
 // transferred where layer k's mask is drawn, on that thread (LayerMaker, export_masks.h), so the
 // plate holds a few layers of points plus those of the layers made directly beforehand (the
@@ -42,6 +46,7 @@
 // the figures. Throws Error for no members, an encoding without a layer thickness, a member of
 // another family with strict, supports not one per member, or whatever transfer, slicing or
 // export refuse.
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -56,6 +61,16 @@
 #include "slicereuse/util/progress.h"
 
 namespace slicereuse {
+
+// Labels engraved into members' bases (place_label.h, label_region.h): height_mm high where
+// the label fits, down by tenths to min_height_mm, depth_mm deep, margin_mm inside the base's
+// edges; mirrored to read from below. Defaults after the dental literature (7.5 mm high, 3 mm deep).
+struct LabelOptions {
+  double height_mm = 7.5;
+  double min_height_mm = 2.5;
+  double depth_mm = 3;
+  double margin_mm = 1;
+};
 
 struct PlateJobOptions {
   const Slices* encoding = nullptr;  // the source's encoding (reuse), or null (direct slicing)
@@ -74,8 +89,8 @@ struct PlateJobOptions {
   // The members' names for messages (a strict refusal); empty: "member 1", "member 2", ...
   std::vector<std::string> names;
   // When set, the plate is made in one range and this sees its parts (one per member with
-  // layers, then one per support) before their masks are drawn (and before the elephant-foot
-  // compensation): a print job's contour file.
+  // layers, then one per support) before their masks are drawn (labelled, and before the
+  // elephant-foot compensation): a print job's contour file.
   std::function<void(const std::vector<SlicePart>& parts)> whole_stack;
   // Per member (placed like it), its support structure, or null; empty: none.
   std::vector<const Mesh*> supports;
@@ -87,6 +102,12 @@ struct PlateJobOptions {
   // and place, and nothing is written.
   bool check_printability = false;
   bool require_printable = false;
+  // Per member, the text engraved into its base (engrave_labels.h; empty or "": none). A label
+  // that fits at no height fails the job (Error naming the member and the sizes tried), or with
+  // allow_unlabelled the member is printed without it (stats.label_heights_mm 0).
+  std::vector<std::string> labels;
+  LabelOptions label;
+  bool allow_unlabelled = false;
 };
 
 // Where a finding of the plate's printability lies: the member (an index into placed) whose
@@ -116,6 +137,10 @@ struct PlateJobStats {
   bool checked = false;
   PrintabilityReport printability;
   std::vector<FindingPlace> finding_places;
+  // With options.labels: per member, its label's height in mm (0: none, or it fitted nowhere and
+  // allow_unlabelled printed it without), and its place: centre (mm, plate) and turn (degrees).
+  std::vector<double> label_heights_mm;
+  std::vector<std::array<double, 3>> label_places;
 };
 
 

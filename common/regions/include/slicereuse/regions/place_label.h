@@ -8,7 +8,8 @@
 // than min_height_mm, at which the label's region, turned by one of 12 angles (0 first, then
 // the nearest to 0, by 15 degrees) about a centre, lies inside the face shrunk by the margin;
 // the centres tried are those of a grid over the face (a 250th of its larger side, 0.1 mm at
-// least) farthest from its edges first, then nearest the middle of its box. The region is the
+// least) farthest from its edges first, then nearest the middle of its box (a fit closer than a
+// grid step either way may be missed: the next height then fits). The region is the
 // label placed (kRegionScale units).
 // Not placed when no height fits. Deterministic: the same face and text place the same way on
 // every machine. Throws Error as label_region does, or for a least height above the height.

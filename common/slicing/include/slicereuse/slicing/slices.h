@@ -54,6 +54,10 @@ struct Slices {
 // no encoding. Needs a <= b <= s.layers(), and s's points when with_points.
 void layers_into(const Slices& s, size_t a, size_t b, Slices& out, bool with_points);
 
+// Layers [a, b) of s with their points appended to out's (out's z_start and thickness kept; no
+// encoding: out's is cleared). Needs a <= b <= s.layers() and s's points.
+void append_layers(const Slices& s, size_t a, size_t b, Slices& out);
+
 // Signed area of contour c's loop in the xy plane (shoelace, in double), seen from +z: positive
 // for a counter-clockwise (outer) loop, negative for a clockwise one (a hole). Needs xyz.
 double contour_area(const Slices& s, size_t c);
