@@ -6,6 +6,7 @@
                                       [--workers N | --scheduler tcp://HOST:PORT [--send-encoding]]
                                       [--resume] [--strict] [--supports]
                                       [--require-printable | --no-check]
+                                      [--labels [FILE.csv] [--allow-unlabelled]]
                                       MESH0 MESH1 ...
 
 Default: slices MESH0 once with encoding, then for each member MESH1 ...: reads it (STL, PLY or
@@ -29,6 +30,11 @@ each plate member's) has "printability": {"islands", "overhangs", "resin_traps",
 "touching_bounds"[, "trapped_mm3"]}. --require-printable: a member (or plate) whose file would
 hold an island, a resin trap or a suction cup is not written; its entry's "error" names each.
 --no-check: no check (it costs about half again a member's time; bench/RESULTS.md).
+--labels: each member's file stem (or, --labels FILE.csv, its row's label: docs/formats.md,
+"Labels file") is cut 3 mm deep into its base, mirrored to read from below, as large as fits up
+to 7.5 mm; each member's entry gains "label_height_mm", and the plates' layout pictures name the
+members by their labels. A label that fits nowhere fails its member (or plate), naming it, unless
+--allow-unlabelled (then it is printed without, "label_height_mm" 0).
 Prints one JSON object: {"source": MESH0, "seconds": total, "source_seconds", "engine",
 "failed", "targets": [{"mesh", "layers", "points", "resliced_layers", "seconds", "output",
 "method", "worker", "printability"[, "min_similarity", "max_grey_difference"][, "resumed"]}
@@ -119,6 +125,11 @@ def main():
                              "or a suction cup; its entry's error names them")
     checks.add_argument("--no-check", action="store_const", dest="printability", const="off",
                         help="do not check the print files' printability")
+    ap.add_argument("--labels", nargs="?", const="names", metavar="FILE.csv",
+                    help="cut each member's label into its base: its file stem, or its row of FILE.csv "
+                         "(member,label)")
+    ap.add_argument("--allow-unlabelled", action="store_true",
+                    help="--labels: print a member whose label fits nowhere on its base without it")
     ap.add_argument("--resume", action="store_true",
                     help="skip members whose outputs an earlier run made complete and valid")
     ap.add_argument("meshes", nargs="+", metavar="MESH", help="the sliced mesh, then its family members")
@@ -148,6 +159,8 @@ def main():
         ap.error("--send-encoding is for members made by reuse, one print file each")
     if args.strict and args.direct:
         ap.error("--strict is for members made by reuse, not --direct")
+    if args.allow_unlabelled and not args.labels:
+        ap.error("--allow-unlabelled goes with --labels")
     engine = {"workers": args.workers, "scheduler": args.scheduler, "resume": args.resume}
     if args.send_encoding:
         engine["send_encoding"] = True
@@ -159,13 +172,15 @@ def main():
             result = sr.plates(args.meshes[0], args.meshes[1:], args.layer_thickness, args.out, profile=profile,
                                progress=bar, direct=args.direct, verify=args.verify, spacing_mm=args.spacing,
                                placements=args.placements, extension=extension, strict=args.strict,
-                               supports=args.supports, printability=args.printability, **engine)
+                               supports=args.supports, printability=args.printability, labels=args.labels,
+                               allow_unlabelled=args.allow_unlabelled, **engine)
         else:
             result = sr.family(args.meshes[0], args.meshes[1:], args.layer_thickness, args.out,
                                profile=profile, binary=not args.text, extension=extension, progress=bar,
                                direct=args.direct, verify=args.verify, keep_contours=args.keep_contours,
                                strict=args.strict, supports=args.supports,
-                               printability=args.printability, **engine)
+                               printability=args.printability, labels=args.labels,
+                               allow_unlabelled=args.allow_unlabelled, **engine)
     except Exception as e:  # pymeshlab.PyMeshLabException, OSError, RuntimeError, ValueError
         if sys.stderr.isatty():
             sys.stderr.write("\n")

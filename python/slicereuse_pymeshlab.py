@@ -114,6 +114,7 @@ class MemberJob(batch.Job):
     strict: bool
     supports: str
     printability: str
+    labels: dict
 
 
 @dataclass
@@ -146,6 +147,7 @@ class PlateJob(batch.Job):
     check_output: str
     supports: str
     printability: str
+    labels: dict
 
 
 def _encode_source(source, out, layer_thickness, epoch, resume, binary=True):
@@ -194,6 +196,32 @@ def _check_parameters(printability):
     if printability not in PRINTABILITY:
         raise ValueError(f"printability must be one of {', '.join(PRINTABILITY)}, not {printability!r}")
     return {"check_printability": printability != "off", "require_printable": printability == "require"}
+
+
+def _label_parameters(labels, allow_unlabelled=False):
+    """make_print_job's and make_plate_job's label parameters for labels: None (no labels),
+    "names" (each member's file name without its extension) or the path of a labels file (CSV,
+    docs/formats.md "Labels file"); allow_unlabelled prints a member whose label fits nowhere
+    without it (else its job fails naming it)."""
+    if labels is None:
+        return {"labels": False, "labels_file": "", "allow_unlabelled": False}
+    if labels != "names" and not Path(labels).is_file():
+        raise ValueError(f'labels must be None, "names" or a labels file (CSV), but {labels!r} is no file')
+    return {"labels": True, "labels_file": "" if labels == "names" else str(Path(labels).resolve()),
+            "allow_unlabelled": bool(allow_unlabelled)}
+
+
+def _labels_identity(parameters):
+    """What a batch's resume key holds of its label parameters: the labels file's identity."""
+    if not parameters["labels_file"]:
+        return dict(parameters)
+    return dict(parameters, labels_file=batch.file_identity(parameters["labels_file"]))
+
+
+def _add_label(entry, result, name):
+    """The entry with "label_height_mm", when the job labelled its member (named name)."""
+    height = result.get(f"label_height_mm_{name}")
+    return entry if height is None else dict(entry, label_height_mm=height)
 
 
 def _add_printability(entry, result, suffix=""):
@@ -259,7 +287,7 @@ def _job_supports(supports, direct, out, source, layer_thickness, epoch, resume)
 def family(source, targets, layer_thickness, out, profile=None, binary=True, progress=None,
            direct=False, verify=False, keep_contours=False, details=False, extension=None,
            workers=0, scheduler=None, resume=False, send_encoding=False, strict=False, supports=False,
-           printability="check"):
+           printability="check", labels=None, allow_unlabelled=False):
     """The production pipeline: one print job per family member, out/<member stem><extension>
     (one of print_file_extensions(), or "" for a folder of PNG images; None: the printer's own,
     printer_extension(profile's printer)).
@@ -291,6 +319,11 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     "trapped_mm3"; "require": also, a member whose file would hold an island, a resin trap or a
     suction cup is not written, and its entry's "error" names each such finding, its layers and
     place; "off": no check (and no "printability").
+    labels="names" cuts each member's file name without its extension into its base, a labels
+    file (CSV, docs/formats.md "Labels file") its row's label, mirrored to read from below and
+    as large as fits up to 7.5 mm; each entry then has "label_height_mm". A label that fits
+    nowhere fails the member's job (its "error" names it), or with allow_unlabelled=True leaves
+    it off ("label_height_mm" 0).
 
     Where the members are made (slicereuse_batch.py): workers=0 (the default) in this process;
     workers=N an embedded Dask LocalCluster of N worker processes (None: one per two cores, slicereuse_batch.default_workers);
@@ -315,6 +348,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     than wall time). progress(step, steps, text) is called after each step."""
     _check_files([source, *targets])
     _check_parameters(printability)  # before the source is sliced
+    label_parameters = _label_parameters(labels, allow_unlabelled)
     stems = [Path(t).stem for t in targets]
     repeated = {s for s in stems if stems.count(s) > 1}
     if repeated:
@@ -342,7 +376,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     parameters = dict(encoding=batch.file_identity(encoding) if encoding else None,
                       layer_thickness=layer_thickness, profile=profile, verify=verify, details=details,
                       strict=strict, supports=_supports_identity(member_supports),
-                      printability=printability)
+                      printability=printability, labels=_labels_identity(label_parameters))
     jobs = []
     for target, stem in zip(targets, stems):
         output = out / f"{stem}{extension}"
@@ -355,7 +389,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
                               target=str(Path(target).resolve()), output=str(output), contours=str(contours or ""),
                               check=str(check or ""), layer_thickness=layer_thickness, profile=profile,
                               details=details, strict=strict, supports=member_supports,
-                              printability=printability))
+                              printability=printability, labels=label_parameters))
     with batch.engine(workers, scheduler, setup=load) as engine:
         targets_out = _run_jobs(engine, jobs, _make_member, encoding, send_encoding, resume, progress, step, steps)
         engine.finish(_free_cached_memory)
@@ -421,10 +455,11 @@ def _make_member(job, encoding):
         r = ms.apply_filter("make_print_job", mesh_file=job.target, encoding_file=encoding,
                             layer_thickness=job.layer_thickness, contour_file=job.contours, output_path=job.output,
                             strict=job.strict, **_check_parameters(job.printability), **supports,
-                            **job.profile)
+                            **job.labels, **job.profile)
         entry = _add_printability({"layers": r["layers"], "points": r["points"],
                                    "resliced_layers": r["resliced_layers"], "seconds": time.perf_counter() - t0,
                                    "output": job.output, "method": "reuse" if r["reused"] else "direct"}, r)
+        entry = _add_label(entry, r, Path(job.target).name)
         if job.supports:
             entry.update({k: r[k] for k in SUPPORT_KEYS}, support_seconds=r["support_seconds"])
         if encoding and not r["reused"]:
@@ -437,7 +472,7 @@ def _make_member(job, encoding):
             # The same supports (the same points), so that only the layers' making differs.
             ms.apply_filter("make_print_job", mesh_file=job.target, encoding_file="", layer_thickness=job.layer_thickness,
                             contour_file="", output_path=job.check, check_printability=False, **supports,
-                            **job.profile)
+                            **job.labels, **job.profile)
             c = ms.apply_filter("compare_mask_stacks", stack_a=job.output, stack_b=job.check, report_file="")
             entry.update(min_similarity=c["min_similarity"], max_grey_difference=c["max_grey_difference"])
     return entry
@@ -450,7 +485,7 @@ def _free_cached_memory():
 
 def plates(source, targets, layer_thickness, out, profile=None, progress=None, direct=False, verify=False,
            spacing_mm=2.0, placements=None, extension=None, workers=0, scheduler=None, resume=False,
-           strict=False, supports=False, printability="check"):
+           strict=False, supports=False, printability="check", labels=None, allow_unlabelled=False):
     """The lab's job: the targets arranged on build plates of the printer, one print file per
     plate, out/plate_<k><extension> (one of print_file_extensions(), or "" for folders of PNG images;
     None: the printer's own, printer_extension(profile's printer)), its top view
@@ -476,6 +511,8 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
     "printability" (as family()'s) and each member's its own counts (a finding goes to the member
     whose footprint holds it); "require": a plate holding an island, a resin trap or a suction cup
     is not written, its entry's "error" naming each such finding, its member and place.
+    labels and allow_unlabelled as for family(): each plate member's entry has
+    "label_height_mm", and the layout pictures name the members by their labels.
     Returns {"source", "members", "seconds", "arrange_seconds", "engine", "failed", "plates":
     [{"output", "layout", "members", "area_used", "layers", "points", "seconds", "worker"[,
     "min_similarity", "max_grey_difference"][, "resumed"]} or {"output", "layout", "members",
@@ -484,6 +521,7 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
     covers arranging and making every plate (not slicing the source)."""
     _check_files([source, *targets])
     _check_parameters(printability)  # before anything is arranged
+    label_parameters = _label_parameters(labels, allow_unlabelled)
     by_name = {Path(t).name: str(Path(t).resolve()) for t in targets}
     if len(by_name) != len(targets):
         names = [Path(t).name for t in targets]
@@ -529,7 +567,7 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
         parameters = dict(placements=batch.file_identity(summary), encoding=batch.file_identity(encoding)
                           if encoding else None, layer_thickness=layer_thickness, profile=profile, verify=verify,
                           strict=strict, supports=_supports_identity(member_supports),
-                          printability=printability)
+                          printability=printability, labels=_labels_identity(label_parameters))
         jobs = []
         for k, plate in enumerate(layout["plates"], 1):
             output = plate["output"]
@@ -546,7 +584,8 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
                                  z_start=arranged["z_start"], profile=profile, strict=strict,
                                  plate_output=arrange.output,
                                  check_output=str(out / "direct" / f"plate{extension}") if verify else "",
-                                 supports=member_supports, printability=printability))
+                                 supports=member_supports, printability=printability,
+                                 labels=label_parameters))
         plates_out = _run_jobs(engine, jobs, _make_plate, encoding, False, resume, progress, 1, steps)
         engine.finish(_free_cached_memory)
     return {"source": str(source), "members": arranged["members"], "seconds": time.perf_counter() - start,
@@ -581,6 +620,7 @@ def _plate_member(member, encoding, result):
     member = _add_printability(
         dict(member, **{k: result[f"{k}_{name}"] for k in SUPPORT_KEYS if f"{k}_{name}" in result}), result,
         f"_{name}")
+    member = _add_label(member, result, name)
     if not encoding:
         return dict(member, method="direct")
     if result.get(f"sliced_directly_{name}"):
@@ -598,7 +638,7 @@ def _make_plate(job, encoding):
     with _meshset() as ms:
         common = dict(member_files=";".join(job.paths), layer_thickness=job.layer_thickness, z_start=job.z_start,
                       placements_file=job.summary, plate=job.plate, placements_output="", strict=job.strict,
-                      **_support_parameters(job.supports), **job.profile)
+                      **_support_parameters(job.supports), **job.labels, **job.profile)
         r = ms.apply_filter("make_plate_job", encoding_file=encoding, output_path=job.plate_output,
                             **_check_parameters(job.printability), **common)
         members = [_plate_member(m, encoding, r) for m in job.base["members"]]

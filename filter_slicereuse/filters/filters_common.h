@@ -114,6 +114,26 @@ void report_printability(Host& host, const char* filter, const std::string& plat
 // keys and the result keys report_printability adds (with "_*" for the members' when per_member).
 std::vector<std::string> with_printability_keys(std::vector<std::string> keys, bool per_member);
 
+// Labels a print or plate job engraves into its members' bases (filters_job_labels.cpp; #36):
+// each member's name without its extension, or its label in a labels file (labels_file.h); the
+// height, depth, and whether a member whose label fits nowhere is printed without it. The same
+// parameters in both filters.
+struct JobLabels {
+  bool labels;
+  std::string labels_file;
+  double height_mm;
+  double depth_mm;
+  bool allow_unlabelled;
+};
+ParamList<JobLabels> job_label_params();
+// The job's labels for its members (named `names`: file or layer names) into o; throws Error for
+// a labels file that cannot be read or lacks a member, or a label the font cannot print.
+void set_job_labels(const JobLabels& l, const std::vector<std::string>& names, PlateJobOptions& o);
+// A labelled plate's labels logged (each member's text and height, or left off) and put into
+// result as label_height_mm_<member name> (0: unlabelled); nothing without labels.
+void report_labels(Host& host, const char* filter, const PlateJobOptions& o, const PlateJobStats& st,
+                   const std::vector<std::string>& names, Result& result);
+
 // The supports' parameters (filters_job_supports.cpp), declared once for the support filters and
 // the jobs. How support points are placed: PrusaSlicer's critical angle, density (%) and minimal
 // distance; the options for a part raised (elevation > 0) or not.

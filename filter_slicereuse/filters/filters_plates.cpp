@@ -25,6 +25,7 @@ struct PlateJobParams {
   JobLayers layers;
   JobSupports supports;
   JobChecks checks;
+  JobLabels labels;
   double spacing_mm;
   double rotation_step_deg;
   std::string placements_file;
@@ -76,7 +77,8 @@ ParamList<PlateJobParams> plate_job_params() {
                              "member's layers are transferred from it (exact). Empty: every member is sliced "
                              "directly."))
       .include(&PlateJobParams::supports, job_support_params())
-      .include(&PlateJobParams::checks, job_check_params());
+      .include(&PlateJobParams::checks, job_check_params())
+      .include(&PlateJobParams::labels, job_label_params());
   add_arrangement(l);
   add_placements_output(l, nullptr,
                         "Also write the plates' placements, members and area used here (JSON). Empty (the default): "
@@ -206,6 +208,7 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
 
   PlateJobOptions jo = plate_job_options(p.layers);
   set_job_checks(p.checks, jo);
+  set_job_labels(p.labels, names, jo);  // every member's label checked before any plate is made
   jo.names = names;
   bool cached = false;
   std::shared_ptr<const CachedEncoding> entry;
@@ -245,13 +248,15 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
     const std::string layout = plate_layout_file_name(outputs.back());
     const double from = 0.15 + 0.85 * double(k) / double(plates), to = 0.15 + 0.85 * double(k + 1) / double(plates);
     jo.names = plate_names;
+    set_job_labels(p.labels, plate_names, jo);
     std::vector<Mesh> placed_supports;
     for (size_t m : supports.empty() ? std::vector<size_t>() : arrangement.members[k])
       placed_supports.push_back(place_mesh(supports[m].tree.mesh, arrangement.placement[m]));
     jo.supports.clear();
     for (const Mesh& s : placed_supports) jo.supports.push_back(&s);
     const PlateJobStats st = export_plate(placed, jo, profile, outputs.back(), sub_progress(progress, from, to));
-    write_plate_layout(layout, placed, plate_names, plan.platform);
+    // The picture names each member by its label when it has one.
+    write_plate_layout(layout, placed, jo.labels.empty() ? plate_names : jo.labels, plan.platform);
     result[format("output_%zu", first + k)] = outputs.back();
     result[format("layout_%zu", first + k)] = layout;
     for (size_t m = 0; m < placed.size(); ++m) {
@@ -272,6 +277,7 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
                     seconds_since(plate_start)));
     log_display_warning(host, "Make Plate Job", st.masks, profile);
     report_printability(host, "Make Plate Job", format("plate %zu", first + k), st, plate_names, true, result);
+    report_labels(host, "Make Plate Job", jo, st, plate_names, result);
   }
   if (!p.placements_output.empty())
     write_placements_file(p.placements_output,
@@ -417,7 +423,11 @@ FilterSpec plate_job_filter() {
       "apart too; they are sliced with the members, on the layers below them.</p>"
       "<p>Each plate's masks are checked as they are written, as UVtools checks a print file (see <i>Check "
       "Printability</i>), the findings counted per member; with <i>require printable</i>, a plate holding an "
-      "island, a resin trap or a suction cup is refused and not written.</p>") +
+      "island, a resin trap or a suction cup is refused and not written.</p>"
+      "<p>With <i>labels</i>, each member's name (or its row of a labels file: a case ID) is cut into its base, "
+      "mirrored to read from below, as large as fits up to the label height; the layout picture names each "
+      "member by its label. A label that fits nowhere fails the job, naming the member, unless <i>allow "
+      "unlabelled</i>.</p>") +
       kReference;
   return typed_filter({FilterId::MakePlateJob, "Make Plate Job", "make_plate_job", description, Arity::None,
                        kLayerClass, false},
@@ -426,7 +436,8 @@ FilterSpec plate_job_filter() {
                           {"plates", "members", "layers", "points", "transferred_layers", "resliced_layers",
                            "direct_members", "encoding_cached", "arrange_seconds", "read_seconds", "slicing_seconds",
                            "seconds", "support_seconds", "area_used_*", "output_*", "layout_*", "direct_reason_*",
-                           "sliced_directly_*", "support_points_*", "kept_*", "moved_*", "added_*", "dropped_*"},
+                           "sliced_directly_*", "support_points_*", "kept_*", "moved_*", "added_*", "dropped_*",
+                           "label_height_mm_*"},
                           true));
 }
 

@@ -14,6 +14,7 @@ struct PrintJobParams {
   JobLayers layers;
   JobSupports supports;
   JobChecks checks;
+  JobLabels labels;
   std::string contour_file;
   std::string output_path;
   PrinterSettings printer;
@@ -28,6 +29,7 @@ ParamList<PrintJobParams> print_job_params() {
                              "directly."))
       .include(&PrintJobParams::supports, job_support_params())
       .include(&PrintJobParams::checks, job_check_params())
+      .include(&PrintJobParams::labels, job_label_params())
       .file(&PrintJobParams::contour_file, ParamType::FileSave, "contour_file", "Contour file", "*.ctr *.srb", nullptr,
             "Also write the layers' contour points here (text .ctr unless the name ends in .srb). Empty (the "
             "default): no contour file.");
@@ -51,6 +53,7 @@ Result run_print_job(const PrintJobParams& p, Host& host) {
   PlateJobOptions o = plate_job_options(p.layers);
   set_job_checks(p.checks, o);
   o.names = {p.mesh_file.empty() ? "the current mesh" : job.name};
+  set_job_labels(p.labels, {job.name}, o);
   bool cached = false;
   std::shared_ptr<const CachedEncoding> entry;
   if (!p.layers.encoding_file.empty()) {
@@ -111,6 +114,7 @@ Result run_print_job(const PrintJobParams& p, Host& host) {
   add_support_figures(sup, "", result);
   add_display_figures(st.masks, result);
   report_printability(host, "Make Print Job", "", st, o.names, false, result);
+  report_labels(host, "Make Print Job", o, st, o.names, result);
   return result;
 }
 
@@ -141,7 +145,10 @@ FilterSpec print_job_filter() {
       "<p>With <i>supports</i>, the mesh gets support points (generated on it, or a source's "
       "transferred from a support-points file, certified and completed) and the supports built "
       "from them (as <i>Build Supports</i>); they are sliced with the mesh, on the layers below "
-      "it.</p>") +
+      "it.</p>"
+      "<p>With <i>labels</i>, the mesh's name (or its row of a labels file) is cut into its base, mirrored to read "
+      "from below, as large as fits up to the label height, on the contours, so a reused member's label is "
+      "direct slicing's.</p>") +
       kReference;
   return typed_filter({FilterId::MakePrintJob, "Make Print Job", "make_print_job", description, Arity::None,
                        kLayerClass, false},
@@ -149,7 +156,7 @@ FilterSpec print_job_filter() {
                       with_printability_keys(with_display_keys({"layers", "points", "transferred_layers", "resliced_layers", "encoding_cached",
                                          "layer_ranges", "reused", "direct_reason", "output_path", "support_points", "kept",
                                          "moved", "added", "dropped", "read_seconds", "slicing_seconds", "support_seconds",
-                                         "masks_seconds", "seconds"}),
+                                         "masks_seconds", "seconds", "label_height_mm_*"}),
                                              false));
 }
 

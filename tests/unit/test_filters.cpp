@@ -263,6 +263,38 @@ TEST_F(FiltersThroughAFakeHost, EveryFilterRunsAndReturnsEveryFigureItLogs) {
 // Make Plate Job through the fake host: the shown meshes (the hidden renumbered copy, whose faces
 // differ, is left out) on one plate by reuse, its layout picture and placements file; then the
 // same plate from that placements file by direct slicing gives the same masks.
+// Labels from the members' names or a labels file, each member's height in the result; a labels
+// file without a member's row fails the job before any plate is written.
+TEST_F(FiltersThroughAFakeHost, MakePlateJobCutsLabelsFromNamesOrALabelsFile) {
+  FakeHost host;
+  host.meshes.push_back(test::make_box(0, 0, 0, 30, 15, 5, 4));
+  host.meshes.push_back(test::make_box(0, 0, 0, 30, 15, 5, 4));
+  const FilterSpec& spec = spec_named("make_plate_job");
+  const std::map<std::string, double> numbers{{"layer_thickness", 0.1}, {"labels", 1}};
+  const Result named = spec.run(defaults(spec, {{"output_path", path("named.sl1")}}, numbers), host);
+  // "MESH0" and "MESH1" are 5 letters, as "CASE1": 6.075 mm high on the 30 mm base.
+  EXPECT_DOUBLE_EQ(std::get<double>(named.at("label_height_mm_mesh0")), 7.5 * 0.9 * 0.9);
+  EXPECT_DOUBLE_EQ(std::get<double>(named.at("label_height_mm_mesh1")), 7.5 * 0.9 * 0.9);
+  {
+    std::ofstream csv(path("one.csv"));
+    csv << "member,label\nmesh0,CASE-1\n";
+  }
+  const std::string message = error_of([&] {
+    spec.run(defaults(spec, {{"output_path", path("file.sl1")}, {"labels_file", path("one.csv")}}, numbers), host);
+  });
+  EXPECT_NE(message.find("has no label for member 'mesh1'"), std::string::npos) << message;
+  EXPECT_FALSE(std::filesystem::exists(path("file_1.sl1")));
+  {
+    std::ofstream csv(path("two.csv"));
+    csv << "mesh1.stl, A1\nmesh0.stl ,CASE-1\n";
+  }
+  const Result filed =
+      spec.run(defaults(spec, {{"output_path", path("file.sl1")}, {"labels_file", path("two.csv")}}, numbers), host);
+  EXPECT_DOUBLE_EQ(std::get<double>(filed.at("label_height_mm_mesh1")), 7.5);  // "A1" fits whole
+  EXPECT_GT(std::get<double>(filed.at("label_height_mm_mesh0")), 0);
+  EXPECT_TRUE(std::filesystem::exists(path("file_1.sl1")));
+}
+
 TEST_F(FiltersThroughAFakeHost, MakePlateJobPutsTheShownMeshesOnPlatesAndReadsItsPlacementsBack) {
   FakeHost host;
   host.meshes.push_back(make_sphere(1, 24, 32));

@@ -4,11 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 
 #include "error_of.h"
+#include "slicereuse/formats/labels_file.h"
 #include "slicereuse/regions/label_region.h"
 #include "slicereuse/regions/layer_region.h"
 #include "slicereuse/regions/place_label.h"
+#include "temp_folder.h"
 
 using namespace slicereuse;
 using ClipperLib::Path;
@@ -129,4 +132,29 @@ TEST(PlaceLabel, NoneOnAFaceTooSmall) {
   EXPECT_FALSE(place_label(rect(0, 0, 5, 5), "CASE12", 7.5, 3, 1, false).placed);
   // A margin as wide as the face leaves nothing.
   EXPECT_FALSE(place_label(rect(0, 0, 5, 5), "A", 2, 1, 3, false).placed);
+}
+
+class LabelsFileTest : public test::TempFolderTest {
+ protected:
+  std::string write(const std::string& name, const std::string& text) {
+    std::ofstream(path(name)) << text;
+    return path(name);
+  }
+};
+
+TEST_F(LabelsFileTest, MatchesMembersByFileNameOrStem) {
+  const LabelsFile f = read_labels_file(write("l.csv", "member,label\n\n a_001.stl , CASE-0412\nb_002,CASE-0413\n"));
+  ASSERT_EQ(f.rows.size(), 2u);
+  EXPECT_EQ(label_of(f, "a_001.stl"), "CASE-0412");
+  EXPECT_EQ(label_of(f, "a_001"), "CASE-0412");
+  EXPECT_EQ(label_of(f, "b_002.ply"), "CASE-0413");
+  EXPECT_ERROR(label_of(f, "c_003.stl"), "has no label for member 'c_003.stl'");
+}
+
+TEST_F(LabelsFileTest, RefusesBrokenFilesInWords) {
+  EXPECT_ERROR(read_labels_file(path("none.csv")), "cannot read the labels file");
+  EXPECT_ERROR(read_labels_file(write("a.csv", "a.stl,X,Y\n")), "line 1: 'a.stl,X,Y' is not two fields");
+  EXPECT_ERROR(read_labels_file(write("b.csv", "a.stl\n")), "line 1: 'a.stl' is not two fields");
+  EXPECT_ERROR(read_labels_file(write("c.csv", "a.stl,X\nb.stl, \n")), "line 2: the label is empty");
+  EXPECT_ERROR(read_labels_file(write("d.csv", "a.stl,X\na.ply,Y\n")), "member 'a.ply' is listed twice (also as 'a.stl')");
 }

@@ -839,7 +839,7 @@ TEST_F(PlateJobTest, LabelsAreCutIntoEachBaseByReuseAsByDirect) {
 }
 
 TEST_F(PlateJobTest, ALabelThatFitsNowhereFailsTheJobUnlessAllowedUnlabelled) {
-  const std::vector<Mesh> placed{test::make_box(-3, -3, 0, 3, 3, 2, 2), test::make_box(10, -3, 0, 40, 12, 2, 2)};
+  const std::vector<Mesh> placed{test::make_box(-3, -3, 0, 3, 3, 5, 2), test::make_box(10, -3, 0, 40, 12, 5, 2)};
   PlateJobOptions o;
   o.slicing.thickness = 0.1;
   o.names = {"tiny", "big"};
@@ -856,6 +856,12 @@ TEST_F(PlateJobTest, ALabelThatFitsNowhereFailsTheJobUnlessAllowedUnlabelled) {
   EXPECT_EQ(st.label_heights_mm, (std::vector<double>{0, 7.5 * 0.9 * 0.9 * 0.9 * 0.9}));
   o.labels = {"CASE12"};
   EXPECT_ERROR(export_plate(placed, o, display(500, 400), path("q.sl1")), "a plate of 2 members was given 1 labels");
+  // A part must stand a millimetre above its label's letters: none cut through it.
+  o.labels = {"A", "B"};
+  o.allow_unlabelled = false;
+  const std::vector<Mesh> thin{test::make_box(-3, -3, 0, 3, 3, 5, 2), test::make_box(10, -3, 0, 40, 12, 2, 2)};
+  EXPECT_ERROR(export_plate(thin, o, display(500, 400), path("r.sl1")),
+               "the label 'B' does not fit big: big is 2 mm tall, and a label 3 mm deep needs 4 mm");
 }
 
 TEST_F(PlateJobTest, CancellingAPlateLeavesNothing) {

@@ -254,6 +254,8 @@ void engrave_parts(std::vector<SlicePart>& parts, size_t a, size_t b, const std:
   }
 }
 
+constexpr double kLabelRoofMm = 1;  // of the part above a label's letters, at least
+
 // Each labelled member's engraving (engrave_labels.h), from its own first layers; a label that
 // fits nowhere fails the job, or with allow_unlabelled leaves the member unlabelled.
 std::vector<Engraving> label_engravings(const std::vector<PlateMember>& members, size_t count,
@@ -268,11 +270,20 @@ std::vector<Engraving> label_engravings(const std::vector<PlateMember>& members,
   for (const PlateMember& p : members) {
     const std::string& text = o.labels[p.owner];
     if (p.support || text.empty()) continue;
+    const std::string name = p.owner < o.names.size() ? o.names[p.owner] : format("member %zu", p.owner + 1);
+    // A label cut through the part, or nearly, would leave holes or a skin: the part must stand
+    // a millimetre above the letters.
+    const double height = double(p.layers()) * st.thickness;
+    if (height < o.label.depth_mm + kLabelRoofMm) {
+      if (o.allow_unlabelled) continue;
+      throw Error(format("the label '%s' does not fit %s: %s is %.3g mm tall, and a label %.3g mm deep needs %.3g mm",
+                         text.c_str(), name.c_str(), name.c_str(), height, o.label.depth_mm,
+                         o.label.depth_mm + kLabelRoofMm));
+    }
     const size_t layers = engraved_layers(o.label.depth_mm, st.thickness, p.layers());
     const Slices first = p.transfer ? p.transfer->layers(0, layers)
                                     : slice_planes(*p.mesh, {p.planes.begin(), p.planes.begin() + long(layers)}, {}, false);
     Engraving e = label_engraving(first, text, o.label);
-    const std::string name = p.owner < o.names.size() ? o.names[p.owner] : format("member %zu", p.owner + 1);
     if (!e.placement.placed) {
       if (o.allow_unlabelled) continue;
       const std::array<double, 2> least = label_box_mm(text, o.label.min_height_mm);

@@ -103,8 +103,9 @@ struct PlateJobOptions {
   bool check_printability = false;
   bool require_printable = false;
   // Per member, the text engraved into its base (engrave_labels.h; empty or "": none). A label
-  // that fits at no height fails the job (Error naming the member and the sizes tried), or with
-  // allow_unlabelled the member is printed without it (stats.label_heights_mm 0).
+  // that fits at no height, or a member less than 1 mm taller than the label is deep, fails the
+  // job (Error naming the member and the sizes), or with allow_unlabelled the member is printed
+  // without it (stats.label_heights_mm 0).
   std::vector<std::string> labels;
   LabelOptions label;
   bool allow_unlabelled = false;

@@ -1,0 +1,63 @@
+// The labels Make Print Job and Make Plate Job engrave into their members' bases, and what they
+// report of them.
+#include <filesystem>
+
+#include "filters_common.h"
+#include "slicereuse/formats/labels_file.h"
+#include "slicereuse/regions/label_region.h"
+
+namespace slicereuse::plugin {
+
+ParamList<JobLabels> job_label_params() {
+  const LabelOptions d;
+  ParamList<JobLabels> l;
+  l.flag(&JobLabels::labels, "labels", "Engrave labels", false,
+         "Engrave each member's label into its base, mirrored to read from below: its name (the file or layer name "
+         "without its extension), or its label in the labels file. Letters, digits, '-', '_', '.', '/', '+', '#'.")
+      .file(&JobLabels::labels_file, ParamType::FileOpen, "labels_file", "Labels file", "*.csv", nullptr,
+            "A CSV of two columns, member (file name or stem) and label, one row per member (an optional header "
+            "row 'member,label'). Implies Engrave labels. Empty (the default): the members' names.")
+      .number(&JobLabels::height_mm, "label_height_mm", "Label height (mm)", d.height_mm,
+              Range::above(0, "mm"),
+              "Height of the letters; where they do not fit, a tenth less at a time, down to a third of this, "
+              "turned if need be.")
+      .number(&JobLabels::depth_mm, "label_depth_mm", "Label depth (mm)", d.depth_mm, Range::above(0, "mm"),
+              "How deep the letters are cut into the base.")
+      .flag(&JobLabels::allow_unlabelled, "allow_unlabelled", "Allow unlabelled", false,
+            "Print a member whose label fits nowhere on its base without it; off: the job fails naming it.");
+  return l;
+}
+
+void set_job_labels(const JobLabels& l, const std::vector<std::string>& names, PlateJobOptions& o) {
+  if (!l.labels && l.labels_file.empty()) return;
+  o.label.height_mm = l.height_mm;
+  o.label.min_height_mm = l.height_mm / 3;
+  o.label.depth_mm = l.depth_mm;
+  o.allow_unlabelled = l.allow_unlabelled;
+  o.labels.clear();
+  if (l.labels_file.empty()) {
+    for (const std::string& name : names) o.labels.push_back(std::filesystem::path(name).stem().string());
+  } else {
+    const LabelsFile file = read_labels_file(l.labels_file);
+    for (const std::string& name : names) o.labels.push_back(label_of(file, name));
+  }
+  for (const std::string& text : o.labels) label_box_mm(text, o.label.height_mm);  // the font prints it
+}
+
+void report_labels(Host& host, const char* filter, const PlateJobOptions& o, const PlateJobStats& st,
+                   const std::vector<std::string>& names, Result& result) {
+  if (o.labels.empty()) return;
+  for (size_t m = 0; m < names.size() && m < st.label_heights_mm.size(); ++m) {
+    const double h = st.label_heights_mm[m];
+    result["label_height_mm_" + names[m]] = h;
+    if (h > 0)
+      host.log(format("%s: %s labelled '%s', %.3g mm high, at (%.2f, %.2f) mm, turned %.0f degrees", filter,
+                      names[m].c_str(), o.labels[m].c_str(), h, st.label_places[m][0], st.label_places[m][1],
+                      st.label_places[m][2]));
+    else
+      host.log(format("%s: %s printed without its label '%s': it fits nowhere on its base", filter, names[m].c_str(),
+                      o.labels[m].c_str()));
+  }
+}
+
+}  // namespace slicereuse::plugin

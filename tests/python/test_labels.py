@@ -1,0 +1,78 @@
+"""Labels cut into members' bases (#36): from the members' file stems or a labels file, the same by
+reuse as by direct slicing (--verify), each entry's height; a labels file missing a member fails
+that member naming it; bad arguments are refused before any work."""
+import json
+import subprocess
+
+import numpy as np
+import pytest
+from conftest import ROOT, THICKNESS, box_triangles, write_stl
+import slicereuse_pymeshlab as sr
+
+
+def write_boxes(folder, names, length=30.0):
+    """Boxes length x 15 x 5 mm, each a little longer than the one before (one family: the same
+    12 triangles), as STL files named names; returns their paths."""
+    folder.mkdir(parents=True, exist_ok=True)
+    paths = []
+    for i, name in enumerate(names):
+        path = folder / name
+        write_stl(path, box_triangles([0, 0, 0], [length + i, 15, 5]))
+        paths.append(str(path))
+    return paths
+
+
+def test_family_cuts_each_members_stem_alike_by_reuse_and_direct(pymeshlab, tmp_path):
+    source, a, b = write_boxes(tmp_path / "parts", ["src.stl", "CASE1.stl", "CASE2.stl"])
+    r = sr.family(source, [a, b], THICKNESS, tmp_path / "out", profile={"printer": "prusa_sl1s_speed"},
+                  verify=True, labels="names")
+    assert r["failed"] == 0, r
+    for entry in r["targets"]:
+        assert entry["method"] == "reuse", entry
+        assert entry["min_similarity"] == 1 and entry["max_grey_difference"] == 0, entry  # reuse = direct
+    # "CASE1" is 31.7 mm long at 7.5 mm: the 31 mm box (29 mm inside its margins) holds it at
+    # 6.75 mm, 28.5 mm long.
+    assert r["targets"][0]["label_height_mm"] == pytest.approx(7.5 * 0.9)
+
+
+def test_a_labels_file_names_the_member_it_lacks(pymeshlab, tmp_path):
+    source, a, b = write_boxes(tmp_path / "parts", ["src.stl", "a.stl", "b.stl"])
+    labels = tmp_path / "labels.csv"
+    labels.write_text("member,label\na.stl,A-0412\n")
+    r = sr.family(source, [a, b], THICKNESS, tmp_path / "out", profile={"printer": "prusa_sl1s_speed"},
+                  labels=str(labels))
+    assert r["failed"] == 1, r
+    assert r["targets"][0]["label_height_mm"] > 0, r
+    assert "has no label for member 'b.stl'" in r["targets"][1]["error"], r
+    assert not (tmp_path / "out" / "b.sl1s").exists()
+
+
+def family_py(*args):
+    return subprocess.run([str(ROOT / "scripts" / "python"), str(ROOT / "examples" / "family.py"), "--layer-thickness",
+                           str(THICKNESS), "--printer", "prusa_sl1s_speed", *map(str, args)],
+                          capture_output=True, text=True)
+
+
+def test_plates_refuse_a_label_that_fits_nowhere_unless_allowed_unlabelled(tmp_path):
+    source, a = write_boxes(tmp_path / "parts", ["src.stl", "CASE1.stl"])
+    [small] = write_boxes(tmp_path / "parts", ["LONGNAME12345.stl"], length=8)
+    run = family_py("--plates", "--direct", "--labels", "--out", tmp_path / "out", source, a, small)
+    assert run.returncode == 1, run.stderr
+    [plate] = json.loads(run.stdout)["plates"]
+    assert "the label 'LONGNAME12345' does not fit on the base of LONGNAME12345.stl" in plate["error"], plate
+    assert not (tmp_path / "out" / "plate_1.sl1s").exists()
+    run = family_py("--plates", "--direct", "--labels", "--allow-unlabelled", "--out", tmp_path / "out", source, a,
+                    small)
+    assert run.returncode == 0, run.stderr
+    [plate] = json.loads(run.stdout)["plates"]
+    heights = {m["name"]: m["label_height_mm"] for m in plate["members"]}
+    assert heights == {"CASE1.stl": pytest.approx(7.5 * 0.9), "LONGNAME12345.stl": 0}, plate
+
+
+def test_bad_label_arguments_are_refused_before_any_work(pymeshlab, tmp_path):
+    source, a = write_boxes(tmp_path / "parts", ["src.stl", "a.stl"])
+    bad = family_py("--allow-unlabelled", "--out", tmp_path / "bad", source, a)
+    assert bad.returncode == 2 and "--allow-unlabelled goes with --labels" in bad.stderr, bad.stderr
+    with pytest.raises(ValueError, match="labels must be None, \"names\" or a labels file"):
+        sr.plates(source, [a], THICKNESS, tmp_path / "none", labels=str(tmp_path / "missing.csv"))
+    assert not (tmp_path / "none").exists()
