@@ -28,6 +28,20 @@ struct FaceGrid {
   std::vector<uint8_t> inside;
   std::vector<double> clearance;  // in cells
 
+  // Whether (x, y) mm may lie inside the face: its cell is inside, or next to one that is
+  // (covers decides there); false only where the face is more than a cell away.
+  int cell_state(double x, double y) const {  // 1 inside, 0 outside, -1 near the edge
+    const int i = int(std::floor((x - x0) / step)), j = int(std::floor((y - y0) / step));
+    if (i < 0 || i >= w || j < 0 || j >= h) return 0;
+    if (inside[size_t(j) * size_t(w) + size_t(i)]) return 1;
+    for (int dj = -1; dj <= 1; ++dj)
+      for (int di = -1; di <= 1; ++di) {
+        const int a = i + di, b = j + dj;
+        if (a >= 0 && a < w && b >= 0 && b < h && inside[size_t(b) * size_t(w) + size_t(a)]) return -1;
+      }
+    return 0;
+  }
+
 };
 
 // 1-D squared distance transform of f (n values) into d (Felzenszwalb and Huttenlocher).
@@ -206,11 +220,15 @@ LabelPlacement place_label(const ClipperLib::Paths& face, const std::string& tex
         if (g.clearance[centre] < half_height_cells - 1) break;
         const double x = g.x0 + (double(centre % size_t(g.w)) + 0.5) * g.step;
         const double y = g.y0 + (double(centre / size_t(g.w)) + 0.5) * g.step;
-        // The box's corners first: most centres fail there.
+        // The box's corners first, on the grid (near the edge, exactly): most centres fail there.
         bool corners = true;
         for (const double u : {-0.5, 0.5})
-          for (const double v : {-0.5, 0.5})
-            corners = corners && covers(fit, x + c * u * box[0] - s * v * box[1], y + s * u * box[0] + c * v * box[1]);
+          for (const double v : {-0.5, 0.5}) {
+            if (!corners) break;
+            const double cx = x + c * u * box[0] - s * v * box[1], cy = y + s * u * box[0] + c * v * box[1];
+            const int state = g.cell_state(cx, cy);
+            corners = state == 1 || (state == -1 && covers(fit, cx, cy));
+          }
         if (!corners) continue;
         ClipperLib::Paths placed = placed_region(label, x, y, cs);
         if (inside(placed, fit)) {
