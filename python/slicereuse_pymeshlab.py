@@ -218,10 +218,11 @@ def _labels_identity(parameters):
     return dict(parameters, labels_file=batch.file_identity(parameters["labels_file"]))
 
 
-def _add_label(entry, result, name):
-    """The entry with "label_height_mm", when the job labelled its member (named name)."""
-    height = result.get(f"label_height_mm_{name}")
-    return entry if height is None else dict(entry, label_height_mm=height)
+def _add_label(entry, result, suffix=""):
+    """The entry with "label_height_mm", when the job labelled its member (a plate member's with
+    suffix)."""
+    height = result.get(f"label_height_mm{suffix}", -1)
+    return entry if height < 0 else dict(entry, label_height_mm=height)
 
 
 def _add_printability(entry, result, suffix=""):
@@ -459,7 +460,7 @@ def _make_member(job, encoding):
         entry = _add_printability({"layers": r["layers"], "points": r["points"],
                                    "resliced_layers": r["resliced_layers"], "seconds": time.perf_counter() - t0,
                                    "output": job.output, "method": "reuse" if r["reused"] else "direct"}, r)
-        entry = _add_label(entry, r, Path(job.target).name)
+        entry = _add_label(entry, r)
         if job.supports:
             entry.update({k: r[k] for k in SUPPORT_KEYS}, support_seconds=r["support_seconds"])
         if encoding and not r["reused"]:
@@ -620,7 +621,7 @@ def _plate_member(member, encoding, result):
     member = _add_printability(
         dict(member, **{k: result[f"{k}_{name}"] for k in SUPPORT_KEYS if f"{k}_{name}" in result}), result,
         f"_{name}")
-    member = _add_label(member, result, name)
+    member = _add_label(member, result, f"_{name}")
     if not encoding:
         return dict(member, method="direct")
     if result.get(f"sliced_directly_{name}"):

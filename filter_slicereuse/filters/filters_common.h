@@ -130,9 +130,10 @@ ParamList<JobLabels> job_label_params();
 // a labels file that cannot be read or lacks a member, or a label the font cannot print.
 void set_job_labels(const JobLabels& l, const std::vector<std::string>& names, PlateJobOptions& o);
 // A labelled plate's labels logged (each member's text and height, or left off) and put into
-// result as label_height_mm_<member name> (0: unlabelled); nothing without labels.
+// result as label_height_mm (0: unlabelled; -1 without labels), or per member as
+// label_height_mm_<member name> (none without labels).
 void report_labels(Host& host, const char* filter, const PlateJobOptions& o, const PlateJobStats& st,
-                   const std::vector<std::string>& names, Result& result);
+                   const std::vector<std::string>& names, bool per_member, Result& result);
 
 // The supports' parameters (filters_job_supports.cpp), declared once for the support filters and
 // the jobs. How support points are placed: PrusaSlicer's critical angle, density (%) and minimal

@@ -45,15 +45,18 @@ void set_job_labels(const JobLabels& l, const std::vector<std::string>& names, P
 }
 
 void report_labels(Host& host, const char* filter, const PlateJobOptions& o, const PlateJobStats& st,
-                   const std::vector<std::string>& names, Result& result) {
-  if (o.labels.empty()) return;
+                   const std::vector<std::string>& names, bool per_member, Result& result) {
+  if (o.labels.empty()) {
+    if (!per_member) result["label_height_mm"] = -1.0;  // not labelled
+    return;
+  }
   for (size_t m = 0; m < names.size() && m < st.label_heights_mm.size(); ++m) {
     const double h = st.label_heights_mm[m];
-    result["label_height_mm_" + names[m]] = h;
+    result[per_member ? "label_height_mm_" + names[m] : "label_height_mm"] = h;
     if (h > 0)
       host.log(format("%s: %s labelled '%s', %.3g mm high, at (%.2f, %.2f) mm, turned %.0f degrees", filter,
-                      names[m].c_str(), o.labels[m].c_str(), h, st.label_places[m][0], st.label_places[m][1],
-                      st.label_places[m][2]));
+                      names[m].c_str(), o.labels[m].c_str(), h, st.label_places[m][0] + 0.0,
+                      st.label_places[m][1] + 0.0, st.label_places[m][2] + 0.0));
     else
       host.log(format("%s: %s printed without its label '%s': it fits nowhere on its base", filter, names[m].c_str(),
                       o.labels[m].c_str()));

@@ -277,7 +277,7 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
                     seconds_since(plate_start)));
     log_display_warning(host, "Make Plate Job", st.masks, profile);
     report_printability(host, "Make Plate Job", format("plate %zu", first + k), st, plate_names, true, result);
-    report_labels(host, "Make Plate Job", jo, st, plate_names, result);
+    report_labels(host, "Make Plate Job", jo, st, plate_names, true, result);
   }
   if (!p.placements_output.empty())
     write_placements_file(p.placements_output,

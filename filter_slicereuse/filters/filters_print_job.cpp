@@ -114,7 +114,7 @@ Result run_print_job(const PrintJobParams& p, Host& host) {
   add_support_figures(sup, "", result);
   add_display_figures(st.masks, result);
   report_printability(host, "Make Print Job", "", st, o.names, false, result);
-  report_labels(host, "Make Print Job", o, st, o.names, result);
+  report_labels(host, "Make Print Job", o, st, o.names, false, result);
   return result;
 }
 
@@ -156,7 +156,7 @@ FilterSpec print_job_filter() {
                       with_printability_keys(with_display_keys({"layers", "points", "transferred_layers", "resliced_layers", "encoding_cached",
                                          "layer_ranges", "reused", "direct_reason", "output_path", "support_points", "kept",
                                          "moved", "added", "dropped", "read_seconds", "slicing_seconds", "support_seconds",
-                                         "masks_seconds", "seconds", "label_height_mm_*"}),
+                                         "masks_seconds", "seconds", "label_height_mm"}),
                                              false));
 }
 

@@ -158,6 +158,14 @@ print_job)
   ok log_cmp.txt -s cmp.mlx
   grep -q "Compare Mask Stacks: $layers layers, min similarity 1 at layer 0, 0 differing pixels" log_cmp.txt ||
     fail "transferred vs direct print job: $(grep Compare log_cmp.txt)"
+  # Labels: a solid box's name cut into its base (3 mm deep), as large as fits.
+  "$GEN_FAMILY" --shape box --faces 2000 --members 1 --height 25 --seed 1 --out famlab >/dev/null
+  edit print_job.mlx label_job.mlx 's#name="encoding_file" value="out/slice.enc"#name="encoding_file" value=""#' \
+    's#name="labels" value="false"#name="labels" value="true"#' 's#out/print_job\.sl1#out/label_job.sl1#'
+  ok log_label.txt -i famlab/member_000.ply -s label_job.mlx
+  above "$(result log_label.txt label_height_mm)" 2.4 || fail "no label: $(grep -i label log_label.txt)"
+  grep -q "Make Print Job: the current mesh labelled 'member_000'" log_label.txt ||
+    fail "label not logged: $(grep -i label log_label.txt)"
   # Check Printability reads every layer of the print job and writes its CSV.
   ok log_check.txt -s "$EXAMPLES/check_printability.mlx"
   [ "$(result log_check.txt layers)" = "$layers" ] || fail "check_printability: $(grep slicereuse-result log_check.txt)"

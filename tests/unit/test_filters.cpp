@@ -210,8 +210,9 @@ TEST_F(FiltersThroughAFakeHost, EveryFilterRunsAndReturnsEveryFigureItLogs) {
   job_keys.insert({"layers", "points", "transferred_layers", "resliced_layers", "encoding_cached", "layer_ranges",
                    "reused", "direct_reason", "output_path", "support_points", "kept", "moved", "added", "dropped",
                    "read_seconds", "slicing_seconds", "support_seconds", "masks_seconds", "seconds", "islands",
-                   "overhangs", "resin_traps", "suction_cups", "touching_bounds", "trapped_mm3"});
+                   "overhangs", "resin_traps", "suction_cups", "touching_bounds", "trapped_mm3", "label_height_mm"});
   EXPECT_EQ(keys_of(job), job_keys);
+  EXPECT_EQ(std::get<double>(job.at("label_height_mm")), -1);  // no labels
   // A sphere on the plate: every layer rests on the one below, nothing holds air.
   for (const char* none : {"islands", "resin_traps", "suction_cups", "touching_bounds"}) EXPECT_EQ(count(job, none), 0);
   for (const char* none : {"support_points", "kept", "moved", "added", "dropped"}) EXPECT_EQ(count(job, none), 0);
