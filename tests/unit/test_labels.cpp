@@ -8,6 +8,7 @@
 
 #include "error_of.h"
 #include "slicereuse/formats/labels_file.h"
+#include "slicereuse/regions/clip_regions.h"
 #include "slicereuse/regions/label_region.h"
 #include "slicereuse/regions/layer_region.h"
 #include "slicereuse/regions/place_label.h"
@@ -38,14 +39,7 @@ bool covers(const Paths& region, double x, double y) {
 Paths rect(double x0, double y0, double x1, double y1) { return {{at(x0, y0), at(x1, y0), at(x1, y1), at(x0, y1)}}; }
 
 // Pieces of a outside b.
-Paths outside(const Paths& a, const Paths& b) {
-  ClipperLib::Clipper c;
-  c.AddPaths(a, ClipperLib::ptSubject, true);
-  c.AddPaths(b, ClipperLib::ptClip, true);
-  Paths out;
-  c.Execute(ClipperLib::ctDifference, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-  return out;
-}
+Paths outside(const Paths& a, const Paths& b) { return clip_regions(a, b, ClipperLib::ctDifference); }
 
 Paths shrunk(const Paths& face, double margin) {
   ClipperLib::ClipperOffset o;

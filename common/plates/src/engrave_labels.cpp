@@ -3,21 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "slicereuse/regions/clip_regions.h"
 #include "slicereuse/regions/layer_region.h"
 
 namespace slicereuse {
-namespace {
-
-ClipperLib::Paths clip(const ClipperLib::Paths& a, const ClipperLib::Paths& b, ClipperLib::ClipType type) {
-  ClipperLib::Clipper clipper;
-  clipper.AddPaths(a, ClipperLib::ptSubject, true);
-  clipper.AddPaths(b, ClipperLib::ptClip, true);
-  ClipperLib::Paths out;
-  clipper.Execute(type, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-  return out;
-}
-
-}  // namespace
 
 size_t engraved_layers(double depth_mm, double thickness_mm, size_t member_layers) {
   // The layers whose bottom lies above the base by less than the depth (a 1e-9 mm tolerance:
@@ -30,7 +19,7 @@ Engraving label_engraving(const Slices& first_layers, const std::string& text, c
   if (first_layers.layers() == 0) return e;
   ClipperLib::Paths face = layer_region(LayerView(first_layers, 0));
   for (size_t k = 1; k < first_layers.layers(); ++k)
-    face = clip(face, layer_region(LayerView(first_layers, k)), ClipperLib::ctIntersection);
+    face = clip_regions(face, layer_region(LayerView(first_layers, k)), ClipperLib::ctIntersection);
   e.placement = place_label(face, text, o.height_mm, o.min_height_mm, o.margin_mm, true);
   if (e.placement.placed) e.layers = first_layers.layers();
   return e;
@@ -44,7 +33,7 @@ void engrave_part(SlicePart& part, size_t own_first, const Engraving& e) {
   made.z_start = s.z_start;
   made.thickness = s.thickness;
   for (size_t k = 0; k < cut; ++k) {
-    region_into_layer(clip(layer_region(LayerView(s, k)), e.placement.region, ClipperLib::ctDifference), s.layer_z[k],
+    region_into_layer(clip_regions(layer_region(LayerView(s, k)), e.placement.region, ClipperLib::ctDifference), s.layer_z[k],
                       layer);
     append_layers(layer, 0, 1, made);
   }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "slicereuse/regions/clip_regions.h"
 #include "slicereuse/regions/layer_region.h"
 #include "slicereuse/regions/simplify_paths.h"
 #include "slicereuse/util/error.h"
@@ -32,15 +33,6 @@ ClipperLib::Paths offset_region(const ClipperLib::Paths& region, double delta_mm
   return out;
 }
 
-ClipperLib::Paths clip(const ClipperLib::Paths& a, const ClipperLib::Paths& b, ClipperLib::ClipType type) {
-  ClipperLib::Clipper clipper;
-  clipper.AddPaths(a, ClipperLib::ptSubject, true);
-  clipper.AddPaths(b, ClipperLib::ptClip, true);
-  ClipperLib::Paths out;
-  clipper.Execute(type, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-  return out;
-}
-
 }  // namespace
 
 void compensate_elephant_foot(const LayerView& layer, double z, double compensation_mm, double min_width_mm,
@@ -62,12 +54,12 @@ void compensate_elephant_foot(const LayerView& layer, double z, double compensat
     const ClipperLib::Paths coarse = simplify_paths(region, double(region_units(kSimplifyMm)));
     const ClipperLib::Paths opened = offset_region(offset_region(coarse, -half), half);
     const ClipperLib::Paths narrow =
-        offset_region(offset_region(clip(coarse, opened, ClipperLib::ctDifference), -kSliverMm), kSliverMm);
+        offset_region(offset_region(clip_regions(coarse, opened, ClipperLib::ctDifference), -kSliverMm), kSliverMm);
     if (narrow.empty()) {
       region = offset_region(region, -compensation_mm);  // most layers: nothing narrow to keep
     } else {
-      const ClipperLib::Paths kept = clip(region, offset_region(narrow, compensation_mm), ClipperLib::ctIntersection);
-      region = clip(offset_region(region, -compensation_mm), kept, ClipperLib::ctUnion);
+      const ClipperLib::Paths kept = clip_regions(region, offset_region(narrow, compensation_mm), ClipperLib::ctIntersection);
+      region = clip_regions(offset_region(region, -compensation_mm), kept, ClipperLib::ctUnion);
     }
   }
   region_into_layer(region, z, out);

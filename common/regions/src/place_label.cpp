@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "slicereuse/regions/clip_regions.h"
 #include "slicereuse/regions/label_region.h"
 #include "slicereuse/regions/layer_region.h"
 #include "slicereuse/util/error.h"
@@ -163,12 +164,7 @@ bool covers(const ClipperLib::Paths& region, double x, double y) {
 }
 
 bool inside(const ClipperLib::Paths& label, const ClipperLib::Paths& fit) {
-  ClipperLib::Clipper clipper;
-  clipper.AddPaths(label, ClipperLib::ptSubject, true);
-  clipper.AddPaths(fit, ClipperLib::ptClip, true);
-  ClipperLib::Paths outside;
-  clipper.Execute(ClipperLib::ctDifference, outside, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-  return outside.empty();
+  return clip_regions(label, fit, ClipperLib::ctDifference).empty();
 }
 
 }  // namespace
