@@ -34,6 +34,7 @@ FilterSpec generate_support_points_filter();
 FilterSpec transfer_support_points_filter();
 FilterSpec build_supports_filter();
 FilterSpec check_printability_filter();
+FilterSpec add_labels_filter();
 
 // The method's reference, closing every description.
 extern const char* const kReference;

@@ -36,7 +36,7 @@ struct ParamSpec {
 
 enum class FilterId { SliceWithEncoding, TransferSlicing, ExportMasks, CompareMasks, MakePrintJob,
                       CrossParameterize, FreeCachedMemory, MakePlateJob, ArrangePlates, GenerateSupportPoints,
-                      TransferSupportPoints, BuildSupports, CheckPrintability };
+                      TransferSupportPoints, BuildSupports, CheckPrintability, AddLabels };
 
 // Which meshes a filter works on (MeshLab's arity): none (files only), the current mesh, or the
 // meshes its Mesh parameters name.

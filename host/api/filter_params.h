@@ -104,6 +104,14 @@ class ParamList {
     });
   }
 
+  // A text (type String), as given.
+  ParamList& text(std::string P::*field, const char* name, const char* label, const char* default_value,
+                  const char* tooltip) {
+    ParamSpec s = spec(name, ParamType::String, label, tooltip, 0);
+    s.default_text = default_value;
+    return add(s, [field, name](P& p, const ParamValues& v) { p.*field = v.text(name); });
+  }
+
   // A list of files to read, as one text (type String): names separated by ';', blanks around
   // each ignored, empty names skipped; empty: none.
   ParamList& file_list(std::vector<std::string> P::*field, const char* name, const char* label, const char* tooltip) {

@@ -166,6 +166,10 @@ print_job)
   above "$(result log_label.txt label_height_mm)" 2.4 || fail "no label: $(grep -i label log_label.txt)"
   grep -q "Make Print Job: the current mesh labelled 'member_000'" log_label.txt ||
     fail "label not logged: $(grep -i label log_label.txt)"
+  # Add Labels shows the label where the job cut it: the same height, its outline a new layer.
+  ok log_add_label.txt -i famlab/member_000.ply -s "$EXAMPLES/add_labels.mlx" -o out/label_outline.ply -l x
+  above "$(result log_add_label.txt label_height_mm)" 2.4 || fail "Add Labels: $(grep -i label log_add_label.txt)"
+  [ -s out/label_outline.ply ] || fail "Add Labels wrote no outline layer"
   # Check Printability reads every layer of the print job and writes its CSV.
   ok log_check.txt -s "$EXAMPLES/check_printability.mlx"
   [ "$(result log_check.txt layers)" = "$layers" ] || fail "check_printability: $(grep slicereuse-result log_check.txt)"

@@ -76,3 +76,15 @@ def test_bad_label_arguments_are_refused_before_any_work(pymeshlab, tmp_path):
     with pytest.raises(ValueError, match="labels must be None, \"names\" or a labels file"):
         sr.plates(source, [a], THICKNESS, tmp_path / "none", labels=str(tmp_path / "missing.csv"))
     assert not (tmp_path / "none").exists()
+
+
+def test_add_labels_shows_the_label_a_job_cuts(pymeshlab, tmp_path):
+    [box] = write_boxes(tmp_path / "parts", ["CASE1.stl"])
+    ms = pymeshlab.MeshSet()
+    ms.load_new_mesh(box)
+    shown = ms.apply_filter("add_labels", layer_thickness=THICKNESS)
+    assert shown["label_height_mm"] == pytest.approx(7.5 * 0.81)  # "CASE1" on a 30 mm base (28 mm inside)
+    assert ms.mesh_number() == 2 and ms.current_mesh().vertex_number() > 0  # the outline's layer
+    job = ms.apply_filter("make_print_job", mesh_file=box, layer_thickness=THICKNESS, labels=True,
+                          output_path=str(tmp_path / "job.sl1s"), printer="prusa_sl1s_speed")
+    assert job["label_height_mm"] == shown["label_height_mm"]

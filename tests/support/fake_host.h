@@ -53,10 +53,12 @@ class FakeHost : public Host {
     if (contour_layer.layers() == 0) throw Error("the layer is not a contour layer");
     return contour_layer;
   }
-  void add_polyline_layer(const std::string& name, const std::vector<double>&, const std::vector<uint32_t>&) override {
+  // Each added polyline, point or mesh layer by name (a polyline layer's points).
+  std::map<std::string, std::vector<double>> polyline_layers;
+  void add_polyline_layer(const std::string& name, const std::vector<double>& xyz, const std::vector<uint32_t>&) override {
     added_layers.push_back(name);
+    polyline_layers[name] = xyz;
   }
-  // Each added point or mesh layer by name.
   std::map<std::string, std::vector<double>> point_layers;
   std::map<std::string, Mesh> mesh_layers;
   void add_point_layer(const std::string& name, const std::vector<double>& xyz, const std::vector<double>&) override {

@@ -46,7 +46,7 @@ TEST(Filters, NamesAreUniqueAndEveryParameterIsDeclaredOnce) {
     std::set<std::string> params;
     for (const ParamSpec& p : f.params) EXPECT_TRUE(params.insert(p.name).second) << f.name << ": " << p.name;
   }
-  EXPECT_EQ(filter_specs().size(), 13u);
+  EXPECT_EQ(filter_specs().size(), 14u);
   EXPECT_EQ(find_filter_spec(-1), nullptr);
 }
 
@@ -294,6 +294,33 @@ TEST_F(FiltersThroughAFakeHost, MakePlateJobCutsLabelsFromNamesOrALabelsFile) {
   EXPECT_DOUBLE_EQ(std::get<double>(filed.at("label_height_mm_mesh1")), 7.5);  // "A1" fits whole
   EXPECT_GT(std::get<double>(filed.at("label_height_mm_mesh0")), 0);
   EXPECT_TRUE(std::filesystem::exists(path("file_1.sl1")));
+}
+
+// Add Labels places the label as the jobs do (the same height and place as a print job's) and
+// shows its outline on the base; a mesh too thin for the depth is refused in words.
+TEST_F(FiltersThroughAFakeHost, AddLabelsShowsWhereAPrintJobCutsTheLabel) {
+  FakeHost host;
+  host.meshes.push_back(test::make_box(0, 0, 0, 30, 15, 5, 4));
+  const FilterSpec& spec = spec_named("add_labels");
+  const Result shown = spec.run(defaults(spec, {}, {{"layer_thickness", 0.1}}), host);
+  // "mesh0" is 5 letters, as "CASE1": 6.075 mm high on the 30 mm base, in its middle.
+  EXPECT_DOUBLE_EQ(std::get<double>(shown.at("label_height_mm")), 7.5 * 0.9 * 0.9);
+  EXPECT_NEAR(std::get<double>(shown.at("x_mm")), 15, 0.2);
+  EXPECT_NEAR(std::get<double>(shown.at("y_mm")), 7.5, 0.2);
+  EXPECT_EQ(std::get<double>(shown.at("angle_deg")), 0);
+  ASSERT_EQ(host.polyline_layers.count("label mesh0"), 1u);
+  const std::vector<double>& xyz = host.polyline_layers.at("label mesh0");
+  ASSERT_FALSE(xyz.empty());
+  for (size_t i = 2; i < xyz.size(); i += 3) EXPECT_EQ(xyz[i], 0);  // on the base
+  const FilterSpec& job = spec_named("make_print_job");
+  const Result printed = job.run(defaults(job, {{"output_path", path("job.sl1")}},
+                                          {{"layer_thickness", 0.1}, {"labels", 1}}),
+                                 host);
+  EXPECT_EQ(std::get<double>(printed.at("label_height_mm")), std::get<double>(shown.at("label_height_mm")));
+  host.meshes[0] = test::make_box(0, 0, 0, 30, 15, 2, 4);
+  EXPECT_NE(error_of([&] { spec.run(defaults(spec, {{"label", "C-1"}}, {{"layer_thickness", 0.1}}), host); })
+                .find("the label 'C-1' does not fit mesh0: mesh0 is 2 mm tall, and a label 3 mm deep needs 4 mm"),
+            std::string::npos);
 }
 
 TEST_F(FiltersThroughAFakeHost, MakePlateJobPutsTheShownMeshesOnPlatesAndReadsItsPlacementsBack) {

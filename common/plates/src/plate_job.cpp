@@ -10,7 +10,6 @@
 
 #include "engrave_labels.h"
 #include "slicereuse/plates/faded_layers.h"
-#include "slicereuse/regions/label_region.h"
 #include "slicereuse/slicing/layer_chunks.h"
 #include "slicereuse/slicing/layer_planes.h"
 #include "slicereuse/slicing/slice_layers.h"
@@ -244,58 +243,44 @@ std::vector<size_t> part_owners(const std::vector<PlateMember>& members, size_t 
 
 // Those parts with each labelled member's label cut from its own first layers (engrave_part).
 void engrave_parts(std::vector<SlicePart>& parts, size_t a, size_t b, const std::vector<PlateMember>& members,
-                   const std::vector<Engraving>& engravings) {
-  if (engravings.empty()) return;
+                   const std::vector<BaseLabel>& labels) {
+  if (labels.empty()) return;
   size_t i = 0;
   for (const PlateMember& p : members) {
     if (std::max(a, p.offset) >= std::min(b, p.end())) continue;
     SlicePart& part = parts[i++];
-    if (!p.support) engrave_part(part, a + part.first - p.offset, engravings[p.owner]);
+    if (!p.support) engrave_part(part, a + part.first - p.offset, labels[p.owner]);
   }
 }
 
-constexpr double kLabelRoofMm = 1;  // of the part above a label's letters, at least
-
-// Each labelled member's engraving (engrave_labels.h), from its own first layers; a label that
-// fits nowhere fails the job, or with allow_unlabelled leaves the member unlabelled.
-std::vector<Engraving> label_engravings(const std::vector<PlateMember>& members, size_t count,
-                                        const PlateJobOptions& o, PlateJobStats& st) {
-  std::vector<Engraving> engravings;
-  if (o.labels.empty()) return engravings;
+// Each labelled member's label placed on its base (base_label.h), from its own first layers; a
+// label that fits nowhere fails the job, or with allow_unlabelled leaves the member unlabelled.
+std::vector<BaseLabel> base_labels(const std::vector<PlateMember>& members, size_t count, const PlateJobOptions& o,
+                                   PlateJobStats& st) {
+  std::vector<BaseLabel> labels;
+  if (o.labels.empty()) return labels;
   if (o.labels.size() != count)
     throw Error(format("a plate of %zu members was given %zu labels: one (or \"\") per member", count, o.labels.size()));
-  engravings.resize(count);
+  labels.resize(count);
   st.label_heights_mm.assign(count, 0);
   st.label_places.assign(count, {0, 0, 0});
   for (const PlateMember& p : members) {
     const std::string& text = o.labels[p.owner];
     if (p.support || text.empty()) continue;
     const std::string name = p.owner < o.names.size() ? o.names[p.owner] : format("member %zu", p.owner + 1);
-    // A label cut through the part, or nearly, would leave holes or a skin: the part must stand
-    // a millimetre above the letters.
-    const double height = double(p.layers()) * st.thickness;
-    if (height < o.label.depth_mm + kLabelRoofMm) {
-      if (o.allow_unlabelled) continue;
-      throw Error(format("the label '%s' does not fit %s: %s is %.3g mm tall, and a label %.3g mm deep needs %.3g mm",
-                         text.c_str(), name.c_str(), name.c_str(), height, o.label.depth_mm,
-                         o.label.depth_mm + kLabelRoofMm));
-    }
     const size_t layers = engraved_layers(o.label.depth_mm, st.thickness, p.layers());
     const Slices first = p.transfer ? p.transfer->layers(0, layers)
                                     : slice_planes(*p.mesh, {p.planes.begin(), p.planes.begin() + long(layers)}, {}, false);
-    Engraving e = label_engraving(first, text, o.label);
-    if (!e.placement.placed) {
+    BaseLabel b = place_base_label(first, double(p.layers()) * st.thickness, text, name, o.label);
+    if (!b.placement.placed) {
       if (o.allow_unlabelled) continue;
-      const std::array<double, 2> least = label_box_mm(text, o.label.min_height_mm);
-      throw Error(format("the label '%s' does not fit on the base of %s: even %.3g mm high it is %.3g mm long, and the "
-                         "base's first %.3g mm, %.3g mm inside their edges, hold it at no place and turn",
-                         text.c_str(), name.c_str(), o.label.min_height_mm, least[0], o.label.depth_mm, o.label.margin_mm));
+      throw Error(b.why);
     }
-    st.label_heights_mm[p.owner] = e.placement.height_mm;
-    st.label_places[p.owner] = {e.placement.x_mm, e.placement.y_mm, e.placement.angle_deg};
-    engravings[p.owner] = std::move(e);
+    st.label_heights_mm[p.owner] = b.placement.height_mm;
+    st.label_places[p.owner] = {b.placement.x_mm, b.placement.y_mm, b.placement.angle_deg};
+    labels[p.owner] = std::move(b);
   }
-  return engravings;
+  return labels;
 }
 
 // Per owner (member), its layers from the plate's layer 0 with its supports': what
@@ -497,7 +482,7 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
   st.layers = L;
   const uint64_t budget = o.whole_stack ? 0 : range_budget(o);
   const PlateChecks checks(members, placed.size(), o, profile, st);
-  const std::vector<Engraving> engravings = label_engravings(members, placed.size(), o, st);
+  const std::vector<BaseLabel> labels = base_labels(members, placed.size(), o, st);
 
   if (o.encoding && !o.whole_stack) {
     // Made where drawn when the layers to slice directly fit in the budget (else in ranges).
@@ -514,7 +499,7 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
       const std::vector<size_t> objects = object_layers(members);
       st.masks = export_masks(LayerMaker{L, st.thickness, [&](size_t k, std::vector<SlicePart>& parts) {
                                            made.make(k, parts);
-                                           engrave_parts(parts, k, k + 1, members, engravings);
+                                           engrave_parts(parts, k, k + 1, members, labels);
                                            compensate_faded_layers(parts, k, part_owners(members, k, k + 1), objects,
                                                                    profile, false);
                                          }},
@@ -536,7 +521,7 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
                        std::vector<SlicePart> parts =
                            plate_range(members, frame, first[i], first[i + 1], st, range_progress);
                        st.slicing_seconds += seconds_since(t);
-                       engrave_parts(parts, first[i], first[i + 1], members, engravings);
+                       engrave_parts(parts, first[i], first[i + 1], members, labels);
                        if (o.whole_stack) o.whole_stack(parts);
                        compensate_faded_layers(parts, first[i], part_owners(members, first[i], first[i + 1]),
                                                objects, profile, true);
