@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "region_clearance.h"
 #include "slicereuse/regions/layer_region.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
@@ -14,19 +15,6 @@ namespace {
 
 using ClipperLib::cInt;
 using ClipperLib::Paths;
-
-// Twice a region's area, exactly (its vertices' products need 128 bits): two regions, one
-// inside the other, are the same exactly when this is equal.
-__int128 twice_area(const Paths& region) {
-  __int128 a = 0;
-  for (const ClipperLib::Path& path : region)
-    for (size_t i = 0, n = path.size(); i < n; ++i) {
-      const ClipperLib::IntPoint& p = path[i];
-      const ClipperLib::IntPoint& q = path[(i + 1) % n];
-      a += __int128(p.X) * q.Y - __int128(q.X) * p.Y;
-    }
-  return a;
-}
 
 Paths offset_region(const Paths& region, double delta_mm) {
   ClipperLib::ClipperOffset offset(2, kCavityArcToleranceMm * kRegionScale);
@@ -68,60 +56,122 @@ Paths intersect_all(const std::vector<const Paths*>& regions) {
 // The layers within a ball of radius r of a layer, and their disk's radius at d layers away.
 struct LayeredBall {
   LayeredBall(double radius_mm, double thickness_mm)
-      : r(radius_mm), h(thickness_mm), reach(size_t(std::floor(radius_mm / thickness_mm + 1e-9))) {}
-  double radius(size_t d) const { return std::sqrt(std::max(0.0, r * r - double(d * d) * h * h)); }
+      : r(radius_mm), h(thickness_mm), reach(long(std::floor(radius_mm / thickness_mm + 1e-9))) {}
+  double radius(long d) const { return std::sqrt(std::max(0.0, r * r - double(d * d) * h * h)); }
   double r, h;
-  size_t reach;  // layers each way
+  long reach;  // layers each way
 };
 
-// Layer k of the stack eroded by the ball: the ball is the union of the cylinders of radius
-// radius(d) and half-height d layers, so the erosion is the intersection over d of the window
-// of layers k - d .. k + d (their intersection) offset inwards by radius(d). When adding layers
-// k -+ d leaves the window as it was, that cylinder's offset holds the one before it (a smaller
-// offset of the same region) and is skipped: a prism costs one offset, whatever the reach.
-Paths eroded_layer(const std::vector<Paths>& layers, size_t k, const LayeredBall& ball) {
-  if (k < ball.reach || k + ball.reach >= layers.size() || layers[k].empty()) return {};
-  Paths window = layers[k];
-  __int128 area = twice_area(window);
-  Paths eroded = offset_region(window, -ball.r);
-  for (size_t d = 1; d <= ball.reach && !eroded.empty(); ++d) {
-    Paths wider = intersect_all({&window, &layers[k - d], &layers[k + d]});
-    const __int128 a = twice_area(wider);
-    if (a == area) continue;
-    window = std::move(wider);
-    area = a;
-    const Paths cylinder = offset_region(window, -ball.radius(d));
-    eroded = intersect_all({&eroded, &cylinder});
-  }
-  return eroded;
+// A term binds when the result comes this near its offset's edge (in Clipper units, 1 um): it is
+// tried first on the next layer, whose result it likely bounds too.
+constexpr double kBindingUnits = 1e-3 * kRegionScale;
+// Layers a thread works through in order, handing on the terms that bind from one to the next.
+constexpr size_t kBlockLayers = 16;
+
+// The terms (offsets e, layer k + e) to try first on a layer: those that bound the layer below,
+// and e = 0.
+void start_terms(std::vector<long>& terms) {
+  if (std::find(terms.begin(), terms.end(), 0) == terms.end()) terms.insert(terms.begin(), 0);
 }
 
-// Layer k of the stack dilated by the ball: the union over d of the window's union offset
-// outwards by radius(d), skipping the windows that adding layers k -+ d left as they were.
-Paths dilated_layer(const std::vector<Paths>& layers, size_t k, const LayeredBall& ball) {
-  Paths window = layers[k];
-  __int128 area = twice_area(window);
-  std::vector<Paths> cylinders;
-  if (!window.empty()) cylinders.push_back(offset_region(window, ball.r));
-  for (size_t d = 1; d <= ball.reach; ++d) {
-    std::vector<const Paths*> more{&window};
-    if (k >= d) more.push_back(&layers[k - d]);
-    if (k + d < layers.size()) more.push_back(&layers[k + d]);
-    Paths wider = unite_all(more);
-    const __int128 a = twice_area(wider);
-    if (a == area) continue;
-    window = std::move(wider);
-    area = a;
-    cylinders.push_back(offset_region(window, ball.radius(d)));
+// Layers [a, b) of the stack eroded by the ball (cavity.h: the intersection over the layers
+// k + e within it of their regions offset inwards by radius(|e|)). The intersection of a few of
+// those terms (those that bound the layer below, and e = 0) is the candidate; every other term is
+// then proved to hold it already (its layer's boundary lies at least the term's radius from the
+// candidate, region_clearance.h: so the candidate lies inside that offset) or, failing that,
+// offset and intersected. So the result is the whole intersection, while a smooth part costs a
+// few offsets a layer instead of one per layer within the ball.
+void erode_layers(const std::vector<Paths>& layers, const std::vector<IndexedRegion>& indexed,
+                  const LayeredBall& ball, size_t a, size_t b, std::vector<Paths>& out) {
+  const long n = long(layers.size()), R = ball.reach;
+  std::vector<long> terms;
+  for (long k = long(a); k < long(b); ++k) {
+    start_terms(terms);
+    if (k < R || k + R >= n) continue;  // within the ball of the stack's empty outside
+    Paths cavity;
+    bool first = true;
+    for (long e : terms) {
+      const Paths term = offset_region(layers[size_t(k + e)], -ball.radius(std::labs(e)));
+      cavity = first ? term : intersect_all({&cavity, &term});
+      first = false;
+      if (cavity.empty()) break;
+    }
+    IndexedRegion candidate = index_region(cavity);
+    for (long d = 1; d <= R && !cavity.empty(); ++d)
+      for (long e : {-d, d}) {
+        if (cavity.empty() || std::find(terms.begin(), terms.end(), e) != terms.end()) continue;
+        const double r = ball.radius(d);
+        if (clearance(candidate, indexed[size_t(k + e)], r * kRegionScale) >= r * kRegionScale) continue;
+        const Paths term = offset_region(layers[size_t(k + e)], -r);
+        cavity = intersect_all({&cavity, &term});
+        candidate = index_region(cavity);
+        terms.push_back(e);
+      }
+    std::vector<long> binding;
+    for (long e : terms) {
+      const double cap = ball.radius(std::labs(e)) * kRegionScale + kBindingUnits;
+      if (clearance(candidate, indexed[size_t(k + e)], cap) < cap) binding.push_back(e);
+    }
+    terms = std::move(binding);
+    out[size_t(k)] = std::move(cavity);
   }
-  std::vector<const Paths*> all;
-  for (const Paths& c : cylinders) all.push_back(&c);
-  return all.empty() ? Paths{} : unite_all(all);
 }
 
-std::vector<Paths> each_layer(size_t n, const std::function<Paths(size_t)>& layer, const Progress& progress) {
+// Layers [a, b) of the stack dilated by the ball: the union over the layers k + e within it of
+// their regions offset outwards by radius(|e|), found as erode_layers finds its intersection: a
+// term whose layer lies at least its radius inside the candidate adds nothing to it.
+void dilate_layers(const std::vector<Paths>& layers, const std::vector<IndexedRegion>& indexed,
+                   const LayeredBall& ball, size_t a, size_t b, std::vector<Paths>& out) {
+  const long n = long(layers.size()), R = ball.reach;
+  std::vector<long> terms;
+  for (long k = long(a); k < long(b); ++k) {
+    start_terms(terms);
+    Paths grown;
+    std::vector<long> used;
+    for (long e : terms) {
+      if (k + e < 0 || k + e >= n || layers[size_t(k + e)].empty()) continue;
+      const Paths term = offset_region(layers[size_t(k + e)], ball.radius(std::labs(e)));
+      grown = unite_all({&grown, &term});
+      used.push_back(e);
+    }
+    IndexedRegion candidate = index_region(grown);
+    for (long d = 0; d <= R; ++d)
+      for (long side = d == 0 ? 1 : -1; side <= 1; side += 2) {
+        const long e = side * d;
+        if (k + e < 0 || k + e >= n) continue;
+        if (std::find(used.begin(), used.end(), e) != used.end()) continue;
+        const double r = ball.radius(d);
+        if (clearance(indexed[size_t(k + e)], candidate, r * kRegionScale) >= r * kRegionScale) continue;
+        const Paths term = offset_region(layers[size_t(k + e)], r);
+        grown = unite_all({&grown, &term});
+        candidate = index_region(grown);
+        used.push_back(e);
+      }
+    std::vector<long> binding;
+    for (long e : used) {
+      const double cap = ball.radius(std::labs(e)) * kRegionScale + kBindingUnits;
+      if (clearance(indexed[size_t(k + e)], candidate, cap) < cap) binding.push_back(e);
+    }
+    terms = std::move(binding);
+    out[size_t(k)] = std::move(grown);
+  }
+}
+
+using LayersByBall = void (*)(const std::vector<Paths>&, const std::vector<IndexedRegion>&, const LayeredBall&,
+                              size_t, size_t, std::vector<Paths>&);
+
+// The stack eroded or dilated by the ball, blocks of layers on all cores.
+std::vector<Paths> by_ball(LayersByBall f, const std::vector<Paths>& layers, const LayeredBall& ball,
+                           const Progress& progress) {
+  const size_t n = layers.size();
+  std::vector<IndexedRegion> indexed(n);
+  for (size_t k = 0; k < n; ++k) indexed[k] = index_region(layers[k]);
   std::vector<Paths> out(n);
-  parallel_blocks(n, [&](size_t k) { out[k] = layer(k); }, progress, "hollowing");
+  const size_t blocks = (n + kBlockLayers - 1) / kBlockLayers;
+  parallel_blocks(
+      blocks,
+      [&](size_t i) { f(layers, indexed, ball, i * kBlockLayers, std::min(n, (i + 1) * kBlockLayers), out); },
+      progress, "hollowing");
   return out;
 }
 
@@ -145,12 +195,9 @@ std::vector<Paths> cavity_regions(const std::vector<Paths>& layers, double thick
   if (options.wall_mm == 0) return std::vector<Paths>(n);
   const LayeredBall eroding(options.wall_mm + options.closing_mm, thickness_mm);
   const bool closing = options.closing_mm > 0;
-  std::vector<Paths> eroded = each_layer(
-      n, [&](size_t k) { return eroded_layer(layers, k, eroding); }, sub_progress(progress, 0, closing ? 0.5 : 1));
+  std::vector<Paths> eroded = by_ball(erode_layers, layers, eroding, sub_progress(progress, 0, closing ? 0.5 : 1));
   if (!closing) return eroded;
-  const LayeredBall dilating(options.closing_mm, thickness_mm);
-  return each_layer(
-      n, [&](size_t k) { return dilated_layer(eroded, k, dilating); }, sub_progress(progress, 0.5, 1));
+  return by_ball(dilate_layers, eroded, LayeredBall(options.closing_mm, thickness_mm), sub_progress(progress, 0.5, 1));
 }
 
 }  // namespace slicereuse

@@ -1,0 +1,125 @@
+#include "region_clearance.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "slicereuse/regions/segment_distance.h"
+
+namespace slicereuse {
+namespace {
+
+// Short enough that a run of a smooth contour hugs its chord (its stray is what every bound
+// between runs loses), long enough that few runs are compared pairwise.
+constexpr uint32_t kRunEdges = 8;
+
+using ClipperLib::IntPoint;
+
+int orientation(const IntPoint& a, const IntPoint& b, const IntPoint& c) {
+  const __int128 x = __int128(b.X - a.X) * (c.Y - a.Y) - __int128(b.Y - a.Y) * (c.X - a.X);
+  return (x > 0) - (x < 0);
+}
+
+bool on_segment(const IntPoint& a, const IntPoint& b, const IntPoint& p) {
+  return std::min(a.X, b.X) <= p.X && p.X <= std::max(a.X, b.X) && std::min(a.Y, b.Y) <= p.Y &&
+         p.Y <= std::max(a.Y, b.Y);
+}
+
+// Whether segments ab and cd meet (cross or touch), exactly.
+bool segments_meet(const IntPoint& a, const IntPoint& b, const IntPoint& c, const IntPoint& d) {
+  const int o1 = orientation(a, b, c), o2 = orientation(a, b, d), o3 = orientation(c, d, a), o4 = orientation(c, d, b);
+  if (o1 != o2 && o3 != o4) return true;
+  return (o1 == 0 && on_segment(a, b, c)) || (o2 == 0 && on_segment(a, b, d)) || (o3 == 0 && on_segment(c, d, a)) ||
+         (o4 == 0 && on_segment(c, d, b));
+}
+
+double point_segment2(const IntPoint& p, const IntPoint& a, const IntPoint& b) {
+  return segment_distance2(double(p.X), double(p.Y), double(a.X), double(a.Y), double(b.X), double(b.Y));
+}
+
+double segments_distance2(double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy) {
+  return std::min({segment_distance2(ax, ay, cx, cy, dx, dy), segment_distance2(bx, by, cx, cy, dx, dy),
+                   segment_distance2(cx, cy, ax, ay, bx, by), segment_distance2(dx, dy, ax, ay, bx, by)});
+}
+
+// Whether the chords of two runs cross: then their distance is 0, which the four end-point
+// distances would not say.
+bool chords_cross(const IndexedRegion::Run& r, const IndexedRegion::Run& s) {
+  const auto side = [](double ax, double ay, double bx, double by, double px, double py) {
+    return (bx - ax) * (py - ay) - (by - ay) * (px - ax);
+  };
+  const double o1 = side(r.ax, r.ay, r.bx, r.by, s.ax, s.ay), o2 = side(r.ax, r.ay, r.bx, r.by, s.bx, s.by);
+  const double o3 = side(s.ax, s.ay, s.bx, s.by, r.ax, r.ay), o4 = side(s.ax, s.ay, s.bx, s.by, r.bx, r.by);
+  return ((o1 > 0) != (o2 > 0)) && ((o3 > 0) != (o4 > 0));
+}
+
+// Whether p lies in the region (inside an odd number of its loops).
+bool in_region(const IntPoint& p, const ClipperLib::Paths& region) {
+  bool in = false;
+  for (const ClipperLib::Path& loop : region) in ^= ClipperLib::PointInPolygon(p, loop) != 0;
+  return in;
+}
+
+}  // namespace
+
+IndexedRegion index_region(const ClipperLib::Paths& region) {
+  IndexedRegion out;
+  out.region = &region;
+  for (uint32_t l = 0; l < region.size(); ++l) {
+    const ClipperLib::Path& loop = region[l];
+    const uint32_t n = uint32_t(loop.size());
+    for (uint32_t first = 0; first < n; first += kRunEdges) {
+      const uint32_t edges = std::min(kRunEdges, n - first);
+      const IntPoint& a = loop[first];
+      const IntPoint& b = loop[(first + edges) % n];
+      double stray2 = 0;
+      ClipperLib::cInt x0 = a.X, y0 = a.Y, x1 = a.X, y1 = a.Y;
+      for (uint32_t i = 1; i <= edges; ++i) {
+        const IntPoint& p = loop[(first + i) % n];
+        stray2 = std::max(stray2, point_segment2(p, a, b));
+        x0 = std::min(x0, p.X), y0 = std::min(y0, p.Y), x1 = std::max(x1, p.X), y1 = std::max(y1, p.Y);
+      }
+      out.runs.push_back({l, first, edges, double(a.X), double(a.Y), double(b.X), double(b.Y), std::sqrt(stray2),
+                          double(x0), double(y0), double(x1), double(y1)});
+    }
+  }
+  return out;
+}
+
+double clearance(const IndexedRegion& inner, const IndexedRegion& outer, double cap) {
+  const ClipperLib::Paths& in = *inner.region;
+  const ClipperLib::Paths& out = *outer.region;
+  if (in.empty()) return cap;
+  if (out.empty()) return -1;
+  double best = cap;
+  for (const IndexedRegion::Run& r : inner.runs)
+    for (const IndexedRegion::Run& s : outer.runs) {
+      const double gx = std::max({0.0, r.x0 - s.x1, s.x0 - r.x1}), gy = std::max({0.0, r.y0 - s.y1, s.y0 - r.y1});
+      if (gx * gx + gy * gy >= best * best && (gx > 0 || gy > 0)) continue;
+      const double chords = chords_cross(r, s) ? 0 : std::sqrt(segments_distance2(r.ax, r.ay, r.bx, r.by, s.ax, s.ay, s.bx, s.by));
+      const double bound = chords - r.stray - s.stray;
+      if (bound >= best && bound > 0) continue;
+      const ClipperLib::Path& p = in[r.loop];
+      const ClipperLib::Path& q = out[s.loop];
+      for (uint32_t i = r.first; i < r.first + r.edges; ++i) {
+        const IntPoint& a = p[i];
+        const IntPoint& b = p[(i + 1) % p.size()];
+        for (uint32_t j = s.first; j < s.first + s.edges; ++j) {
+          const IntPoint& c = q[j];
+          const IntPoint& d = q[(j + 1) % q.size()];
+          if (segments_meet(a, b, c, d)) return -1;
+          const double d2 = std::min({point_segment2(a, c, d), point_segment2(b, c, d), point_segment2(c, a, b),
+                                      point_segment2(d, a, b)});
+          best = std::min(best, std::sqrt(d2));
+        }
+      }
+    }
+  // The boundaries do not meet, so each loop lies wholly inside or outside the other region:
+  // inner lies in outer when every inner loop does and no outer loop lies in inner.
+  for (const ClipperLib::Path& loop : in)
+    if (!in_region(loop[0], out)) return -1;
+  for (const ClipperLib::Path& loop : out)
+    if (in_region(loop[0], in)) return -1;
+  return best;
+}
+
+}  // namespace slicereuse
