@@ -9,9 +9,11 @@
 #include <vector>
 
 #include "error_of.h"
+#include "family.h"
 #include "slicereuse/hollowing/cavity.h"
 #include "slicereuse/hollowing/hollow_layers.h"
 #include "slicereuse/regions/layer_region.h"
+#include "slicereuse/slicing/slice_layers.h"
 
 namespace slicereuse {
 namespace {
@@ -110,6 +112,83 @@ TEST(Cavity, KeepsTheWallOnASlopeIn3D) {
   double widest = 0;
   for (const ClipperLib::IntPoint& q : cavity[20][0]) widest = std::max(widest, double(q.X) / kRegionScale);
   EXPECT_LT(widest, corner - 0.1);
+}
+
+Paths clipped(const Paths& a, const Paths& b, ClipperLib::ClipType type) {
+  ClipperLib::Clipper c;
+  c.AddPaths(a, ClipperLib::ptSubject, true);
+  c.AddPaths(b, ClipperLib::ptClip, true);
+  Paths out;
+  c.Execute(type, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  return out;
+}
+
+Paths offset(const Paths& region, double mm) {
+  ClipperLib::ClipperOffset o(2, kCavityArcToleranceMm * kRegionScale);
+  o.AddPaths(region, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+  Paths out;
+  o.Execute(out, mm * kRegionScale);
+  return out;
+}
+
+double perimeter_mm(const Paths& region) {
+  double p = 0;
+  for (const ClipperLib::Path& loop : region)
+    for (size_t i = 0; i < loop.size(); ++i)
+      p += std::hypot(double(loop[i].X - loop[(i + 1) % loop.size()].X), double(loop[i].Y - loop[(i + 1) % loop.size()].Y));
+  return p / kRegionScale;
+}
+
+// The definition, term by term: layer k eroded (grow false) or dilated by a ball of radius r,
+// every layer within it offset and intersected (or united), layers beyond the stack empty.
+std::vector<Paths> by_ball_naively(const std::vector<Paths>& layers, double h, double r, bool grow) {
+  const long n = long(layers.size()), reach = long(std::floor(r / h + 1e-9));
+  std::vector<Paths> out(layers.size());
+  for (long k = 0; k < n; ++k) {
+    if (!grow && (k < reach || k + reach >= n)) continue;
+    Paths acc = offset(layers[size_t(k)], grow ? r : -r);
+    for (long j = std::max(0L, k - reach); j <= std::min(n - 1, k + reach); ++j) {
+      const double dz = double(j - k) * h, radius = std::sqrt(std::max(0.0, r * r - dz * dz));
+      acc = clipped(acc, offset(layers[size_t(j)], grow ? radius : -radius),
+                    grow ? ClipperLib::ctUnion : ClipperLib::ctIntersection);
+    }
+    out[size_t(k)] = acc;
+  }
+  return out;
+}
+
+// Generated parts of several kinds (a sphere, a torus whose layers have holes, a standing handle
+// whose layers split in two): the cavity equals the definition computed term by term, to the
+// round offsets' arc tolerance, with and without the closing distance.
+TEST(Cavity, EqualsTheDefinitionTermByTerm) {
+  for (const auto& [shape, height] : {std::pair{"sphere", 6.0}, {"torus", 6.0}, {"handle", 16.0}}) {
+    test::FamilyOptions fo;
+    fo.shape = shape;
+    fo.faces = 2500;
+    fo.height = height;
+    const Slices s = slice_layers(test::make_family_base(fo), SliceOptions{0.1});
+    std::vector<Paths> layers;
+    for (size_t k = 0; k < s.layers(); ++k) layers.push_back(layer_region(LayerView(s, k)));
+    for (const auto [wall, closing] : {std::pair{0.6, 0.0}, {0.4, 0.3}}) {
+      SCOPED_TRACE(std::string(shape) + " wall " + std::to_string(wall) + " closing " + std::to_string(closing));
+      HollowingOptions o;
+      o.wall_mm = wall;
+      o.closing_mm = closing;
+      const std::vector<Paths> cavity = cavity_regions(layers, 0.1, o);
+      std::vector<Paths> expected = by_ball_naively(layers, 0.1, wall + closing, false);
+      if (closing > 0) expected = by_ball_naively(expected, 0.1, closing, true);
+      double volume = 0;
+      for (size_t k = 0; k < layers.size(); ++k) {
+        volume += region_area_mm2(expected[k]) * 0.1;
+        // Round offsets' chords may lie either side of another offset's: no further apart than
+        // the arc tolerance along the boundary.
+        EXPECT_LE(region_area_mm2(clipped(cavity[k], expected[k], ClipperLib::ctXor)),
+                  perimeter_mm(expected[k]) * kCavityArcToleranceMm)
+            << "layer " << k;
+      }
+      EXPECT_GT(volume, 0.5);
+    }
+  }
 }
 
 TEST(Cavity, AWallThickerThanThePartLeavesNoCavity) {
