@@ -68,110 +68,147 @@ constexpr double kBindingUnits = 1e-3 * kRegionScale;
 // Layers a thread works through in order, handing on the terms that bind from one to the next.
 constexpr size_t kBlockLayers = 16;
 
-// The terms (offsets e, layer k + e) to try first on a layer: those that bound the layer below,
-// and e = 0.
-void start_terms(std::vector<long>& terms) {
-  if (std::find(terms.begin(), terms.end(), 0) == terms.end()) terms.insert(terms.begin(), 0);
-}
-
-// Layers [a, b) of the stack eroded by the ball (cavity.h: the intersection over the layers
-// k + e within it of their regions offset inwards by radius(|e|)). The intersection of a few of
-// those terms (those that bound the layer below, and e = 0) is the candidate; every other term is
-// then proved to hold it already (its layer's boundary lies at least the term's radius from the
-// candidate, region_clearance.h: so the candidate lies inside that offset) or, failing that,
-// offset and intersected. So the result is the whole intersection, while a smooth part costs a
-// few offsets a layer instead of one per layer within the ball.
-void erode_layers(const std::vector<Paths>& layers, const std::vector<IndexedRegion>& indexed,
-                  const LayeredBall& ball, size_t a, size_t b, std::vector<Paths>& out) {
-  const long n = long(layers.size()), R = ball.reach;
-  std::vector<long> terms;
-  for (long k = long(a); k < long(b); ++k) {
-    start_terms(terms);
-    if (k < R || k + R >= n) continue;  // within the ball of the stack's empty outside
-    Paths cavity;
-    bool first = true;
-    for (long e : terms) {
-      const Paths term = offset_region(layers[size_t(k + e)], -ball.radius(std::labs(e)));
-      cavity = first ? term : intersect_all({&cavity, &term});
-      first = false;
-      if (cavity.empty()) break;
+// The stack's layers and, for every aligned run of 2^s of them (s >= 1) up to the ball's reach,
+// their intersection (eroding) or union (dilating): a run's whole set of terms is proved at once
+// against it (see StackByBall).
+class LayerBlocks {
+ public:
+  LayerBlocks(const std::vector<Paths>& layers, long reach, bool grow, const Progress& progress) : layers_(layers) {
+    const size_t n = layers.size();
+    index_.emplace_back(n);
+    parallel_blocks(n, [&](size_t k) { index_[0][k] = index_region(layers[k]); }, {}, "hollowing");
+    for (size_t s = 1; (long(1) << s) <= reach; ++s) {
+      const size_t count = (n + (size_t(1) << s) - 1) >> s;
+      blocks_.emplace_back(count);
+      index_.emplace_back(count);
+      parallel_blocks(
+          count,
+          [&](size_t i) {
+            const Paths& a = region(s - 1, 2 * i);
+            Paths& out = blocks_[s - 1][i];
+            if (2 * i + 1 < index_[s - 1].size()) {
+              const Paths& b = region(s - 1, 2 * i + 1);
+              out = grow ? unite_all({&a, &b}) : intersect_all({&a, &b});
+            } else {
+              out = a;
+            }
+            index_[s][i] = index_region(out);
+          },
+          progress, "hollowing");
     }
-    IndexedRegion candidate = index_region(cavity);
-    for (long d = 1; d <= R && !cavity.empty(); ++d)
-      for (long e : {-d, d}) {
-        if (cavity.empty() || std::find(terms.begin(), terms.end(), e) != terms.end()) continue;
-        const double r = ball.radius(d);
-        if (clearance(candidate, indexed[size_t(k + e)], r * kRegionScale) >= r * kRegionScale) continue;
-        const Paths term = offset_region(layers[size_t(k + e)], -r);
-        cavity = intersect_all({&cavity, &term});
-        candidate = index_region(cavity);
-        terms.push_back(e);
-      }
-    std::vector<long> binding;
-    for (long e : terms) {
-      const double cap = ball.radius(std::labs(e)) * kRegionScale + kBindingUnits;
-      if (clearance(candidate, indexed[size_t(k + e)], cap) < cap) binding.push_back(e);
-    }
-    terms = std::move(binding);
-    out[size_t(k)] = std::move(cavity);
   }
-}
+  size_t size() const { return layers_.size(); }
+  size_t levels() const { return index_.size(); }
+  const Paths& region(size_t s, size_t i) const { return s == 0 ? layers_[i] : blocks_[s - 1][i]; }
+  const IndexedRegion& indexed(size_t s, size_t i) const { return index_[s][i]; }
 
-// Layers [a, b) of the stack dilated by the ball: the union over the layers k + e within it of
-// their regions offset outwards by radius(|e|), found as erode_layers finds its intersection: a
-// term whose layer lies at least its radius inside the candidate adds nothing to it.
-void dilate_layers(const std::vector<Paths>& layers, const std::vector<IndexedRegion>& indexed,
-                   const LayeredBall& ball, size_t a, size_t b, std::vector<Paths>& out) {
-  const long n = long(layers.size()), R = ball.reach;
-  std::vector<long> terms;
-  for (long k = long(a); k < long(b); ++k) {
-    start_terms(terms);
-    Paths grown;
-    std::vector<long> used;
-    for (long e : terms) {
-      if (k + e < 0 || k + e >= n || layers[size_t(k + e)].empty()) continue;
-      const Paths term = offset_region(layers[size_t(k + e)], ball.radius(std::labs(e)));
-      grown = unite_all({&grown, &term});
-      used.push_back(e);
-    }
-    IndexedRegion candidate = index_region(grown);
-    for (long d = 0; d <= R; ++d)
-      for (long side = d == 0 ? 1 : -1; side <= 1; side += 2) {
-        const long e = side * d;
-        if (k + e < 0 || k + e >= n) continue;
-        if (std::find(used.begin(), used.end(), e) != used.end()) continue;
-        const double r = ball.radius(d);
-        if (clearance(indexed[size_t(k + e)], candidate, r * kRegionScale) >= r * kRegionScale) continue;
-        const Paths term = offset_region(layers[size_t(k + e)], r);
-        grown = unite_all({&grown, &term});
-        candidate = index_region(grown);
-        used.push_back(e);
-      }
+ private:
+  const std::vector<Paths>& layers_;
+  std::vector<std::vector<Paths>> blocks_;  // levels 1, 2, ...
+  std::vector<std::vector<IndexedRegion>> index_;
+};
+
+// Layer k of the stack eroded (grow false) or dilated by the ball (cavity.h): the intersection
+// (or union) over the layers k + e within it of their regions offset inwards (or outwards) by
+// radius(|e|), layers beyond the stack being empty. The terms that bound the layer below (or,
+// when none did, e = 0) give a candidate; every other term is then proved to change nothing, a run of layers at
+// once where it can: eroding, when the candidate lies at least radius(d) inside the run's
+// intersection, d being its layer nearest to k, it lies inside each of the run's terms;
+// dilating, when the run's union lies at least radius(d) inside the candidate, so does each of
+// the run's terms' offsets (region_clearance.h). A run that fails is split in two, and a single
+// layer that fails is offset and taken in. So the result is the whole intersection (or union),
+// while a smooth part costs a few offsets and proofs a layer.
+class StackByBall {
+ public:
+  StackByBall(const LayerBlocks& blocks, const LayeredBall& ball, bool grow)
+      : blocks_(blocks), ball_(ball), grow_(grow) {}
+
+  // Layers [a, b) into out, in order.
+  void layers(size_t a, size_t b, std::vector<Paths>& out) {
+    const long n = long(blocks_.size());
     std::vector<long> binding;
-    for (long e : used) {
-      const double cap = ball.radius(std::labs(e)) * kRegionScale + kBindingUnits;
-      if (clearance(indexed[size_t(k + e)], candidate, cap) < cap) binding.push_back(e);
+    for (long k = long(a); k < long(b); ++k) {
+      if (binding.empty()) binding.push_back(0);
+      if (!grow_ && (k < ball_.reach || k + ball_.reach >= n)) continue;  // within reach of the empty outside
+      k_ = k;
+      terms_.clear();
+      result_.clear();
+      for (long e : binding)
+        if (k + e >= 0 && k + e < n) take(e);
+      candidate_ = index_region(result_);
+      prove(std::max(0L, k - ball_.reach), k);
+      prove(k + 1, std::min(n - 1, k + ball_.reach));
+      binding.clear();
+      for (long e : terms_)
+        if (!holds(blocks_.indexed(0, size_t(k + e)), ball_.radius(std::labs(e)) * kRegionScale + kBindingUnits))
+          binding.push_back(e);
+      out[size_t(k)] = std::move(result_);
     }
-    terms = std::move(binding);
-    out[size_t(k)] = std::move(grown);
   }
-}
 
-using LayersByBall = void (*)(const std::vector<Paths>&, const std::vector<IndexedRegion>&, const LayeredBall&,
-                              size_t, size_t, std::vector<Paths>&);
+ private:
+  // Whether the candidate lies at least distance inside the run (eroding), or the run inside the
+  // candidate (dilating).
+  bool holds(const IndexedRegion& run, double distance) const {
+    return grow_ ? clears(run, candidate_, distance) : clears(candidate_, run, distance);
+  }
 
-// The stack eroded or dilated by the ball, blocks of layers on all cores.
-std::vector<Paths> by_ball(LayersByBall f, const std::vector<Paths>& layers, const LayeredBall& ball,
+  // Term e offset and taken into the result.
+  void take(long e) {
+    const Paths& layer = blocks_.region(0, size_t(k_ + e));
+    const double r = ball_.radius(std::labs(e));
+    const Paths term = offset_region(layer, grow_ ? r : -r);
+    if (terms_.empty()) result_ = term;
+    else result_ = grow_ ? unite_all({&result_, &term}) : intersect_all({&result_, &term});
+    terms_.push_back(e);
+  }
+
+  // Proves the terms of layers [lo, hi] (all on one side of k, or k itself), taking in those
+  // that fail.
+  void prove(long lo, long hi) {
+    if (lo > hi) return;
+    const size_t top = blocks_.levels() - 1;
+    for (long i = lo >> top; i <= hi >> top; ++i) prove(top, i, lo, hi);
+  }
+
+  void prove(size_t s, long i, long lo, long hi) {
+    if (!grow_ && result_.empty()) return;
+    const long b0 = i << s, b1 = std::min(((i + 1) << s) - 1, long(blocks_.size()) - 1);
+    if (b1 < lo || b0 > hi) return;
+    if (lo <= b0 && b1 <= hi) {
+      const double r = ball_.radius(b0 > k_ ? b0 - k_ : k_ - b1) * kRegionScale;
+      if (holds(blocks_.indexed(s, size_t(i)), r)) return;
+      if (s == 0) {
+        if (std::find(terms_.begin(), terms_.end(), b0 - k_) == terms_.end()) {
+          take(b0 - k_);
+          candidate_ = index_region(result_);
+        }
+        return;
+      }
+    }
+    prove(s - 1, 2 * i, lo, hi);
+    prove(s - 1, 2 * i + 1, lo, hi);
+  }
+
+  const LayerBlocks& blocks_;
+  const LayeredBall ball_;
+  const bool grow_;
+  long k_ = 0;
+  std::vector<long> terms_;
+  Paths result_;
+  IndexedRegion candidate_;
+};
+
+// The stack eroded or dilated by the ball, runs of layers on all cores.
+std::vector<Paths> by_ball(const std::vector<Paths>& layers, const LayeredBall& ball, bool grow,
                            const Progress& progress) {
   const size_t n = layers.size();
-  std::vector<IndexedRegion> indexed(n);
-  for (size_t k = 0; k < n; ++k) indexed[k] = index_region(layers[k]);
+  const LayerBlocks blocks(layers, ball.reach, grow, sub_progress(progress, 0, 0.2));
   std::vector<Paths> out(n);
-  const size_t blocks = (n + kBlockLayers - 1) / kBlockLayers;
   parallel_blocks(
-      blocks,
-      [&](size_t i) { f(layers, indexed, ball, i * kBlockLayers, std::min(n, (i + 1) * kBlockLayers), out); },
-      progress, "hollowing");
+      (n + kBlockLayers - 1) / kBlockLayers,
+      [&](size_t i) { StackByBall(blocks, ball, grow).layers(i * kBlockLayers, std::min(n, (i + 1) * kBlockLayers), out); },
+      sub_progress(progress, 0.2, 1), "hollowing");
   return out;
 }
 
@@ -195,9 +232,9 @@ std::vector<Paths> cavity_regions(const std::vector<Paths>& layers, double thick
   if (options.wall_mm == 0) return std::vector<Paths>(n);
   const LayeredBall eroding(options.wall_mm + options.closing_mm, thickness_mm);
   const bool closing = options.closing_mm > 0;
-  std::vector<Paths> eroded = by_ball(erode_layers, layers, eroding, sub_progress(progress, 0, closing ? 0.5 : 1));
+  std::vector<Paths> eroded = by_ball(layers, eroding, false, sub_progress(progress, 0, closing ? 0.5 : 1));
   if (!closing) return eroded;
-  return by_ball(dilate_layers, eroded, LayeredBall(options.closing_mm, thickness_mm), sub_progress(progress, 0.5, 1));
+  return by_ball(eroded, LayeredBall(options.closing_mm, thickness_mm), true, sub_progress(progress, 0.5, 1));
 }
 
 }  // namespace slicereuse

@@ -9,8 +9,9 @@ namespace slicereuse {
 namespace {
 
 // Short enough that a run of a smooth contour hugs its chord (its stray is what every bound
-// between runs loses), long enough that few runs are compared pairwise.
-constexpr uint32_t kRunEdges = 8;
+// between runs loses); groups of runs long enough that few are compared pairwise.
+constexpr uint32_t kRunEdges = 4;
+constexpr uint32_t kGroupRuns = 8;
 
 using ClipperLib::IntPoint;
 
@@ -82,44 +83,64 @@ IndexedRegion index_region(const ClipperLib::Paths& region) {
                           double(x0), double(y0), double(x1), double(y1)});
     }
   }
+  for (uint32_t first = 0; first < out.runs.size(); first += kGroupRuns) {
+    IndexedRegion::Group g{first, std::min(kGroupRuns, uint32_t(out.runs.size()) - first), INFINITY, INFINITY,
+                           -INFINITY, -INFINITY};
+    for (uint32_t i = first; i < first + g.runs; ++i) {
+      const IndexedRegion::Run& r = out.runs[i];
+      g.x0 = std::min(g.x0, r.x0), g.y0 = std::min(g.y0, r.y0), g.x1 = std::max(g.x1, r.x1), g.y1 = std::max(g.y1, r.y1);
+    }
+    out.groups.push_back(g);
+  }
   return out;
 }
 
-double clearance(const IndexedRegion& inner, const IndexedRegion& outer, double cap) {
+bool clears(const IndexedRegion& inner, const IndexedRegion& outer, double distance) {
   const ClipperLib::Paths& in = *inner.region;
   const ClipperLib::Paths& out = *outer.region;
-  if (in.empty()) return cap;
-  if (out.empty()) return -1;
-  double best = cap;
-  for (const IndexedRegion::Run& r : inner.runs)
-    for (const IndexedRegion::Run& s : outer.runs) {
-      const double gx = std::max({0.0, r.x0 - s.x1, s.x0 - r.x1}), gy = std::max({0.0, r.y0 - s.y1, s.y0 - r.y1});
-      if (gx * gx + gy * gy >= best * best && (gx > 0 || gy > 0)) continue;
-      const double chords = chords_cross(r, s) ? 0 : std::sqrt(segments_distance2(r.ax, r.ay, r.bx, r.by, s.ax, s.ay, s.bx, s.by));
-      const double bound = chords - r.stray - s.stray;
-      if (bound >= best && bound > 0) continue;
-      const ClipperLib::Path& p = in[r.loop];
-      const ClipperLib::Path& q = out[s.loop];
-      for (uint32_t i = r.first; i < r.first + r.edges; ++i) {
-        const IntPoint& a = p[i];
-        const IntPoint& b = p[(i + 1) % p.size()];
-        for (uint32_t j = s.first; j < s.first + s.edges; ++j) {
-          const IntPoint& c = q[j];
-          const IntPoint& d = q[(j + 1) % q.size()];
-          if (segments_meet(a, b, c, d)) return -1;
-          const double d2 = std::min({point_segment2(a, c, d), point_segment2(b, c, d), point_segment2(c, a, b),
-                                      point_segment2(d, a, b)});
-          best = std::min(best, std::sqrt(d2));
+  if (in.empty()) return true;
+  if (out.empty()) return false;
+  // Boxes or capsules this far apart or more hold nothing nearer than distance, nor any crossing.
+  const auto apart = [distance](double gap) { return gap >= distance && gap > 0; };
+  const auto box_gap = [](const auto& r, const auto& s) {
+    const double gx = std::max({0.0, r.x0 - s.x1, s.x0 - r.x1}), gy = std::max({0.0, r.y0 - s.y1, s.y0 - r.y1});
+    return std::sqrt(gx * gx + gy * gy);
+  };
+  const double distance2 = distance * distance;
+  for (const IndexedRegion::Group& g : inner.groups)
+    for (const IndexedRegion::Group& h : outer.groups) {
+      if (apart(box_gap(g, h))) continue;
+      for (uint32_t ri = g.first; ri < g.first + g.runs; ++ri)
+        for (uint32_t si = h.first; si < h.first + h.runs; ++si) {
+          const IndexedRegion::Run& r = inner.runs[ri];
+          const IndexedRegion::Run& s = outer.runs[si];
+          if (apart(box_gap(r, s))) continue;
+          const double chords =
+              chords_cross(r, s) ? 0 : std::sqrt(segments_distance2(r.ax, r.ay, r.bx, r.by, s.ax, s.ay, s.bx, s.by));
+          if (apart(chords - r.stray - s.stray)) continue;
+          const ClipperLib::Path& p = in[r.loop];
+          const ClipperLib::Path& q = out[s.loop];
+          for (uint32_t i = r.first; i < r.first + r.edges; ++i) {
+            const IntPoint& a = p[i];
+            const IntPoint& b = p[(i + 1) % p.size()];
+            for (uint32_t j = s.first; j < s.first + s.edges; ++j) {
+              const IntPoint& c = q[j];
+              const IntPoint& d = q[(j + 1) % q.size()];
+              if (segments_meet(a, b, c, d)) return false;
+              if (point_segment2(a, c, d) < distance2 || point_segment2(b, c, d) < distance2 ||
+                  point_segment2(c, a, b) < distance2 || point_segment2(d, a, b) < distance2)
+                return false;
+            }
+          }
         }
-      }
     }
   // The boundaries do not meet, so each loop lies wholly inside or outside the other region:
   // inner lies in outer when every inner loop does and no outer loop lies in inner.
   for (const ClipperLib::Path& loop : in)
-    if (!in_region(loop[0], out)) return -1;
+    if (!in_region(loop[0], out)) return false;
   for (const ClipperLib::Path& loop : out)
-    if (in_region(loop[0], in)) return -1;
-  return best;
+    if (in_region(loop[0], in)) return false;
+  return true;
 }
 
 }  // namespace slicereuse

@@ -3,15 +3,16 @@
 // within an offset it has not been clipped by (cavity.cpp), without computing that offset.
 //
 // IndexedRegion: a region (Clipper loops: outer counter-clockwise, holes clockwise, none crossing)
-// with its loops cut into runs of up to kRunEdges edges, each bounded by a capsule: the chord from
-// its first to its last point and the farthest its points stray from that chord, and inside a
-// box (far runs are told apart by their boxes, near ones by their capsules). The region must
-// outlive it.
-// clearance(inner, outer, cap): when inner lies inside outer, the distance from inner to outer's
-// outside (the least distance between their boundaries), or cap if that is at least cap;
-// -1 when inner does not lie inside outer, or their boundaries touch. An empty inner lies in
-// anything (cap); a non-empty one in no empty outer (-1). In Clipper units, exact up to the
-// doubles' rounding of the distances (crossings are found in exact integer arithmetic).
+// with its loops cut into runs of a few edges, each bounded by a box and a capsule (the chord from
+// its first to its last point and the farthest its points stray from that chord), and the runs
+// into groups bounded by boxes: far groups are told apart by their boxes, near runs by their
+// capsules, and only runs nearer than the distance asked are compared edge by edge. The region
+// must outlive it.
+// clears(inner, outer, distance): whether inner lies inside outer with at least distance between
+// their boundaries, i.e. inside outer offset inwards by distance (distance 0: inside, boundaries
+// not touching). An empty inner lies inside anything; a non-empty one inside no empty outer. In
+// Clipper units, exact up to the doubles' rounding of the distances (crossings are found in
+// exact integer arithmetic).
 #include <clipper.hpp>
 
 #include <cstdint>
@@ -26,11 +27,16 @@ struct IndexedRegion {
     double stray;                 // the farthest point from it
     double x0, y0, x1, y1;        // its points' bounding box
   };
+  struct Group {
+    uint32_t first, runs;      // runs first .. first + runs - 1
+    double x0, y0, x1, y1;     // their bounding box
+  };
   const ClipperLib::Paths* region = nullptr;
   std::vector<Run> runs;
+  std::vector<Group> groups;
 };
 
 IndexedRegion index_region(const ClipperLib::Paths& region);
-double clearance(const IndexedRegion& inner, const IndexedRegion& outer, double cap);
+bool clears(const IndexedRegion& inner, const IndexedRegion& outer, double distance);
 
 }  // namespace slicereuse
