@@ -62,9 +62,10 @@ struct LayeredBall {
   long reach;  // layers each way
 };
 
-// A term binds when the result comes this near its offset's edge (in Clipper units, 1 um): it is
-// tried first on the next layer, whose result it likely bounds too.
-constexpr double kBindingUnits = 1e-3 * kRegionScale;
+// A term binds when the result comes this near its offset's edge (in Clipper units, the offsets'
+// arc tolerance): it is tried first on the next layer, whose result it likely bounds too (a
+// micrometre seeded half as many terms again that did not bind, on a sphere).
+constexpr double kBindingUnits = kCavityArcToleranceMm * kRegionScale;
 // Layers a thread works through in order, handing on the terms that bind from one to the next.
 constexpr size_t kBlockLayers = 16;
 
