@@ -16,11 +16,84 @@ namespace {
 using ClipperLib::cInt;
 using ClipperLib::Paths;
 
+// A region offset by delta_mm (negative: inwards) with round joins, as ClipperOffset does (its
+// steps per radian from kCavityArcToleranceMm, its union of the raw loops), except at a corner
+// the offset turns inside of: where the two shifted edges meet within the first half of each, it
+// takes their meeting point, where ClipperOffset adds a small loop through the corner for the
+// union to resolve into that same point. A dense smooth contour turns inside at nearly every
+// vertex, and those loops' crossings were most of its offsets' cost.
 Paths offset_region(const Paths& region, double delta_mm) {
-  ClipperLib::ClipperOffset offset(2, kCavityArcToleranceMm * kRegionScale);
-  offset.AddPaths(region, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+  const double delta = delta_mm * kRegionScale, size = std::fabs(delta);
+  if (region.empty() || size < 1) return region;
+  const double tolerance = std::min(kCavityArcToleranceMm * kRegionScale, size / 4);
+  const double steps = std::min(M_PI / std::acos(1 - tolerance / size), size * M_PI);
+  const double step_sin = std::sin(2 * M_PI / steps) * (delta < 0 ? -1 : 1), step_cos = std::cos(2 * M_PI / steps);
+  const double steps_per_radian = steps / (2 * M_PI);
+  const auto at = [](const ClipperLib::IntPoint& p, double dx, double dy) {
+    return ClipperLib::IntPoint(std::llround(double(p.X) + dx), std::llround(double(p.Y) + dy));
+  };
+  Paths raw;
+  std::vector<double> nx, ny, length;
+  for (const ClipperLib::Path& loop : region) {
+    const size_t n = loop.size();
+    if (n < 3) continue;
+    nx.resize(n), ny.resize(n), length.resize(n);
+    for (size_t j = 0; j < n; ++j) {
+      const double dx = double(loop[(j + 1) % n].X - loop[j].X), dy = double(loop[(j + 1) % n].Y - loop[j].Y);
+      length[j] = std::hypot(dx, dy);
+      nx[j] = length[j] > 0 ? dy / length[j] : 0, ny[j] = length[j] > 0 ? -dx / length[j] : 0;
+    }
+    ClipperLib::Path out;
+    out.reserve(n + n / 2);
+    size_t k = n - 1;  // the edge before, skipping nearly straight corners as ClipperOffset does
+    for (size_t j = 0; j < n; ++j) {
+      const ClipperLib::IntPoint& p = loop[j];
+      double sin_a = nx[k] * ny[j] - nx[j] * ny[k];
+      const double cos_a = nx[k] * nx[j] + ny[k] * ny[j];
+      if (std::fabs(sin_a * delta) < 1 && cos_a > 0) {
+        out.push_back(at(p, nx[k] * delta, ny[k] * delta));
+        continue;
+      }
+      sin_a = std::clamp(sin_a, -1.0, 1.0);
+      if (sin_a * delta < 0) {
+        const double r = 1 + cos_a;  // the shifted edges meet delta tan(angle / 2) from p's
+        if (r > 1e-9 && size * std::fabs(sin_a) / r <= 0.5 * std::min(length[k], length[j])) {
+          out.push_back(at(p, (nx[k] + nx[j]) * delta / r, (ny[k] + ny[j]) * delta / r));
+        } else {
+          out.push_back(at(p, nx[k] * delta, ny[k] * delta));
+          out.push_back(p);
+          out.push_back(at(p, nx[j] * delta, ny[j] * delta));
+        }
+      } else {
+        const int arc = std::max(1, int(std::lround(steps_per_radian * std::fabs(std::atan2(sin_a, cos_a)))));
+        double x = nx[k], y = ny[k];
+        for (int i = 0; i < arc; ++i) {
+          out.push_back(at(p, x * delta, y * delta));
+          const double x2 = x;
+          x = x * step_cos - step_sin * y;
+          y = x2 * step_sin + y * step_cos;
+        }
+        out.push_back(at(p, nx[j] * delta, ny[j] * delta));
+      }
+      k = j;
+    }
+    raw.push_back(std::move(out));
+  }
+  ClipperLib::Clipper clipper;
+  clipper.AddPaths(raw, ClipperLib::ptSubject, true);
   Paths out;
-  offset.Execute(out, delta_mm * kRegionScale);
+  if (delta > 0) {
+    clipper.Execute(ClipperLib::ctUnion, out, ClipperLib::pftPositive, ClipperLib::pftPositive);
+    return out;
+  }
+  // Inwards, the loops' union reversed inside a box around them all, less the box.
+  const ClipperLib::IntRect b = clipper.GetBounds();
+  clipper.AddPath({{b.left - 10, b.bottom + 10}, {b.right + 10, b.bottom + 10}, {b.right + 10, b.top - 10},
+                   {b.left - 10, b.top - 10}},
+                  ClipperLib::ptSubject, true);
+  clipper.ReverseSolution(true);
+  clipper.Execute(ClipperLib::ctUnion, out, ClipperLib::pftNegative, ClipperLib::pftNegative);
+  if (!out.empty()) out.erase(out.begin());
   return out;
 }
 
