@@ -117,7 +117,9 @@ bool clears(const IndexedRegion& inner, const IndexedRegion& outer, double dista
           if (apart(box_gap(r, s))) continue;
           const double chords =
               chords_cross(r, s) ? 0 : std::sqrt(segments_distance2(r.ax, r.ay, r.bx, r.by, s.ax, s.ay, s.bx, s.by));
-          if (apart(chords - r.stray - s.stray)) continue;
+          const double bound = chords - r.stray - s.stray;
+          if (apart(bound)) continue;
+          const bool may_meet = bound <= 0;  // capsules apart hold no crossing
           const ClipperLib::Path& p = in[r.loop];
           const ClipperLib::Path& q = out[s.loop];
           for (uint32_t i = r.first; i < r.first + r.edges; ++i) {
@@ -126,7 +128,12 @@ bool clears(const IndexedRegion& inner, const IndexedRegion& outer, double dista
             for (uint32_t j = s.first; j < s.first + s.edges; ++j) {
               const IntPoint& c = q[j];
               const IntPoint& d = q[(j + 1) % q.size()];
-              if (segments_meet(a, b, c, d)) return false;
+              if (may_meet && segments_meet(a, b, c, d)) return false;
+              const double gx = double(std::max({ClipperLib::cInt(0), std::min(a.X, b.X) - std::max(c.X, d.X),
+                                                 std::min(c.X, d.X) - std::max(a.X, b.X)}));
+              const double gy = double(std::max({ClipperLib::cInt(0), std::min(a.Y, b.Y) - std::max(c.Y, d.Y),
+                                                 std::min(c.Y, d.Y) - std::max(a.Y, b.Y)}));
+              if (gx * gx + gy * gy >= distance2) continue;
               if (point_segment2(a, c, d) < distance2 || point_segment2(b, c, d) < distance2 ||
                   point_segment2(c, a, b) < distance2 || point_segment2(d, a, b) < distance2)
                 return false;
