@@ -10,8 +10,8 @@ namespace {
 
 // Short enough that a run of a smooth contour hugs its chord (its stray is what every bound
 // between runs loses); groups of runs long enough that few are compared pairwise.
-constexpr uint32_t kRunEdges = 4;
-constexpr uint32_t kGroupRuns = 8;
+constexpr uint32_t kRunEdges = 2;
+constexpr uint32_t kGroupRuns = 4;
 
 using ClipperLib::IntPoint;
 
