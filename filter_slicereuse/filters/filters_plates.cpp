@@ -25,6 +25,7 @@ struct PlateJobParams {
   JobLayers layers;
   JobSupports supports;
   JobChecks checks;
+  JobHollowing hollowing;
   double spacing_mm;
   double rotation_step_deg;
   std::string placements_file;
@@ -76,7 +77,8 @@ ParamList<PlateJobParams> plate_job_params() {
                              "member's layers are transferred from it (exact). Empty: every member is sliced "
                              "directly."))
       .include(&PlateJobParams::supports, job_support_params())
-      .include(&PlateJobParams::checks, job_check_params());
+      .include(&PlateJobParams::checks, job_check_params())
+      .include(&PlateJobParams::hollowing, job_hollowing_params());
   add_arrangement(l);
   add_placements_output(l, nullptr,
                         "Also write the plates' placements, members and area used here (JSON). Empty (the default): "
@@ -206,6 +208,7 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
 
   PlateJobOptions jo = plate_job_options(p.layers);
   set_job_checks(p.checks, jo);
+  set_job_hollowing(p.hollowing, jo);
   jo.names = names;
   bool cached = false;
   std::shared_ptr<const CachedEncoding> entry;
@@ -272,6 +275,7 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
                     seconds_since(plate_start)));
     log_display_warning(host, "Make Plate Job", st.masks, profile);
     report_printability(host, "Make Plate Job", format("plate %zu", first + k), st, plate_names, true, result);
+    report_hollowing(host, "Make Plate Job", format("plate %zu", first + k), st, plate_names, true, result);
   }
   if (!p.placements_output.empty())
     write_placements_file(p.placements_output,
@@ -426,7 +430,8 @@ FilterSpec plate_job_filter() {
                           {"plates", "members", "layers", "points", "transferred_layers", "resliced_layers",
                            "direct_members", "encoding_cached", "arrange_seconds", "read_seconds", "slicing_seconds",
                            "seconds", "support_seconds", "area_used_*", "output_*", "layout_*", "direct_reason_*",
-                           "sliced_directly_*", "support_points_*", "kept_*", "moved_*", "added_*", "dropped_*"},
+                           "sliced_directly_*", "support_points_*", "kept_*", "moved_*", "added_*", "dropped_*",
+                           "cavity_mm3", "cavity_mm3_*"},
                           true));
 }
 

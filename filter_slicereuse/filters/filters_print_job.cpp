@@ -14,6 +14,7 @@ struct PrintJobParams {
   JobLayers layers;
   JobSupports supports;
   JobChecks checks;
+  JobHollowing hollowing;
   std::string contour_file;
   std::string output_path;
   PrinterSettings printer;
@@ -28,6 +29,7 @@ ParamList<PrintJobParams> print_job_params() {
                              "directly."))
       .include(&PrintJobParams::supports, job_support_params())
       .include(&PrintJobParams::checks, job_check_params())
+      .include(&PrintJobParams::hollowing, job_hollowing_params())
       .file(&PrintJobParams::contour_file, ParamType::FileSave, "contour_file", "Contour file", "*.ctr *.srb", nullptr,
             "Also write the layers' contour points here (text .ctr unless the name ends in .srb). Empty (the "
             "default): no contour file.");
@@ -50,6 +52,7 @@ Result run_print_job(const PrintJobParams& p, Host& host) {
   const Progress progress = host.progress();
   PlateJobOptions o = plate_job_options(p.layers);
   set_job_checks(p.checks, o);
+  set_job_hollowing(p.hollowing, o);
   o.names = {p.mesh_file.empty() ? "the current mesh" : job.name};
   bool cached = false;
   std::shared_ptr<const CachedEncoding> entry;
@@ -111,6 +114,7 @@ Result run_print_job(const PrintJobParams& p, Host& host) {
   add_support_figures(sup, "", result);
   add_display_figures(st.masks, result);
   report_printability(host, "Make Print Job", "", st, o.names, false, result);
+  report_hollowing(host, "Make Print Job", "", st, o.names, false, result);
   return result;
 }
 
@@ -149,7 +153,7 @@ FilterSpec print_job_filter() {
                       with_printability_keys(with_display_keys({"layers", "points", "transferred_layers", "resliced_layers", "encoding_cached",
                                          "layer_ranges", "reused", "direct_reason", "output_path", "support_points", "kept",
                                          "moved", "added", "dropped", "read_seconds", "slicing_seconds", "support_seconds",
-                                         "masks_seconds", "seconds"}),
+                                         "masks_seconds", "seconds", "cavity_mm3"}),
                                              false));
 }
 
