@@ -9,9 +9,9 @@ namespace slicereuse {
 namespace {
 
 // Short enough that a run of a smooth contour hugs its chord (its stray is what every bound
-// between runs loses); groups of runs long enough that few are compared pairwise.
+// between runs loses); groups of runs, and groups of groups, so that few are compared pairwise.
 constexpr uint32_t kRunEdges = 2;
-constexpr uint32_t kGroupRuns = 4;
+constexpr uint32_t kGroupSize = 4;
 
 using ClipperLib::IntPoint;
 
@@ -60,6 +60,22 @@ bool in_region(const IntPoint& p, const ClipperLib::Paths& region) {
   return in;
 }
 
+// Consecutive items (runs or groups) kGroupSize at a time, with their boxes.
+template <class Item>
+std::vector<IndexedRegion::Group> grouped(const std::vector<Item>& items) {
+  std::vector<IndexedRegion::Group> groups;
+  for (uint32_t first = 0; first < items.size(); first += kGroupSize) {
+    IndexedRegion::Group g{first, std::min(kGroupSize, uint32_t(items.size()) - first), INFINITY, INFINITY, -INFINITY,
+                           -INFINITY};
+    for (uint32_t i = first; i < first + g.count; ++i) {
+      const Item& r = items[i];
+      g.x0 = std::min(g.x0, r.x0), g.y0 = std::min(g.y0, r.y0), g.x1 = std::max(g.x1, r.x1), g.y1 = std::max(g.y1, r.y1);
+    }
+    groups.push_back(g);
+  }
+  return groups;
+}
+
 }  // namespace
 
 IndexedRegion index_region(const ClipperLib::Paths& region) {
@@ -83,15 +99,8 @@ IndexedRegion index_region(const ClipperLib::Paths& region) {
                           double(x0), double(y0), double(x1), double(y1)});
     }
   }
-  for (uint32_t first = 0; first < out.runs.size(); first += kGroupRuns) {
-    IndexedRegion::Group g{first, std::min(kGroupRuns, uint32_t(out.runs.size()) - first), INFINITY, INFINITY,
-                           -INFINITY, -INFINITY};
-    for (uint32_t i = first; i < first + g.runs; ++i) {
-      const IndexedRegion::Run& r = out.runs[i];
-      g.x0 = std::min(g.x0, r.x0), g.y0 = std::min(g.y0, r.y0), g.x1 = std::max(g.x1, r.x1), g.y1 = std::max(g.y1, r.y1);
-    }
-    out.groups.push_back(g);
-  }
+  out.groups = grouped(out.runs);
+  out.supergroups = grouped(out.groups);
   return out;
 }
 
@@ -107,38 +116,46 @@ bool clears(const IndexedRegion& inner, const IndexedRegion& outer, double dista
     return std::sqrt(gx * gx + gy * gy);
   };
   const double distance2 = distance * distance;
-  for (const IndexedRegion::Group& g : inner.groups)
-    for (const IndexedRegion::Group& h : outer.groups) {
-      if (apart(box_gap(g, h))) continue;
-      for (uint32_t ri = g.first; ri < g.first + g.runs; ++ri)
-        for (uint32_t si = h.first; si < h.first + h.runs; ++si) {
-          const IndexedRegion::Run& r = inner.runs[ri];
-          const IndexedRegion::Run& s = outer.runs[si];
-          if (apart(box_gap(r, s))) continue;
-          const double chords =
-              chords_cross(r, s) ? 0 : std::sqrt(segments_distance2(r.ax, r.ay, r.bx, r.by, s.ax, s.ay, s.bx, s.by));
-          const double bound = chords - r.stray - s.stray;
-          if (apart(bound)) continue;
-          const bool may_meet = bound <= 0;  // capsules apart hold no crossing
-          const ClipperLib::Path& p = in[r.loop];
-          const ClipperLib::Path& q = out[s.loop];
-          for (uint32_t i = r.first; i < r.first + r.edges; ++i) {
-            const IntPoint& a = p[i];
-            const IntPoint& b = p[(i + 1) % p.size()];
-            for (uint32_t j = s.first; j < s.first + s.edges; ++j) {
-              const IntPoint& c = q[j];
-              const IntPoint& d = q[(j + 1) % q.size()];
-              if (may_meet && segments_meet(a, b, c, d)) return false;
-              const double gx = double(std::max({ClipperLib::cInt(0), std::min(a.X, b.X) - std::max(c.X, d.X),
-                                                 std::min(c.X, d.X) - std::max(a.X, b.X)}));
-              const double gy = double(std::max({ClipperLib::cInt(0), std::min(a.Y, b.Y) - std::max(c.Y, d.Y),
-                                                 std::min(c.Y, d.Y) - std::max(a.Y, b.Y)}));
-              if (gx * gx + gy * gy >= distance2) continue;
-              if (point_segment2(a, c, d) < distance2 || point_segment2(b, c, d) < distance2 ||
-                  point_segment2(c, a, b) < distance2 || point_segment2(d, a, b) < distance2)
-                return false;
-            }
-          }
+  // Whether two runs come nearer than distance, or meet.
+  const auto too_near = [&](const IndexedRegion::Run& r, const IndexedRegion::Run& s) {
+    if (apart(box_gap(r, s))) return false;
+    const double chords =
+        chords_cross(r, s) ? 0 : std::sqrt(segments_distance2(r.ax, r.ay, r.bx, r.by, s.ax, s.ay, s.bx, s.by));
+    const double bound = chords - r.stray - s.stray;
+    if (apart(bound)) return false;
+    const bool may_meet = bound <= 0;  // capsules apart hold no crossing
+    const ClipperLib::Path& p = in[r.loop];
+    const ClipperLib::Path& q = out[s.loop];
+    for (uint32_t i = r.first; i < r.first + r.edges; ++i) {
+      const IntPoint& a = p[i];
+      const IntPoint& b = p[(i + 1) % p.size()];
+      for (uint32_t j = s.first; j < s.first + s.edges; ++j) {
+        const IntPoint& c = q[j];
+        const IntPoint& d = q[(j + 1) % q.size()];
+        if (may_meet && segments_meet(a, b, c, d)) return true;
+        const double gx = double(std::max({ClipperLib::cInt(0), std::min(a.X, b.X) - std::max(c.X, d.X),
+                                           std::min(c.X, d.X) - std::max(a.X, b.X)}));
+        const double gy = double(std::max({ClipperLib::cInt(0), std::min(a.Y, b.Y) - std::max(c.Y, d.Y),
+                                           std::min(c.Y, d.Y) - std::max(a.Y, b.Y)}));
+        if (gx * gx + gy * gy >= distance2) continue;
+        if (point_segment2(a, c, d) < distance2 || point_segment2(b, c, d) < distance2 ||
+            point_segment2(c, a, b) < distance2 || point_segment2(d, a, b) < distance2)
+          return true;
+      }
+    }
+    return false;
+  };
+  for (const IndexedRegion::Group& gg : inner.supergroups)
+    for (const IndexedRegion::Group& hh : outer.supergroups) {
+      if (apart(box_gap(gg, hh))) continue;
+      for (uint32_t gi = gg.first; gi < gg.first + gg.count; ++gi)
+        for (uint32_t hi = hh.first; hi < hh.first + hh.count; ++hi) {
+          const IndexedRegion::Group& g = inner.groups[gi];
+          const IndexedRegion::Group& h = outer.groups[hi];
+          if (apart(box_gap(g, h))) continue;
+          for (uint32_t ri = g.first; ri < g.first + g.count; ++ri)
+            for (uint32_t si = h.first; si < h.first + h.count; ++si)
+              if (too_near(inner.runs[ri], outer.runs[si])) return false;
         }
     }
   // The boundaries do not meet, so each loop lies wholly inside or outside the other region:

@@ -5,7 +5,8 @@
 // IndexedRegion: a region (Clipper loops: outer counter-clockwise, holes clockwise, none crossing)
 // with its loops cut into runs of a few edges, each bounded by a box and a capsule (the chord from
 // its first to its last point and the farthest its points stray from that chord), and the runs
-// into groups bounded by boxes: far groups are told apart by their boxes, near runs by their
+// into groups and those into supergroups, bounded by boxes: far parts are told apart by their
+// boxes, near runs by their
 // capsules, and only runs nearer than the distance asked are compared edge by edge. The region
 // must outlive it.
 // clears(inner, outer, distance): whether inner lies inside outer with at least distance between
@@ -28,12 +29,13 @@ struct IndexedRegion {
     double x0, y0, x1, y1;        // its points' bounding box
   };
   struct Group {
-    uint32_t first, runs;      // runs first .. first + runs - 1
+    uint32_t first, count;     // runs (or groups) first .. first + count - 1
     double x0, y0, x1, y1;     // their bounding box
   };
   const ClipperLib::Paths* region = nullptr;
   std::vector<Run> runs;
-  std::vector<Group> groups;
+  std::vector<Group> groups;       // of runs
+  std::vector<Group> supergroups;  // of groups
 };
 
 IndexedRegion index_region(const ClipperLib::Paths& region);
