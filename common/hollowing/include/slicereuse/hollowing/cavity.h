@@ -17,7 +17,9 @@
 // sqrt(D^2 - dz^2)): an opening, which drops the cavity's features narrower than 2 D and rounds
 // its edges, and keeps the walls at least t thick (a ball of t + D holds every sum of a ball of t
 // and one of D at the same heights). D = 0 gives erode(t) itself.
-// Offsets are Clipper's, round joins within kCavityArcToleranceMm, on its 1 nm grid.
+// Offsets are ClipperOffset's (round joins within kCavityArcToleranceMm, on Clipper's 1 nm grid).
+// Cost: per layer, the offsets of the few layers that bound its cavity, and proofs that the
+// others do not (cavity.cpp); a prism costs one offset a layer whatever t.
 // Throws Error for a wall or closing distance negative or not finite, or a thickness not
 // positive.
 #include <clipper.hpp>
