@@ -135,6 +135,20 @@ void set_job_labels(const JobLabels& l, const std::vector<std::string>& names, P
 // label_height_mm_<member name> (none without labels).
 void report_labels(Host& host, const char* filter, const PlateJobOptions& o, const PlateJobStats& st,
                    const std::vector<std::string>& names, bool per_member, Result& result);
+// Whether a print or plate job hollows its members (PrusaSlicer's hollowing, computed on the
+// contours: cavity.h, plate_job.h; filters_job_hollowing.cpp): walls of wall_mm (0: solid) and
+// PrusaSlicer's closing distance. The same parameters in both filters.
+struct JobHollowing {
+  double wall_mm;
+  double closing_mm;
+};
+ParamList<JobHollowing> job_hollowing_params();
+void set_job_hollowing(const JobHollowing& h, PlateJobOptions& o);
+// A hollowed plate's cavities: each member's logged (its volume, or why it stays solid; plate_label
+// names the plate, or is empty for a print job), and counted into result as cavity_mm3 (summed
+// with what is there; 0 when solid) and, with per_member, cavity_mm3_<member name>.
+void report_hollowing(Host& host, const char* filter, const std::string& plate_label, const PlateJobStats& st,
+                      const std::vector<std::string>& names, bool per_member, Result& result);
 
 // The supports' parameters (filters_job_supports.cpp), declared once for the support filters and
 // the jobs. How support points are placed: PrusaSlicer's critical angle, density (%) and minimal

@@ -26,6 +26,7 @@ struct PlateJobParams {
   JobSupports supports;
   JobChecks checks;
   JobLabels labels;
+  JobHollowing hollowing;
   double spacing_mm;
   double rotation_step_deg;
   std::string placements_file;
@@ -78,7 +79,8 @@ ParamList<PlateJobParams> plate_job_params() {
                              "directly."))
       .include(&PlateJobParams::supports, job_support_params())
       .include(&PlateJobParams::checks, job_check_params())
-      .include(&PlateJobParams::labels, job_label_params());
+      .include(&PlateJobParams::labels, job_label_params())
+      .include(&PlateJobParams::hollowing, job_hollowing_params());
   add_arrangement(l);
   add_placements_output(l, nullptr,
                         "Also write the plates' placements, members and area used here (JSON). Empty (the default): "
@@ -209,6 +211,7 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
   PlateJobOptions jo = plate_job_options(p.layers);
   set_job_checks(p.checks, jo);
   set_job_labels(p.labels, names, jo);  // every member's label checked before any plate is made
+  set_job_hollowing(p.hollowing, jo);
   jo.names = names;
   bool cached = false;
   std::shared_ptr<const CachedEncoding> entry;
@@ -278,6 +281,7 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
     log_display_warning(host, "Make Plate Job", st.masks, profile);
     report_printability(host, "Make Plate Job", format("plate %zu", first + k), st, plate_names, true, result);
     report_labels(host, "Make Plate Job", jo, st, plate_names, true, result);
+    report_hollowing(host, "Make Plate Job", format("plate %zu", first + k), st, plate_names, true, result);
   }
   if (!p.placements_output.empty())
     write_placements_file(p.placements_output,
@@ -437,7 +441,7 @@ FilterSpec plate_job_filter() {
                            "direct_members", "encoding_cached", "arrange_seconds", "read_seconds", "slicing_seconds",
                            "seconds", "support_seconds", "area_used_*", "output_*", "layout_*", "direct_reason_*",
                            "sliced_directly_*", "support_points_*", "kept_*", "moved_*", "added_*", "dropped_*",
-                           "label_height_mm_*"},
+                           "label_height_mm_*", "cavity_mm3", "cavity_mm3_*"},
                           true));
 }
 

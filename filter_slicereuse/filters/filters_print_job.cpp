@@ -15,6 +15,7 @@ struct PrintJobParams {
   JobSupports supports;
   JobChecks checks;
   JobLabels labels;
+  JobHollowing hollowing;
   std::string contour_file;
   std::string output_path;
   PrinterSettings printer;
@@ -30,6 +31,7 @@ ParamList<PrintJobParams> print_job_params() {
       .include(&PrintJobParams::supports, job_support_params())
       .include(&PrintJobParams::checks, job_check_params())
       .include(&PrintJobParams::labels, job_label_params())
+      .include(&PrintJobParams::hollowing, job_hollowing_params())
       .file(&PrintJobParams::contour_file, ParamType::FileSave, "contour_file", "Contour file", "*.ctr *.srb", nullptr,
             "Also write the layers' contour points here (text .ctr unless the name ends in .srb). Empty (the "
             "default): no contour file.");
@@ -52,6 +54,7 @@ Result run_print_job(const PrintJobParams& p, Host& host) {
   const Progress progress = host.progress();
   PlateJobOptions o = plate_job_options(p.layers);
   set_job_checks(p.checks, o);
+  set_job_hollowing(p.hollowing, o);
   o.names = {p.mesh_file.empty() ? "the current mesh" : job.name};
   set_job_labels(p.labels, {job.name}, o);
   bool cached = false;
@@ -115,6 +118,7 @@ Result run_print_job(const PrintJobParams& p, Host& host) {
   add_display_figures(st.masks, result);
   report_printability(host, "Make Print Job", "", st, o.names, false, result);
   report_labels(host, "Make Print Job", o, st, o.names, false, result);
+  report_hollowing(host, "Make Print Job", "", st, o.names, false, result);
   return result;
 }
 
@@ -156,7 +160,7 @@ FilterSpec print_job_filter() {
                       with_printability_keys(with_display_keys({"layers", "points", "transferred_layers", "resliced_layers", "encoding_cached",
                                          "layer_ranges", "reused", "direct_reason", "output_path", "support_points", "kept",
                                          "moved", "added", "dropped", "read_seconds", "slicing_seconds", "support_seconds",
-                                         "masks_seconds", "seconds", "label_height_mm"}),
+                                         "masks_seconds", "seconds", "label_height_mm", "cavity_mm3"}),
                                              false));
 }
 

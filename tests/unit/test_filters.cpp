@@ -210,7 +210,8 @@ TEST_F(FiltersThroughAFakeHost, EveryFilterRunsAndReturnsEveryFigureItLogs) {
   job_keys.insert({"layers", "points", "transferred_layers", "resliced_layers", "encoding_cached", "layer_ranges",
                    "reused", "direct_reason", "output_path", "support_points", "kept", "moved", "added", "dropped",
                    "read_seconds", "slicing_seconds", "support_seconds", "masks_seconds", "seconds", "islands",
-                   "overhangs", "resin_traps", "suction_cups", "touching_bounds", "trapped_mm3", "label_height_mm"});
+                   "overhangs", "resin_traps", "suction_cups", "touching_bounds", "trapped_mm3", "label_height_mm",
+                   "cavity_mm3"});
   EXPECT_EQ(keys_of(job), job_keys);
   EXPECT_EQ(std::get<double>(job.at("label_height_mm")), -1);  // no labels
   // A sphere on the plate: every layer rests on the one below, nothing holds air.
@@ -343,7 +344,7 @@ TEST_F(FiltersThroughAFakeHost, MakePlateJobPutsTheShownMeshesOnPlatesAndReadsIt
                                                    "resliced_layers", "direct_members", "encoding_cached",
                                                    "arrange_seconds", "read_seconds", "slicing_seconds",
                                                    "support_seconds", "seconds", "area_used_1", "output_1",
-                                                   "layout_1", "islands", "overhangs", "resin_traps", "suction_cups",
+                                                   "layout_1", "cavity_mm3", "islands", "overhangs", "resin_traps", "suction_cups",
                                                    "touching_bounds", "trapped_mm3", "islands_mesh0", "overhangs_mesh0",
                                                    "resin_traps_mesh0", "suction_cups_mesh0", "touching_bounds_mesh0",
                                                    "islands_mesh1", "overhangs_mesh1", "resin_traps_mesh1",
@@ -531,6 +532,37 @@ TEST_F(FiltersThroughAFakeHost, JobsCountFindingsPerMemberAndRefuseThemWhenRequi
       job_spec.run(defaults(job_spec, {{"output_path", path("u.goo")}}, {{"check_printability", 0}}), host);
   EXPECT_EQ(count(unchecked, "islands"), -1);
   EXPECT_EQ(std::get<double>(unchecked.at("trapped_mm3")), -1.0);
+}
+
+// hollow_wall_mm hollows each member of a plate or print job: a solid box 10 x 10 x 6 mm with
+// walls of 1 mm (no closing) holds a cavity of 8 x 8 x 4 mm, sealed, so one resin trap of its
+// volume; walls thicker than the part leave it solid, and the log says so.
+TEST_F(FiltersThroughAFakeHost, JobsHollowTheirMembers) {
+  FakeHost host;
+  host.meshes = {test::make_box(-5, -5, 0, 5, 5, 6), test::make_box(8, -5, 0, 18, 5, 2)};
+  const FilterSpec& plate_spec = spec_named("make_plate_job");
+  const Result plate = plate_spec.run(
+      defaults(plate_spec, {{"output_path", path("plate.goo")}}, {{"hollow_wall_mm", 1}, {"hollow_closing_mm", 0}}),
+      host);
+  EXPECT_NEAR(std::get<double>(plate.at("cavity_mm3_mesh0")), 8 * 8 * 4, 1e-6);
+  EXPECT_EQ(std::get<double>(plate.at("cavity_mm3_mesh1")), 0);
+  EXPECT_NEAR(std::get<double>(plate.at("cavity_mm3")), 8 * 8 * 4, 1e-6);
+  EXPECT_EQ(count(plate, "resin_traps"), 1);
+  EXPECT_EQ(count(plate, "resin_traps_mesh0"), 1);
+  EXPECT_NE(std::find(host.lines.begin(), host.lines.end(),
+                      "Make Plate Job: plate 1: mesh1 stays solid: no cavity with walls of 1 mm, since no ball of 1 mm "
+                      "radius fits inside it"),
+            host.lines.end());
+
+  const FilterSpec& job_spec = spec_named("make_print_job");
+  const Result hollow =
+      job_spec.run(defaults(job_spec, {{"output_path", path("job.goo")}}, {{"hollow_wall_mm", 1}, {"hollow_closing_mm", 0}}),
+                   host);
+  EXPECT_NEAR(std::get<double>(hollow.at("cavity_mm3")), 8 * 8 * 4, 1e-6);
+  EXPECT_EQ(count(hollow, "resin_traps"), 1);
+  const Result solid = job_spec.run(defaults(job_spec, {{"output_path", path("solid.goo")}}), host);
+  EXPECT_EQ(std::get<double>(solid.at("cavity_mm3")), 0);
+  EXPECT_EQ(count(solid, "resin_traps"), 0);
 }
 
 TEST_F(FiltersThroughAFakeHost, ACustomPrinterChoosesTheCtbVersionAndTheEncryptedOneIsRefused) {

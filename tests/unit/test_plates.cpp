@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "error_of.h"
@@ -862,6 +863,11 @@ TEST_F(PlateJobTest, ALabelThatFitsNowhereFailsTheJobUnlessAllowedUnlabelled) {
   const std::vector<Mesh> thin{test::make_box(-3, -3, 0, 3, 3, 5, 2), test::make_box(10, -3, 0, 40, 12, 2, 2)};
   EXPECT_ERROR(export_plate(thin, o, display(500, 400), path("r.sl1")),
                "the label 'B' does not fit big: big is 2 mm tall, and a label 3 mm deep needs 4 mm");
+  // Hollowed, the letters keep 1 mm from the cavity, which lies at least the wall above the base.
+  o.hollowing.wall_mm = 3;
+  EXPECT_ERROR(export_plate(placed, o, display(500, 400), path("s.sl1")),
+               "labels 3 mm deep would come within 1 mm of the cavity behind walls of 3 mm: make them at most 2 mm "
+               "deep, or the walls at least 4 mm");
 }
 
 TEST_F(PlateJobTest, CancellingAPlateLeavesNothing) {
@@ -1035,4 +1041,202 @@ TEST(PlateJob, RefusesNoMembersAnEncodingWithoutThicknessAndAStartAboveEveryMemb
             }),
             "no layers: z_start 5 mm is not below the top of any member at z = 2 mm");
   EXPECT_FALSE(std::filesystem::exists("/tmp/never"));
+}
+
+// The thinnest wall of a hollowed PNG stack, measured on its masks in 3-D: the least distance
+// from a cavity pixel's centre (unlit, enclosed in its layer) to an outside pixel's (unlit,
+// joined to the image's border in its layer) of any layer, or to the empty layers beyond the
+// stack, pixel mm wide and layer mm apart; limit when nothing is nearer. Also the cavity's volume.
+struct WallMeasure {
+  double thinnest_mm = INFINITY;
+  double cavity_mm3 = 0;
+};
+
+// Squared distance (in pixels) of each pixel to the nearest pixel set in `from` (exact, two 1-D
+// lower envelopes of parabolas, Felzenszwalb and Huttenlocher).
+std::vector<double> squared_distances(const std::vector<char>& from, int w, int h) {
+  const double far = 1e18;
+  std::vector<double> d(size_t(w) * h);
+  for (size_t i = 0; i < d.size(); ++i) d[i] = from[i] ? 0 : far;
+  const auto pass = [](std::vector<double>& f, size_t n, size_t stride, size_t start) {
+    std::vector<double> g(n), z(n + 1);
+    std::vector<size_t> v(n);
+    for (size_t q = 0; q < n; ++q) g[q] = f[start + q * stride];
+    size_t k = 0;
+    v[0] = 0, z[0] = -1e30, z[1] = 1e30;
+    for (size_t q = 1; q < n; ++q) {
+      double s;
+      while (true) {
+        s = ((g[q] + double(q * q)) - (g[v[k]] + double(v[k] * v[k]))) / (2.0 * double(q) - 2.0 * double(v[k]));
+        if (s <= z[k] && k > 0) --k;
+        else break;
+      }
+      if (s <= z[k]) {  // k == 0: q replaces it
+        v[0] = q;
+        z[1] = 1e30;
+        continue;
+      }
+      ++k, v[k] = q, z[k] = s, z[k + 1] = 1e30;
+    }
+    k = 0;
+    for (size_t q = 0; q < n; ++q) {
+      while (z[k + 1] < double(q)) ++k;
+      const double dq = double(q) - double(v[k]);
+      f[start + q * stride] = dq * dq + g[v[k]];
+    }
+  };
+  for (int y = 0; y < h; ++y) pass(d, size_t(w), 1, size_t(y) * w);
+  for (int x = 0; x < w; ++x) pass(d, size_t(h), size_t(w), size_t(x));
+  return d;
+}
+
+WallMeasure measure_walls(MaskStack& stack, double pixel_mm, double layer_mm, double limit_mm) {
+  std::vector<std::vector<char>> outside, cavity;
+  int w = 0, h = 0;
+  for (size_t k = 0; k < stack.layers(); ++k) {
+    std::vector<uint8_t> bytes;
+    stack.read(k, bytes);
+    MaskImage img;
+    decode_mask_png(bytes.data(), bytes.size(), stack.layer_name(k), img);
+    w = img.width, h = img.height;
+    std::vector<char> out(img.pixels.size(), 0);
+    std::vector<size_t> todo;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        if ((x == 0 || y == 0 || x == w - 1 || y == h - 1) && img.pixels[size_t(y) * w + x] < 128) {
+          out[size_t(y) * w + x] = 1;
+          todo.push_back(size_t(y) * w + x);
+        }
+    while (!todo.empty()) {
+      const size_t i = todo.back();
+      todo.pop_back();
+      const int x = int(i % size_t(w)), y = int(i / size_t(w));
+      for (auto [nx, ny] : {std::pair{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}}) {
+        if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+        const size_t j = size_t(ny) * w + nx;
+        if (!out[j] && img.pixels[j] < 128) out[j] = 1, todo.push_back(j);
+      }
+    }
+    std::vector<char> hole(img.pixels.size(), 0);
+    for (size_t i = 0; i < hole.size(); ++i) hole[i] = img.pixels[i] < 128 && !out[i];
+    outside.push_back(std::move(out));
+    cavity.push_back(std::move(hole));
+  }
+  std::vector<std::vector<double>> d2;
+  for (const auto& o : outside) d2.push_back(squared_distances(o, w, h));
+  WallMeasure m;
+  m.thinnest_mm = limit_mm;
+  const long L = long(stack.layers()), reach = long(std::ceil(limit_mm / layer_mm));
+  for (long k = 0; k < L; ++k)
+    for (size_t i = 0; i < cavity[size_t(k)].size(); ++i) {
+      if (!cavity[size_t(k)][i]) continue;
+      m.cavity_mm3 += pixel_mm * pixel_mm * layer_mm;
+      for (long j = k - reach; j <= k + reach; ++j) {
+        const double dz = double(j - k) * layer_mm;
+        const double planar2 = j < 0 || j >= L ? 0 : d2[size_t(j)][i] * pixel_mm * pixel_mm;
+        m.thinnest_mm = std::min(m.thinnest_mm, std::sqrt(planar2 + dz * dz));
+      }
+    }
+  return m;
+}
+
+// A hollowed solid box (direct slicing, 0.1 mm layers and pixels, walls of 1 mm): its cavity is
+// the box shrunk by 1 mm, sealed, so the printability check finds exactly one resin trap of its
+// volume, and its walls measure 1 mm on the masks in 3-D. So do a sphere's, whose walls all
+// slope: a 2-D offset per layer would thin them.
+TEST_F(PlateJobTest, AHollowedBoxIsOneResinTrapOfItsCavityAndItsWallsKeepTheThickness) {
+  Mesh sphere = test::make_sphere(5, 40, 80);
+  for (size_t v = 2; v < sphere.V.size(); v += 3) sphere.V[v] += 5;
+  for (const auto& [mesh, name, cavity] :
+       {std::tuple{test::make_box(-5, -4, 0, 5, 4, 6), "box", 8.0 * 6 * 4}, {sphere, "sphere", 4 * M_PI / 3 * 64}}) {
+    SCOPED_TRACE(name);
+    PlateJobOptions o;
+    o.slicing.thickness = 0.1;
+    o.check_printability = true;
+    o.hollowing.wall_mm = 1;
+    o.hollowing.closing_mm = 0;
+    const PlateJobStats st = export_plate({mesh}, o, display(800, 600), path(name));
+    ASSERT_EQ(st.cavity_mm3.size(), 1u);
+    EXPECT_NEAR(st.cavity_mm3[0], cavity, cavity * 0.01);  // a sphere's facets: within a per cent
+    EXPECT_EQ(st.hollowing_notes[0], "");
+    ASSERT_EQ(st.printability.count(FindingKind::ResinTrap), 1u);
+    for (const Finding& f : st.printability.findings)
+      if (f.kind == FindingKind::ResinTrap) {
+        EXPECT_EQ(f.first_layer, 10u);
+        EXPECT_EQ(f.last_layer, std::string(name) == "box" ? 49u : 89u);
+        if (std::string(name) == "box") EXPECT_NEAR(f.volume_mm3, cavity, 1e-6);  // pixel edges on its edges
+        else EXPECT_NEAR(f.volume_mm3, st.cavity_mm3[0], 0.5 * 0.1 * 4 * M_PI * 16);  // half a pixel over its surface
+      }
+    MaskStack stack(path(name));
+    const WallMeasure walls = measure_walls(stack, 0.1, 0.1, 3);
+    EXPECT_GE(walls.thinnest_mm, 1 - 0.1);
+    EXPECT_LE(walls.thinnest_mm, 1 + 0.1 + 1e-9);
+    EXPECT_NEAR(walls.cavity_mm3, st.printability.findings[0].volume_mm3, 1e-6);
+  }
+  // Walls thicker than half the part leave it solid, and the stats say so in words.
+  PlateJobOptions o;
+  o.slicing.thickness = 0.1;
+  o.names = {"slab"};
+  o.hollowing.wall_mm = 2;
+  const PlateJobStats st = export_plate({test::make_box(-5, -4, 0, 5, 4, 3)}, o, display(800, 600), path("slab"));
+  EXPECT_EQ(st.cavity_mm3[0], 0);
+  EXPECT_EQ(st.hollowing_notes[0],
+            "slab stays solid: no cavity with walls of 2 mm and a closing distance of 2 mm, since no ball of 4 mm "
+            "radius fits inside it");
+  o.hollowing.wall_mm = -0.5;
+  EXPECT_EQ(test::error_of([&] { export_plate({test::make_box(-5, -4, 0, 5, 4, 3)}, o, display(800, 600), path("bad")); }),
+            "the hollowing wall thickness is -0.5 mm; it must be a finite, non-negative number (0: solid)");
+  EXPECT_FALSE(std::filesystem::exists(path("bad")));
+}
+
+// Reused and direct hollowed plates give identical masks, made where drawn, in ranges and in one, with
+// the elephant-foot compensation (after the hollowing) and anti-aliasing: the cavity is computed
+// from the member's layers, which reuse makes equal to direct slicing's.
+TEST_F(PlateJobTest, ReusedHollowedMembersEqualDirectSlicing) {
+  test::FamilyOptions fo;
+  fo.shape = "sphere";
+  fo.faces = 3000;
+  fo.height = 7;
+  const Mesh base = test::make_family_base(fo);
+  const std::vector<Mesh> members = {test::make_family_member(base, fo, 1), test::make_family_member(base, fo, 2)};
+  PrinterProfile profile = display(500, 400);
+  profile.elephant_foot_mm = 0.2;
+  profile.antialiasing = true;
+  const std::vector<Mesh> placed = placed_on_one_plate(members, {"a", "b"}, profile);
+  ASSERT_EQ(placed.size(), 2u);
+  SliceOptions so;
+  so.thickness = 0.1;
+  const Slices encoding = slice_layers(base, so);
+  PlateJobOptions direct;
+  direct.slicing = so;
+  direct.slicing.z_start = encoding.z_start;
+  direct.hollowing.wall_mm = 1;
+  direct.hollowing.closing_mm = 0.5;
+  PlateJobOptions reuse = direct;
+  reuse.encoding = &encoding;
+  const PlateJobStats d = export_plate(placed, direct, profile, path("direct"));
+  const PlateJobStats r = export_plate(placed, reuse, profile, path("reuse"));
+  EXPECT_EQ(r.ranges, 0u);
+  EXPECT_GT(r.transferred_layers, 0u);
+  // In ranges (slicing directly within a tiny budget) and in one (reusing for a contour file).
+  PlateJobOptions ranges = direct;
+  ranges.range_budget_bytes = 50000;
+  EXPECT_GT(export_plate(placed, ranges, profile, path("direct_ranges")).ranges, 4u);
+  size_t seen = 0;
+  reuse.whole_stack = [&](const std::vector<SlicePart>& parts) { seen = parts.size(); };
+  EXPECT_EQ(export_plate(placed, reuse, profile, path("reuse_whole")).ranges, 1u);
+  EXPECT_EQ(seen, 2u);
+  for (size_t m = 0; m < 2; ++m) {
+    EXPECT_GT(d.cavity_mm3[m], 10);
+    EXPECT_EQ(r.cavity_mm3[m], d.cavity_mm3[m]);
+  }
+  for (const char* other : {"reuse", "direct_ranges", "reuse_whole"}) {
+    const StackComparison c = compare_mask_stacks(path("direct"), path(other), "");
+    EXPECT_EQ(c.differing_pixels, 0u) << other;
+  }
+  // And the hollowed plate is not the solid one.
+  PlateJobOptions solid = direct;
+  solid.hollowing.wall_mm = 0;
+  export_plate(placed, solid, profile, path("solid"));
+  EXPECT_GT(compare_mask_stacks(path("direct"), path("solid"), "").differing_pixels, 1000u);
 }

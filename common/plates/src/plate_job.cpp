@@ -9,6 +9,7 @@
 #include <mutex>
 
 #include "engrave_labels.h"
+#include "slicereuse/hollowing/hollow_layers.h"
 #include "slicereuse/plates/faded_layers.h"
 #include "slicereuse/slicing/layer_chunks.h"
 #include "slicereuse/slicing/layer_planes.h"
@@ -61,6 +62,7 @@ struct PlateMember {
   std::vector<double> planes;  // without a transfer
   DirectLayers direct;         // made where drawn: its layers sliced beforehand
   size_t offset = 0;           // the plate layer of its layer 0
+  std::vector<ClipperLib::Paths> cavity;  // hollowed: each of its layers' cavity; else empty
   bool support = false;
   size_t owner = 0;            // the member it is, or whose support it is
 
@@ -202,6 +204,37 @@ std::vector<PlateMember> prepare_members(const std::vector<Mesh>& placed, const 
   return members;
 }
 
+// With o.hollowing, each member's cavity from all its layers, made as its masks' are (by its
+// transfer or sliced directly on its planes), one member at a time on all cores; its volume, or
+// why there is none, into st. Supports stay solid.
+void hollow_members(std::vector<PlateMember>& members, const PlateJobOptions& o, PlateJobStats& st,
+                    const Progress& progress) {
+  const size_t n = st.direct_reasons.size();
+  st.cavity_mm3.assign(n, 0);
+  st.hollowing_notes.assign(n, "");
+  if (o.hollowing.wall_mm == 0) return;
+  const auto t = std::chrono::steady_clock::now();
+  for (size_t m = 0; m < n; ++m) {
+    PlateMember& p = members[m];
+    const Progress mp = sub_progress(progress, double(m) / double(n), double(m + 1) / double(n));
+    Slices layers = p.transfer ? p.transfer->layers(0, p.layers(), nullptr, sub_progress(mp, 0, 0.2))
+                               : slice_planes(*p.mesh, p.planes, sub_progress(mp, 0, 0.2), false);
+    layers.thickness = st.thickness;
+    p.cavity = layers_cavity(layers, o.hollowing, sub_progress(mp, 0.2, 1));
+    st.cavity_mm3[m] = cavity_volume_mm3(p.cavity, st.thickness);
+    if (st.cavity_mm3[m] == 0) {
+      p.cavity.clear();
+      st.hollowing_notes[m] =
+          format("%s stays solid: no cavity with walls of %g mm%s, since no ball of %g mm radius fits inside it",
+                 member_name(o, m).c_str(), o.hollowing.wall_mm,
+                 o.hollowing.closing_mm > 0 ? format(" and a closing distance of %g mm", o.hollowing.closing_mm).c_str()
+                                            : "",
+                 o.hollowing.wall_mm + o.hollowing.closing_mm);
+    }
+  }
+  st.hollowing_seconds = seconds_since(t);
+}
+
 // The plate's layers [a, b) as parts (export_masks.h), one per member that has any of them, each
 // by its transfer or sliced directly: the masks draw each member's layers where they are.
 std::vector<SlicePart> plate_range(const std::vector<PlateMember>& members, const PlateFrame& f, size_t a, size_t b,
@@ -225,6 +258,7 @@ std::vector<SlicePart> plate_range(const std::vector<PlateMember>& members, cons
       (p.support ? st.support_layers : st.resliced_layers) += je - ja;
     }
     Slices& made = parts.back().slices;
+    if (!p.cavity.empty()) subtract_cavity(made, ja, p.cavity);
     made.z_start = f.bottom(lo);
     made.thickness = f.thickness;
     st.points += made.points();
@@ -253,6 +287,8 @@ void engrave_parts(std::vector<SlicePart>& parts, size_t a, size_t b, const std:
   }
 }
 
+constexpr double kLabelSkinMm = 1;  // of the part between a label's letters and a cavity, at least
+
 // Each labelled member's label placed on its base (base_label.h), from its own first layers; a
 // label that fits nowhere fails the job, or with allow_unlabelled leaves the member unlabelled.
 std::vector<BaseLabel> base_labels(const std::vector<PlateMember>& members, size_t count, const PlateJobOptions& o,
@@ -261,6 +297,13 @@ std::vector<BaseLabel> base_labels(const std::vector<PlateMember>& members, size
   if (o.labels.empty()) return labels;
   if (o.labels.size() != count)
     throw Error(format("a plate of %zu members was given %zu labels: one (or \"\") per member", count, o.labels.size()));
+  // The cavity lies at least the wall above the base: letters deeper than the wall less 1 mm
+  // would open into it, or leave a skin over it.
+  if (o.hollowing.wall_mm > 0 && o.label.depth_mm > o.hollowing.wall_mm - kLabelSkinMm)
+    throw Error(format("labels %g mm deep would come within %g mm of the cavity behind walls of %g mm: make them at most "
+                       "%g mm deep, or the walls at least %g mm",
+                       o.label.depth_mm, kLabelSkinMm, o.hollowing.wall_mm, o.hollowing.wall_mm - kLabelSkinMm,
+                       o.label.depth_mm + kLabelSkinMm));
   labels.resize(count);
   st.label_heights_mm.assign(count, 0);
   st.label_places.assign(count, {0, 0, 0});
@@ -334,22 +377,22 @@ class MadeWhereDrawn {
       Slices& out = parts[used++].slices;
       supports += p.support;
       const DirectLayers* d = &p.direct;
-      if (d->at[j] == kNotDirect) {
-        if (p.transfer->layer_into(j, out)) {
-          ++transferred;
-          points += out.points();
-          continue;
+      if (d->at[j] == kNotDirect && p.transfer->layer_into(j, out)) {
+        ++transferred;
+      } else {
+        if (d->at[j] == kNotDirect) {
+          std::call_once(late_once_[m], [&] { late_[m] = late_layers(p); });
+          d = &late_[m];
+          if (d->at[j] == kNotDirect)
+            throw Error(format("internal error: layer %zu of plate member %zu failed its certificate once, not twice",
+                               j, m + 1));
         }
-        std::call_once(late_once_[m], [&] { late_[m] = late_layers(p); });
-        d = &late_[m];
-        if (d->at[j] == kNotDirect)
-          throw Error(format("internal error: layer %zu of plate member %zu failed its certificate once, not twice", j,
-                             m + 1));
+        layers_into(d->slices, d->at[j], d->at[j] + 1, out, true);
+        // Sliced directly, the part's z_start and thickness are not the plate's.
+        out.z_start = frame_.bottom(k);
+        out.thickness = frame_.thickness;
       }
-      layers_into(d->slices, d->at[j], d->at[j] + 1, out, true);
-      // Sliced directly, the part's z_start and thickness are not the plate's.
-      out.z_start = frame_.bottom(k);
-      out.thickness = frame_.thickness;
+      if (!p.cavity.empty()) subtract_cavity(out, j, p.cavity);
       points += out.points();
     }
     parts.resize(used);
@@ -469,6 +512,7 @@ struct PlateChecks {
 PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOptions& o, const PrinterProfile& profile,
                            const std::string& output_path, const Progress& progress) {
   PlateJobStats st;
+  check_hollowing(o.hollowing);
   std::vector<PlateMember> members = prepare_members(placed, o, st);
   const PlateFrame frame{st.z_start, st.thickness, o.layers_below};
   size_t L = 0;
@@ -480,6 +524,9 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
                        placed.size() == 1 ? "the mesh" : "any member", top));
   }
   st.layers = L;
+  const bool hollowing = o.hollowing.wall_mm > 0;
+  hollow_members(members, o, st, sub_progress(progress, 0, hollowing ? 0.3 : 0));
+  const Progress rest = sub_progress(progress, hollowing ? 0.3 : 0, 1);
   const uint64_t budget = o.whole_stack ? 0 : range_budget(o);
   const PlateChecks checks(members, placed.size(), o, profile, st);
   const std::vector<BaseLabel> labels = base_labels(members, placed.size(), o, st);
@@ -494,7 +541,7 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
     }
     if (direct_points * kPointBytes <= budget) {
       const double share = direct_points > 0 ? 0.1 : 0;  // of the progress, for the direct slicing
-      MadeWhereDrawn made(members, frame, sub_progress(progress, 0, share));
+      MadeWhereDrawn made(members, frame, sub_progress(rest, 0, share));
       st.ranges = 0;
       const std::vector<size_t> objects = object_layers(members);
       st.masks = export_masks(LayerMaker{L, st.thickness, [&](size_t k, std::vector<SlicePart>& parts) {
@@ -503,7 +550,7 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
                                            compensate_faded_layers(parts, k, part_owners(members, k, k + 1), objects,
                                                                    profile, false);
                                          }},
-                              profile, output_path, sub_progress(progress, share, 1), checks.get());
+                              profile, output_path, sub_progress(rest, share, 1), checks.get());
       made.stats(st);
       return st;
     }
@@ -527,7 +574,7 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
                                                objects, profile, true);
                        return parts;
                      }};
-  st.masks = export_masks(chunks, profile, output_path, progress, checks.get());
+  st.masks = export_masks(chunks, profile, output_path, rest, checks.get());
   return st;
 }
 

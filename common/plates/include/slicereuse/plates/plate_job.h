@@ -23,6 +23,14 @@
 // member is) is sliced directly on the plate's planes from layer 0 up to its top, with no
 // encoding, and its layers follow the members' in each layer: the nonzero rule fills the union
 // of part and support where they meet.
+// Hollowing (options.hollowing.wall_mm > 0): each member's cavity (hollow_layers.h: a 3-D
+// erosion of its layers by the wall thickness, then PrusaSlicer's closing) is computed from all
+// its layers, made as its masks' are (so a reused member's cavity is its direct slicing's), and
+// taken out of its layers before anything else sees them (whole_stack, the elephant-foot
+// compensation, which then shrinks the cavity's walls too, as PrusaSlicer's order does, and the
+// masks); supports stay solid. The cavity is sealed: the printability check reports it as a
+// resin trap until drain holes open it. A member too thin for any cavity stays solid, and
+// stats.hollowing_notes says so.
 // Elephant foot (profile.elephant_foot_mm > 0): each member's faded layers, counted from the
 // plate's layer 0 (its pad's bottom) and compensated with its supports together, apart from the
 // other members, are replaced by compensate_faded_layers' contours (faded_layers.h: the full
@@ -44,14 +52,15 @@
 // 256 MB, so that a plate fills little fresh memory. Every way gives the same masks.
 // Output: the print file of the profile (export_masks: PNG folder, .sl1, .sl1s, .goo), atomic, and
 // the figures. Throws Error for no members, an encoding without a layer thickness, a member of
-// another family with strict, supports not one per member, or whatever transfer, slicing or
-// export refuse.
+// another family with strict, supports not one per member, hollowing options that are negative
+// or not finite, or whatever transfer, slicing or export refuse.
 #include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
 
+#include "slicereuse/hollowing/cavity.h"
 #include "slicereuse/mesh/mesh.h"
 #include "slicereuse/printability/printability_report.h"
 #include "slicereuse/printfiles/export_masks.h"
@@ -89,8 +98,8 @@ struct PlateJobOptions {
   // The members' names for messages (a strict refusal); empty: "member 1", "member 2", ...
   std::vector<std::string> names;
   // When set, the plate is made in one range and this sees its parts (one per member with
-  // layers, then one per support) before their masks are drawn (labelled, and before the
-  // elephant-foot compensation): a print job's contour file.
+  // layers, then one per support) before their masks are drawn (hollowed and labelled, before
+  // the elephant-foot compensation): a print job's contour file.
   std::function<void(const std::vector<SlicePart>& parts)> whole_stack;
   // Per member (placed like it), its support structure, or null; empty: none.
   std::vector<const Mesh*> supports;
@@ -109,6 +118,8 @@ struct PlateJobOptions {
   std::vector<std::string> labels;
   LabelOptions label;
   bool allow_unlabelled = false;
+  // Each member hollowed with walls of hollowing.wall_mm (0: solid) and its closing distance.
+  HollowingOptions hollowing;
 };
 
 // Where a finding of the plate's printability lies: the member (an index into placed) whose
@@ -133,6 +144,11 @@ struct PlateJobStats {
   // Per member: why it was sliced directly although an encoding was given ("" when reused, and
   // for every member of a plate sliced directly by choice).
   std::vector<std::string> direct_reasons;
+  // With options.hollowing: per member, its cavity's volume (mm^3), and "" or why it has none;
+  // the cavities' computation, members' layers included, in seconds.
+  std::vector<double> cavity_mm3;
+  std::vector<std::string> hollowing_notes;
+  double hollowing_seconds = 0;
   MaskExportStats masks;
   // With options.check_printability: the report, and each finding's place (one per finding).
   bool checked = false;

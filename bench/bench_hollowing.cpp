@@ -1,0 +1,76 @@
+// Hollowing benchmark: a generated part sliced directly, then its cavity (cavity_regions) from its
+// layers' regions. Prints the part's layers and points, the cavity's volume, and the median
+// seconds of the cavity in all and per layer (the layers' regions made beforehand, not counted),
+// wall and CPU (all threads': on a busy machine the steadier figure, and PrusaSlicer's user time's
+// match).
+// Usage: bench_hollowing [--shape sphere] [--faces 200000] [--height 35] [--thickness 0.05]
+//                        [--wall 2] [--closing 2] [--runs 3]
+#include <omp.h>
+
+#include <chrono>
+#include <ctime>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "bench_args.h"
+#include "family.h"
+#include "slicereuse/hollowing/cavity.h"
+#include "slicereuse/regions/layer_region.h"
+#include "slicereuse/slicing/slice_layers.h"
+
+using namespace slicereuse;
+
+int main(int argc, char** argv) {
+  HollowingOptions hollowing;
+  hollowing.wall_mm = 2;
+  std::vector<char*> rest{argv[0]};
+  for (int i = 1; i < argc; ++i) {
+    const std::string k = argv[i];
+    if ((k == "--wall" || k == "--closing") && i + 1 < argc)
+      (k == "--wall" ? hollowing.wall_mm : hollowing.closing_mm) = std::atof(argv[++i]);
+    else
+      rest.push_back(argv[i]);
+  }
+  char* defaults[] = {argv[0], (char*)"--shape", (char*)"sphere", (char*)"--faces", (char*)"200000",
+                      (char*)"--height", (char*)"35", (char*)"--thickness", (char*)"0.05", (char*)"--runs", (char*)"3"};
+  std::vector<char*> all(defaults, defaults + 11);
+  all.insert(all.end(), rest.begin() + 1, rest.end());
+  const BenchArgs args = parse_bench_args(int(all.size()), all.data());
+  const Mesh mesh = test::make_family_base(args.family);
+  SliceOptions options;
+  options.thickness = args.thickness;
+  const Slices s = slice_layers(mesh, options);
+  std::vector<ClipperLib::Paths> layers(s.layers());
+  for (size_t k = 0; k < s.layers(); ++k) layers[k] = layer_region(LayerView(s, k));
+  std::vector<double> seconds, cpu;
+  std::vector<ClipperLib::Paths> cavity;
+  for (int r = 0; r < args.runs; ++r) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::clock_t c0 = std::clock();
+    cavity = cavity_regions(layers, s.thickness, hollowing);
+    cpu.push_back(double(std::clock() - c0) / CLOCKS_PER_SEC);
+    seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  double part = 0, hollow = 0;
+  size_t cavity_points = 0;
+  for (size_t k = 0; k < s.layers(); ++k) {
+    part += region_area_mm2(layers[k]) * s.thickness;
+    hollow += region_area_mm2(cavity[k]) * s.thickness;
+    for (const auto& p : cavity[k]) cavity_points += p.size();
+  }
+  const double median = median_of(seconds);
+  std::printf("shape %s, height %g mm, layers of %g mm, wall %g mm, closing %g mm, threads %d\n",
+              args.family.shape.c_str(), args.family.height, args.thickness, hollowing.wall_mm,
+              hollowing.closing_mm, omp_get_max_threads());
+  const double cpu_median = median_of(cpu);
+  std::printf("%9s %7s %9s %10s %10s %8s %9s %9s %12s\n", "faces", "layers", "points", "part mm3", "cavity mm3",
+              "saved", "seconds", "CPU s", "CPU ms/layer");
+  std::printf("%9zu %7zu %9zu %10.1f %10.1f %7.1f%% %9.3f %9.3f %12.3f\n", mesh.faces(), s.layers(), s.points(), part,
+              hollow, 100 * hollow / part, median, cpu_median, 1e3 * cpu_median / double(s.layers()));
+  std::printf("cavity points %zu; runs:", cavity_points);
+  for (double t : seconds) std::printf(" %.3f", t);
+  std::printf("\n");
+  return 0;
+}

@@ -1,0 +1,72 @@
+#include "slicereuse/hollowing/hollow_layers.h"
+
+#include "slicereuse/regions/layer_region.h"
+#include "slicereuse/slicing/layer_view.h"
+#include "slicereuse/util/error.h"
+#include "slicereuse/util/format.h"
+#include "slicereuse/util/parallel_blocks.h"
+
+namespace slicereuse {
+
+std::vector<ClipperLib::Paths> layers_cavity(const Slices& s, const HollowingOptions& options,
+                                             const Progress& progress) {
+  check_hollowing(options);
+  if (options.wall_mm == 0) return std::vector<ClipperLib::Paths>(s.layers());
+  std::vector<ClipperLib::Paths> regions(s.layers());
+  parallel_blocks(s.layers(), [&](size_t k) { regions[k] = layer_region(LayerView(s, k)); },
+                  sub_progress(progress, 0, 0.1), "hollowing");
+  return cavity_regions(regions, s.thickness, options, sub_progress(progress, 0.1, 1));
+}
+
+void subtract_cavity(Slices& s, size_t first, const std::vector<ClipperLib::Paths>& cavity) {
+  const size_t n = s.layers();
+  if (first + n > cavity.size())
+    throw Error(format("internal error: layers %zu-%zu hollowed with a cavity of %zu layers", first, first + n,
+                       cavity.size()));
+  bool any = false;
+  for (size_t i = 0; i < n && !any; ++i) any = !cavity[first + i].empty();
+  if (!any) return;
+  Slices out;
+  out.z_start = s.z_start;
+  out.thickness = s.thickness;
+  out.fingerprint = s.fingerprint;
+  out.layer_z = s.layer_z;
+  out.layer_begin = {0};
+  out.contour_begin = {0};
+  Buffer<double>& xyz = out.xyz;
+  xyz.reserve(s.xyz.size());
+  for (size_t i = 0; i < n; ++i) {
+    const ClipperLib::Paths& hole = cavity[first + i];
+    if (hole.empty()) {
+      for (uint64_t c = s.layer_begin[i]; c < s.layer_begin[i + 1]; ++c) {
+        xyz.insert(xyz.end(), s.xyz.begin() + long(3 * s.contour_begin[c]),
+                   s.xyz.begin() + long(3 * s.contour_begin[c + 1]));
+        out.contour_begin.push_back(xyz.size() / 3);
+        out.contour_open.push_back(s.contour_open[c]);
+      }
+    } else {
+      ClipperLib::Clipper clipper;
+      clipper.AddPaths(layer_region(LayerView(s, i)), ClipperLib::ptSubject, true);
+      clipper.AddPaths(hole, ClipperLib::ptClip, true);
+      ClipperLib::Paths walls;
+      clipper.Execute(ClipperLib::ctDifference, walls, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+      for (const ClipperLib::Path& loop : walls) {
+        if (loop.size() < 3) continue;
+        for (const ClipperLib::IntPoint& q : loop)
+          xyz.insert(xyz.end(), {double(q.X) / kRegionScale, double(q.Y) / kRegionScale, s.layer_z[i]});
+        out.contour_begin.push_back(xyz.size() / 3);
+        out.contour_open.push_back(0);
+      }
+    }
+    out.layer_begin.push_back(out.contour_open.size());
+  }
+  s = std::move(out);
+}
+
+double cavity_volume_mm3(const std::vector<ClipperLib::Paths>& cavity, double thickness_mm) {
+  double v = 0;
+  for (const ClipperLib::Paths& layer : cavity) v += region_area_mm2(layer);
+  return v * thickness_mm;
+}
+
+}  // namespace slicereuse

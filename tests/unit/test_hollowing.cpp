@@ -1,0 +1,222 @@
+// Hollowing (cavity.h, hollow_layers.h): the cavity is the part eroded in 3-D by a ball of the
+// wall thickness, exactly on the layers' regions; bad options are refused in words.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "error_of.h"
+#include "family.h"
+#include "slicereuse/hollowing/cavity.h"
+#include "slicereuse/hollowing/hollow_layers.h"
+#include "slicereuse/regions/layer_region.h"
+#include "slicereuse/slicing/slice_layers.h"
+
+namespace slicereuse {
+namespace {
+
+using ClipperLib::Paths;
+
+// An axis-aligned rectangle as a region (counter-clockwise), in mm.
+Paths rectangle(double x0, double y0, double x1, double y1) {
+  return {{{region_units(x0), region_units(y0)},
+           {region_units(x1), region_units(y0)},
+           {region_units(x1), region_units(y1)},
+           {region_units(x0), region_units(y1)}}};
+}
+
+std::set<std::pair<ClipperLib::cInt, ClipperLib::cInt>> corners(const Paths& region) {
+  std::set<std::pair<ClipperLib::cInt, ClipperLib::cInt>> out;
+  for (const ClipperLib::Path& p : region)
+    for (const ClipperLib::IntPoint& q : p) out.insert({q.X, q.Y});
+  return out;
+}
+
+// A box 10 x 8 x 6 mm in 60 layers of 0.1 mm, walls of 1 mm: its cavity is exactly the box
+// shrunk by 1 mm on every side, z included (layers 10-49), and nothing elsewhere.
+TEST(Cavity, OfABoxIsExactlyTheBoxShrunkByTheWall) {
+  const std::vector<Paths> box(60, rectangle(0, 0, 10, 8));
+  HollowingOptions o;
+  o.wall_mm = 1;
+  o.closing_mm = 0;
+  const std::vector<Paths> cavity = cavity_regions(box, 0.1, o);
+  ASSERT_EQ(cavity.size(), 60u);
+  for (size_t k = 0; k < 60; ++k) {
+    SCOPED_TRACE(k);
+    if (k < 10 || k > 49) {
+      EXPECT_TRUE(cavity[k].empty());
+      continue;
+    }
+    ASSERT_EQ(cavity[k].size(), 1u);
+    EXPECT_EQ(corners(cavity[k]), corners(rectangle(1, 1, 9, 7)));
+  }
+  EXPECT_NEAR(cavity_volume_mm3(cavity, 0.1), 8 * 6 * 4, 1e-9);
+  // PrusaSlicer's closing distance opens the cavity: inside the unclosed one, its vertical edges
+  // rounded (radius 0.5 mm: a quarter disk less at each corner, sqrt(0.75) mm below the top).
+  o.closing_mm = 0.5;
+  const std::vector<Paths> closed = cavity_regions(box, 0.1, o);
+  const double corner_loss = (1 - M_PI / 4) * 0.25 * 4;
+  EXPECT_NEAR(region_area_mm2(closed[30]), 8 * 6 - corner_loss, 1e-3);
+  for (size_t k = 0; k < 60; ++k) {
+    ClipperLib::Clipper c;
+    c.AddPaths(closed[k], ClipperLib::ptSubject, true);
+    c.AddPaths(cavity[k], ClipperLib::ptClip, true);
+    Paths outside;
+    c.Execute(ClipperLib::ctDifference, outside, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    EXPECT_LT(std::abs(region_area_mm2(outside)), 1e-9) << "layer " << k;
+  }
+}
+
+// The half-width of a square frustum's layer k: 6 mm at the bottom, narrowing by 0.5 mm per mm
+// of height (its walls slope 63 degrees from the horizontal).
+double frustum_half(size_t k) { return 6 - 0.5 * (0.1 * double(k) + 0.05); }
+
+// The distance from (x, y) inside the frustum's layer j to its outside.
+double depth(size_t j, double x, double y) { return frustum_half(j) - std::max(std::abs(x), std::abs(y)); }
+
+// On a sloped part every cavity point lies at least the wall from every point outside, in 3-D:
+// its distance to each layer's outside and the height between them; a 2-D offset of each
+// layer by the wall (what a per-layer hollowing does) would come closer than that.
+TEST(Cavity, KeepsTheWallOnASlopeIn3D) {
+  const size_t n = 80;  // 8 mm
+  std::vector<Paths> frustum;
+  for (size_t k = 0; k < n; ++k) frustum.push_back(rectangle(-frustum_half(k), -frustum_half(k), frustum_half(k), frustum_half(k)));
+  HollowingOptions o;
+  o.wall_mm = 1.5;
+  o.closing_mm = 0;
+  const std::vector<Paths> cavity = cavity_regions(frustum, 0.1, o);
+  // Points farther than the wall from every layer's outside within it, in 3-D.
+  const auto clearance = [&](size_t k, double x, double y) {
+    double nearest = INFINITY;
+    for (size_t j = 0; j < n; ++j) {
+      const double dz = 0.1 * (double(j) - double(k)), d = std::max(0.0, depth(j, x, y));
+      nearest = std::min(nearest, std::sqrt(d * d + dz * dz));
+    }
+    return std::min({nearest, 0.1 * double(k) + 0.05, 0.1 * double(n - k) - 0.05});
+  };
+  size_t layers = 0;
+  for (size_t k = 0; k < n; ++k)
+    for (const ClipperLib::Path& p : cavity[k]) {
+      layers += &p == &cavity[k][0];
+      for (const ClipperLib::IntPoint& q : p)
+        EXPECT_GE(clearance(k, double(q.X) / kRegionScale, double(q.Y) / kRegionScale), 1.5 - 1e-6) << "layer " << k;
+    }
+  EXPECT_EQ(layers, n - 2 * 15);
+  // Layer 20's corner on the 2-D offset lies 1.5 mm inside its own layer but nearer to the
+  // layers above: the 3-D cavity stops short of it, by the slope.
+  const double corner = frustum_half(20) - 1.5;
+  EXPECT_LT(clearance(20, corner, 0), 1.5 - 0.1);
+  double widest = 0;
+  for (const ClipperLib::IntPoint& q : cavity[20][0]) widest = std::max(widest, double(q.X) / kRegionScale);
+  EXPECT_LT(widest, corner - 0.1);
+}
+
+Paths clipped(const Paths& a, const Paths& b, ClipperLib::ClipType type) {
+  ClipperLib::Clipper c;
+  c.AddPaths(a, ClipperLib::ptSubject, true);
+  c.AddPaths(b, ClipperLib::ptClip, true);
+  Paths out;
+  c.Execute(type, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  return out;
+}
+
+Paths offset(const Paths& region, double mm) {
+  ClipperLib::ClipperOffset o(2, kCavityArcToleranceMm * kRegionScale);
+  o.AddPaths(region, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+  Paths out;
+  o.Execute(out, mm * kRegionScale);
+  return out;
+}
+
+double perimeter_mm(const Paths& region) {
+  double p = 0;
+  for (const ClipperLib::Path& loop : region)
+    for (size_t i = 0; i < loop.size(); ++i)
+      p += std::hypot(double(loop[i].X - loop[(i + 1) % loop.size()].X), double(loop[i].Y - loop[(i + 1) % loop.size()].Y));
+  return p / kRegionScale;
+}
+
+// The definition, term by term: layer k eroded (grow false) or dilated by a ball of radius r,
+// every layer within it offset and intersected (or united), layers beyond the stack empty.
+std::vector<Paths> by_ball_naively(const std::vector<Paths>& layers, double h, double r, bool grow) {
+  const long n = long(layers.size()), reach = long(std::floor(r / h + 1e-9));
+  std::vector<Paths> out(layers.size());
+  for (long k = 0; k < n; ++k) {
+    if (!grow && (k < reach || k + reach >= n)) continue;
+    Paths acc = offset(layers[size_t(k)], grow ? r : -r);
+    for (long j = std::max(0L, k - reach); j <= std::min(n - 1, k + reach); ++j) {
+      const double dz = double(j - k) * h, radius = std::sqrt(std::max(0.0, r * r - dz * dz));
+      acc = clipped(acc, offset(layers[size_t(j)], grow ? radius : -radius),
+                    grow ? ClipperLib::ctUnion : ClipperLib::ctIntersection);
+    }
+    out[size_t(k)] = acc;
+  }
+  return out;
+}
+
+// Generated parts of several kinds (a sphere, a torus whose layers have holes, a standing handle
+// whose layers split in two): the cavity equals the definition computed term by term, to the
+// round offsets' arc tolerance, with and without the closing distance.
+TEST(Cavity, EqualsTheDefinitionTermByTerm) {
+  for (const auto& [shape, height] : {std::pair{"sphere", 6.0}, {"torus", 6.0}, {"handle", 16.0}}) {
+    test::FamilyOptions fo;
+    fo.shape = shape;
+    fo.faces = 2500;
+    fo.height = height;
+    const Slices s = slice_layers(test::make_family_base(fo), SliceOptions{0.1});
+    std::vector<Paths> layers;
+    for (size_t k = 0; k < s.layers(); ++k) layers.push_back(layer_region(LayerView(s, k)));
+    for (const auto [wall, closing] : {std::pair{0.6, 0.0}, {0.4, 0.3}}) {
+      SCOPED_TRACE(std::string(shape) + " wall " + std::to_string(wall) + " closing " + std::to_string(closing));
+      HollowingOptions o;
+      o.wall_mm = wall;
+      o.closing_mm = closing;
+      const std::vector<Paths> cavity = cavity_regions(layers, 0.1, o);
+      std::vector<Paths> expected = by_ball_naively(layers, 0.1, wall + closing, false);
+      if (closing > 0) expected = by_ball_naively(expected, 0.1, closing, true);
+      double volume = 0;
+      for (size_t k = 0; k < layers.size(); ++k) {
+        volume += region_area_mm2(expected[k]) * 0.1;
+        // Round offsets' chords may lie either side of another offset's: no further apart than
+        // the arc tolerance along the boundary.
+        EXPECT_LE(region_area_mm2(clipped(cavity[k], expected[k], ClipperLib::ctXor)),
+                  perimeter_mm(expected[k]) * kCavityArcToleranceMm)
+            << "layer " << k;
+      }
+      EXPECT_GT(volume, 0.5);
+    }
+  }
+}
+
+TEST(Cavity, AWallThickerThanThePartLeavesNoCavity) {
+  const std::vector<Paths> slab(30, rectangle(0, 0, 20, 20));  // 3 mm thick
+  HollowingOptions o;
+  o.wall_mm = 1.6;
+  o.closing_mm = 0;
+  for (const Paths& layer : cavity_regions(slab, 0.1, o)) EXPECT_TRUE(layer.empty());
+  o.wall_mm = 0;  // solid
+  for (const Paths& layer : cavity_regions(slab, 0.1, o)) EXPECT_TRUE(layer.empty());
+}
+
+TEST(Cavity, RefusesBadOptionsInWords) {
+  const std::vector<Paths> box(10, rectangle(0, 0, 10, 8));
+  HollowingOptions o;
+  o.wall_mm = -1;
+  EXPECT_EQ(test::error_of([&] { cavity_regions(box, 0.1, o); }),
+            "the hollowing wall thickness is -1 mm; it must be a finite, non-negative number (0: solid)");
+  o.wall_mm = NAN;
+  EXPECT_EQ(test::error_of([&] { cavity_regions(box, 0.1, o); }),
+            "the hollowing wall thickness is nan mm; it must be a finite, non-negative number (0: solid)");
+  o.wall_mm = 1;
+  o.closing_mm = INFINITY;
+  EXPECT_EQ(test::error_of([&] { cavity_regions(box, 0.1, o); }),
+            "the hollowing closing distance is inf mm; it must be a finite, non-negative number");
+  o.closing_mm = 0;
+  EXPECT_EQ(test::error_of([&] { cavity_regions(box, 0, o); }), "hollowing needs a positive layer thickness, not 0 mm");
+}
+
+}  // namespace
+}  // namespace slicereuse
