@@ -6,7 +6,7 @@
                                       [--workers N | --scheduler tcp://HOST:PORT [--send-encoding]]
                                       [--resume] [--strict] [--supports]
                                       [--require-printable | --no-check]
-                                      [--labels [FILE.csv] [--allow-unlabelled]]
+                                      [--labels [FILE.csv] [--allow-unlabelled]] [--hollow WALL_MM]
                                       MESH0 MESH1 ...
 
 Default: slices MESH0 once with encoding, then for each member MESH1 ...: reads it (STL, PLY or
@@ -35,6 +35,9 @@ hold an island, a resin trap or a suction cup is not written; its entry's "error
 to 7.5 mm; each member's entry gains "label_height_mm", and the plates' layout pictures name the
 members by their labels. A label that fits nowhere fails its member (or plate), naming it, unless
 --allow-unlabelled (then it is printed without, "label_height_mm" 0).
+--hollow WALL_MM: every member hollowed on its contours with walls that thick (PrusaSlicer's
+hollowing, its 2 mm closing distance); each entry gains "cavity_mm3" (0: too thin for a cavity).
+There are no drain holes yet: the cavity is sealed, and the check counts it as a resin trap.
 Prints one JSON object: {"source": MESH0, "seconds": total, "source_seconds", "engine",
 "failed", "targets": [{"mesh", "layers", "points", "resliced_layers", "seconds", "output",
 "method", "worker", "printability"[, "min_similarity", "max_grey_difference"][, "resumed"]}
@@ -130,6 +133,8 @@ def main():
                          "(member,label)")
     ap.add_argument("--allow-unlabelled", action="store_true",
                     help="--labels: print a member whose label fits nowhere on its base without it")
+    ap.add_argument("--hollow", type=float, metavar="WALL_MM",
+                    help="hollow every member, keeping walls this thick (mm; PrusaSlicer's profiles: 3)")
     ap.add_argument("--resume", action="store_true",
                     help="skip members whose outputs an earlier run made complete and valid")
     ap.add_argument("meshes", nargs="+", metavar="MESH", help="the sliced mesh, then its family members")
@@ -161,6 +166,8 @@ def main():
         ap.error("--strict is for members made by reuse, not --direct")
     if args.allow_unlabelled and not args.labels:
         ap.error("--allow-unlabelled goes with --labels")
+    if args.hollow is not None and not args.hollow > 0:
+        ap.error("--hollow needs a wall thickness above 0 mm")
     engine = {"workers": args.workers, "scheduler": args.scheduler, "resume": args.resume}
     if args.send_encoding:
         engine["send_encoding"] = True
@@ -173,14 +180,14 @@ def main():
                                progress=bar, direct=args.direct, verify=args.verify, spacing_mm=args.spacing,
                                placements=args.placements, extension=extension, strict=args.strict,
                                supports=args.supports, printability=args.printability, labels=args.labels,
-                               allow_unlabelled=args.allow_unlabelled, **engine)
+                               allow_unlabelled=args.allow_unlabelled, hollow=args.hollow, **engine)
         else:
             result = sr.family(args.meshes[0], args.meshes[1:], args.layer_thickness, args.out,
                                profile=profile, binary=not args.text, extension=extension, progress=bar,
                                direct=args.direct, verify=args.verify, keep_contours=args.keep_contours,
                                strict=args.strict, supports=args.supports,
                                printability=args.printability, labels=args.labels,
-                               allow_unlabelled=args.allow_unlabelled, **engine)
+                               allow_unlabelled=args.allow_unlabelled, hollow=args.hollow, **engine)
     except Exception as e:  # pymeshlab.PyMeshLabException, OSError, RuntimeError, ValueError
         if sys.stderr.isatty():
             sys.stderr.write("\n")

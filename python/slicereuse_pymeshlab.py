@@ -115,6 +115,7 @@ class MemberJob(batch.Job):
     supports: str
     printability: str
     labels: dict
+    hollow: dict
 
 
 @dataclass
@@ -148,6 +149,7 @@ class PlateJob(batch.Job):
     supports: str
     printability: str
     labels: dict
+    hollow: dict
 
 
 def _encode_source(source, out, layer_thickness, epoch, resume, binary=True):
@@ -211,11 +213,28 @@ def _label_parameters(labels, allow_unlabelled=False):
             "allow_unlabelled": bool(allow_unlabelled)}
 
 
+def _hollow_parameters(hollow):
+    """make_print_job's and make_plate_job's hollowing parameters for hollow: None (solid) or the
+    wall thickness in mm (PrusaSlicer's closing distance, 2 mm, kept)."""
+    if hollow is None:
+        return {"hollow_wall_mm": 0.0}
+    if not (isinstance(hollow, (int, float)) and hollow > 0):
+        raise ValueError(f"hollow must be None (solid) or a wall thickness in mm above 0, not {hollow!r}")
+    return {"hollow_wall_mm": float(hollow)}
+
+
 def _labels_identity(parameters):
     """What a batch's resume key holds of its label parameters: the labels file's identity."""
     if not parameters["labels_file"]:
         return dict(parameters)
     return dict(parameters, labels_file=batch.file_identity(parameters["labels_file"]))
+
+
+def _add_cavity(entry, result, suffix="", hollowed=True):
+    """The entry with "cavity_mm3" (0: too thin for a cavity) when the job hollowed its member (a
+    plate member's with suffix)."""
+    cavity = result.get(f"cavity_mm3{suffix}")
+    return entry if cavity is None or not hollowed else dict(entry, cavity_mm3=cavity)
 
 
 def _add_label(entry, result, suffix=""):
@@ -288,7 +307,7 @@ def _job_supports(supports, direct, out, source, layer_thickness, epoch, resume)
 def family(source, targets, layer_thickness, out, profile=None, binary=True, progress=None,
            direct=False, verify=False, keep_contours=False, details=False, extension=None,
            workers=0, scheduler=None, resume=False, send_encoding=False, strict=False, supports=False,
-           printability="check", labels=None, allow_unlabelled=False):
+           printability="check", labels=None, allow_unlabelled=False, hollow=None):
     """The production pipeline: one print job per family member, out/<member stem><extension>
     (one of print_file_extensions(), or "" for a folder of PNG images; None: the printer's own,
     printer_extension(profile's printer)).
@@ -324,7 +343,10 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     file (CSV, docs/formats.md "Labels file") its row's label, mirrored to read from below and
     as large as fits up to 7.5 mm; each entry then has "label_height_mm". A label that fits
     nowhere fails the member's job (its "error" names it), or with allow_unlabelled=True leaves
-    it off ("label_height_mm" 0).
+    it off ("label_height_mm" 0). hollow=WALL_MM hollows every member on its contours with walls
+    that thick (make_print_job's hollow_wall_mm, PrusaSlicer's 2 mm closing distance); each entry
+    then has "cavity_mm3" (0: too thin for a cavity). The cavity is sealed (no drain holes yet),
+    so the check counts it as a resin trap.
 
     Where the members are made (slicereuse_batch.py): workers=0 (the default) in this process;
     workers=N an embedded Dask LocalCluster of N worker processes (None: one per two cores, slicereuse_batch.default_workers);
@@ -350,6 +372,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     _check_files([source, *targets])
     _check_parameters(printability)  # before the source is sliced
     label_parameters = _label_parameters(labels, allow_unlabelled)
+    hollow_parameters = _hollow_parameters(hollow)
     stems = [Path(t).stem for t in targets]
     repeated = {s for s in stems if stems.count(s) > 1}
     if repeated:
@@ -377,7 +400,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     parameters = dict(encoding=batch.file_identity(encoding) if encoding else None,
                       layer_thickness=layer_thickness, profile=profile, verify=verify, details=details,
                       strict=strict, supports=_supports_identity(member_supports),
-                      printability=printability, labels=_labels_identity(label_parameters))
+                      printability=printability, labels=_labels_identity(label_parameters), hollow=hollow_parameters)
     jobs = []
     for target, stem in zip(targets, stems):
         output = out / f"{stem}{extension}"
@@ -390,7 +413,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
                               target=str(Path(target).resolve()), output=str(output), contours=str(contours or ""),
                               check=str(check or ""), layer_thickness=layer_thickness, profile=profile,
                               details=details, strict=strict, supports=member_supports,
-                              printability=printability, labels=label_parameters))
+                              printability=printability, labels=label_parameters, hollow=hollow_parameters))
     with batch.engine(workers, scheduler, setup=load) as engine:
         targets_out = _run_jobs(engine, jobs, _make_member, encoding, send_encoding, resume, progress, step, steps)
         engine.finish(_free_cached_memory)
@@ -456,11 +479,11 @@ def _make_member(job, encoding):
         r = ms.apply_filter("make_print_job", mesh_file=job.target, encoding_file=encoding,
                             layer_thickness=job.layer_thickness, contour_file=job.contours, output_path=job.output,
                             strict=job.strict, **_check_parameters(job.printability), **supports,
-                            **job.labels, **job.profile)
+                            **job.labels, **job.hollow, **job.profile)
         entry = _add_printability({"layers": r["layers"], "points": r["points"],
                                    "resliced_layers": r["resliced_layers"], "seconds": time.perf_counter() - t0,
                                    "output": job.output, "method": "reuse" if r["reused"] else "direct"}, r)
-        entry = _add_label(entry, r)
+        entry = _add_cavity(_add_label(entry, r), r, hollowed=job.hollow["hollow_wall_mm"] > 0)
         if job.supports:
             entry.update({k: r[k] for k in SUPPORT_KEYS}, support_seconds=r["support_seconds"])
         if encoding and not r["reused"]:
@@ -473,7 +496,7 @@ def _make_member(job, encoding):
             # The same supports (the same points), so that only the layers' making differs.
             ms.apply_filter("make_print_job", mesh_file=job.target, encoding_file="", layer_thickness=job.layer_thickness,
                             contour_file="", output_path=job.check, check_printability=False, **supports,
-                            **job.labels, **job.profile)
+                            **job.labels, **job.hollow, **job.profile)
             c = ms.apply_filter("compare_mask_stacks", stack_a=job.output, stack_b=job.check, report_file="")
             entry.update(min_similarity=c["min_similarity"], max_grey_difference=c["max_grey_difference"])
     return entry
@@ -486,7 +509,8 @@ def _free_cached_memory():
 
 def plates(source, targets, layer_thickness, out, profile=None, progress=None, direct=False, verify=False,
            spacing_mm=2.0, placements=None, extension=None, workers=0, scheduler=None, resume=False,
-           strict=False, supports=False, printability="check", labels=None, allow_unlabelled=False):
+           strict=False, supports=False, printability="check", labels=None, allow_unlabelled=False,
+           hollow=None):
     """The lab's job: the targets arranged on build plates of the printer, one print file per
     plate, out/plate_<k><extension> (one of print_file_extensions(), or "" for folders of PNG images;
     None: the printer's own, printer_extension(profile's printer)), its top view
@@ -512,8 +536,8 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
     "printability" (as family()'s) and each member's its own counts (a finding goes to the member
     whose footprint holds it); "require": a plate holding an island, a resin trap or a suction cup
     is not written, its entry's "error" naming each such finding, its member and place.
-    labels and allow_unlabelled as for family(): each plate member's entry has
-    "label_height_mm", and the layout pictures name the members by their labels.
+    labels, allow_unlabelled and hollow as for family(): each plate member's entry has
+    "label_height_mm" and "cavity_mm3", and the layout pictures name the members by their labels.
     Returns {"source", "members", "seconds", "arrange_seconds", "engine", "failed", "plates":
     [{"output", "layout", "members", "area_used", "layers", "points", "seconds", "worker"[,
     "min_similarity", "max_grey_difference"][, "resumed"]} or {"output", "layout", "members",
@@ -523,6 +547,7 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
     _check_files([source, *targets])
     _check_parameters(printability)  # before anything is arranged
     label_parameters = _label_parameters(labels, allow_unlabelled)
+    hollow_parameters = _hollow_parameters(hollow)
     by_name = {Path(t).name: str(Path(t).resolve()) for t in targets}
     if len(by_name) != len(targets):
         names = [Path(t).name for t in targets]
@@ -568,7 +593,8 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
         parameters = dict(placements=batch.file_identity(summary), encoding=batch.file_identity(encoding)
                           if encoding else None, layer_thickness=layer_thickness, profile=profile, verify=verify,
                           strict=strict, supports=_supports_identity(member_supports),
-                          printability=printability, labels=_labels_identity(label_parameters))
+                          printability=printability, labels=_labels_identity(label_parameters),
+                          hollow=hollow_parameters)
         jobs = []
         for k, plate in enumerate(layout["plates"], 1):
             output = plate["output"]
@@ -586,7 +612,7 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
                                  plate_output=arrange.output,
                                  check_output=str(out / "direct" / f"plate{extension}") if verify else "",
                                  supports=member_supports, printability=printability,
-                                 labels=label_parameters))
+                                 labels=label_parameters, hollow=hollow_parameters))
         plates_out = _run_jobs(engine, jobs, _make_plate, encoding, False, resume, progress, 1, steps)
         engine.finish(_free_cached_memory)
     return {"source": str(source), "members": arranged["members"], "seconds": time.perf_counter() - start,
@@ -621,7 +647,7 @@ def _plate_member(member, encoding, result):
     member = _add_printability(
         dict(member, **{k: result[f"{k}_{name}"] for k in SUPPORT_KEYS if f"{k}_{name}" in result}), result,
         f"_{name}")
-    member = _add_label(member, result, f"_{name}")
+    member = _add_cavity(_add_label(member, result, f"_{name}"), result, f"_{name}")
     if not encoding:
         return dict(member, method="direct")
     if result.get(f"sliced_directly_{name}"):
@@ -639,7 +665,7 @@ def _make_plate(job, encoding):
     with _meshset() as ms:
         common = dict(member_files=";".join(job.paths), layer_thickness=job.layer_thickness, z_start=job.z_start,
                       placements_file=job.summary, plate=job.plate, placements_output="", strict=job.strict,
-                      **_support_parameters(job.supports), **job.labels, **job.profile)
+                      **_support_parameters(job.supports), **job.labels, **job.hollow, **job.profile)
         r = ms.apply_filter("make_plate_job", encoding_file=encoding, output_path=job.plate_output,
                             **_check_parameters(job.printability), **common)
         members = [_plate_member(m, encoding, r) for m in job.base["members"]]

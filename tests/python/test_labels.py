@@ -88,3 +88,24 @@ def test_add_labels_shows_the_label_a_job_cuts(pymeshlab, tmp_path):
     job = ms.apply_filter("make_print_job", mesh_file=box, layer_thickness=THICKNESS, labels=True,
                           output_path=str(tmp_path / "job.sl1s"), printer="prusa_sl1s_speed")
     assert job["label_height_mm"] == shown["label_height_mm"]
+
+
+def test_family_hollows_labels_and_reuses_alike(tmp_path):
+    """--hollow and --labels together: each member hollowed and labelled, the same by reuse as by
+    direct slicing; the sealed cavity shows as a resin trap of its volume (no drain holes yet)."""
+    source, a = write_boxes(tmp_path / "parts", ["src.stl", "CASE1.stl"])
+    for name in ("src.stl", "CASE1.stl"):  # 30 x 15 x 15 mm: room for 4 mm walls and the 2 mm closing
+        write_stl(tmp_path / "parts" / name, box_triangles([0, 0, 0], [30 + (name == "CASE1.stl"), 15, 15]))
+    run = family_py("--hollow", 3, "--labels", "--verify", "--out", tmp_path / "out", source, a)
+    assert run.returncode == 1, run.stderr  # 3 mm letters would reach the cavity behind 3 mm walls
+    [entry] = json.loads(run.stdout)["targets"]
+    assert "labels 3 mm deep would come within 1 mm of the cavity behind walls of 3 mm" in entry["error"], entry
+    run = family_py("--hollow", 4, "--labels", "--verify", "--out", tmp_path / "out", source, a)
+    assert run.returncode == 0, run.stderr
+    [entry] = json.loads(run.stdout)["targets"]
+    assert entry["method"] == "reuse" and entry["min_similarity"] == 1 and entry["max_grey_difference"] == 0, entry
+    # The cavity: the box less 4 mm walls (23 x 7 x 7 mm), its edges rounded by the closing; the
+    # check finds it on the masks as one resin trap of that volume.
+    assert 0.8 * 23 * 7 * 7 < entry["cavity_mm3"] < 23 * 7 * 7, entry
+    assert entry["label_height_mm"] > 0 and entry["printability"]["resin_traps"] == 1, entry
+    assert entry["printability"]["trapped_mm3"] == pytest.approx(entry["cavity_mm3"], rel=0.05), entry
