@@ -38,6 +38,7 @@ members by their labels. A label that fits nowhere fails its member (or plate), 
 --hollow WALL_MM: every member hollowed on its contours with walls that thick (PrusaSlicer's
 hollowing, its 2 mm closing distance); each entry gains "cavity_mm3" (0: too thin for a cavity).
 There are no drain holes yet: the cavity is sealed, and the check counts it as a resin trap.
+With --labels too, the letters are cut 1 mm less deep than the walls where that is less than 3 mm.
 Prints one JSON object: {"source": MESH0, "seconds": total, "source_seconds", "engine",
 "failed", "targets": [{"mesh", "layers", "points", "resliced_layers", "seconds", "output",
 "method", "worker", "printability"[, "min_similarity", "max_grey_difference"][, "resumed"]}

@@ -200,17 +200,27 @@ def _check_parameters(printability):
     return {"check_printability": printability != "off", "require_printable": printability == "require"}
 
 
-def _label_parameters(labels, allow_unlabelled=False):
+LABEL_DEPTH_MM, LABEL_MIN_DEPTH_MM = 3.0, 0.5  # the filters' default depth; the least this sets
+
+
+def _label_parameters(labels, allow_unlabelled=False, hollow=None):
     """make_print_job's and make_plate_job's label parameters for labels: None (no labels),
     "names" (each member's file name without its extension) or the path of a labels file (CSV,
     docs/formats.md "Labels file"); allow_unlabelled prints a member whose label fits nowhere
-    without it (else its job fails naming it)."""
+    without it (else its job fails naming it). 3 mm deep, or with hollow (walls in mm) 1 mm less
+    than the walls where that is less, so that the letters keep 1 mm from the cavity."""
     if labels is None:
         return {"labels": False, "labels_file": "", "allow_unlabelled": False}
     if labels != "names" and not Path(labels).is_file():
         raise ValueError(f'labels must be None, "names" or a labels file (CSV), but {labels!r} is no file')
+    depth = LABEL_DEPTH_MM
+    if hollow is not None:
+        if not hollow > 1 + LABEL_MIN_DEPTH_MM:
+            raise ValueError(f"labels on hollowed members need walls over {1 + LABEL_MIN_DEPTH_MM:g} mm thick (the "
+                             f"letters keep 1 mm from the cavity), not {hollow!r} mm")
+        depth = min(depth, hollow - 1)
     return {"labels": True, "labels_file": "" if labels == "names" else str(Path(labels).resolve()),
-            "allow_unlabelled": bool(allow_unlabelled)}
+            "label_depth_mm": depth, "allow_unlabelled": bool(allow_unlabelled)}
 
 
 def _hollow_parameters(hollow):
@@ -343,7 +353,8 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     file (CSV, docs/formats.md "Labels file") its row's label, mirrored to read from below and
     as large as fits up to 7.5 mm; each entry then has "label_height_mm". A label that fits
     nowhere fails the member's job (its "error" names it), or with allow_unlabelled=True leaves
-    it off ("label_height_mm" 0). hollow=WALL_MM hollows every member on its contours with walls
+    it off ("label_height_mm" 0); with hollow, the letters are 1 mm less deep than the walls where
+    that is less than 3 mm. hollow=WALL_MM hollows every member on its contours with walls
     that thick (make_print_job's hollow_wall_mm, PrusaSlicer's 2 mm closing distance); each entry
     then has "cavity_mm3" (0: too thin for a cavity). The cavity is sealed (no drain holes yet),
     so the check counts it as a resin trap.
@@ -371,8 +382,8 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     than wall time). progress(step, steps, text) is called after each step."""
     _check_files([source, *targets])
     _check_parameters(printability)  # before the source is sliced
-    label_parameters = _label_parameters(labels, allow_unlabelled)
     hollow_parameters = _hollow_parameters(hollow)
+    label_parameters = _label_parameters(labels, allow_unlabelled, hollow)
     stems = [Path(t).stem for t in targets]
     repeated = {s for s in stems if stems.count(s) > 1}
     if repeated:
@@ -546,8 +557,8 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
     covers arranging and making every plate (not slicing the source)."""
     _check_files([source, *targets])
     _check_parameters(printability)  # before anything is arranged
-    label_parameters = _label_parameters(labels, allow_unlabelled)
     hollow_parameters = _hollow_parameters(hollow)
+    label_parameters = _label_parameters(labels, allow_unlabelled, hollow)
     by_name = {Path(t).name: str(Path(t).resolve()) for t in targets}
     if len(by_name) != len(targets):
         names = [Path(t).name for t in targets]
