@@ -99,8 +99,12 @@ TreeSections check_tree_sections(const Mesh& part, const SupportTree& tree, doub
       for (const ClipperLib::Path& r : clip(s, below, ClipperLib::ctIntersection))
         for (size_t i = 0; i < outer.size() && !r.empty(); ++i)
           if (!rests[i] && near_or_in(r[0], *outer[i], box[i])) rests[i] = true;
-      for (bool on_something : rests)
-        if (!on_something && t.support_islands++ == 0) t.first_support_island_layer = k;
+      for (size_t i = 0; i < outer.size(); ++i)
+        if (!rests[i] && t.support_islands++ == 0) {
+          t.first_support_island_layer = k;
+          t.first_support_island_xy[0] = double(box[i].left + box[i].right) / 2 / kRegionScale;
+          t.first_support_island_xy[1] = double(box[i].top + box[i].bottom) / 2 / kRegionScale;
+        }
     }
     below = clip(p, s, ClipperLib::ctUnion);
   }
@@ -110,13 +114,13 @@ TreeSections check_tree_sections(const Mesh& part, const SupportTree& tree, doub
 FeetOnPart check_feet_on_part(const Mesh& part, const SupportTree& tree, const SupportTreeOptions& o) {
   const SurfaceGrid grid(part);
   FeetOnPart f;
-  for (const HeadZone& h : tree.head_zones) {
-    if (!(h.r_bottom < h.r_top)) continue;
+  for (const SupportFoot& foot : tree.structure.feet) {
     ++f.feet;
-    const double tip[3] = {h.x, h.y, h.z_bottom + o.head_penetration_mm};
+    const Point3& t = foot.cone.tip;
+    const double tip[3] = {t[0], t[1], t[2] + foot.penetration};
     const double d = grid.nearest_on_surface(tip, nullptr, 0, INFINITY).distance;
-    if (d >= 1e-6) ++f.in_air;
-    if (d > f.farthest_mm) f.farthest_mm = d, f.farthest_xy[0] = h.x, f.farthest_xy[1] = h.y;
+    if (d >= 1e-6 || !(foot.penetration > 0 && foot.penetration <= o.head_penetration_mm)) ++f.in_air;
+    if (d > f.farthest_mm) f.farthest_mm = d, f.farthest_xy[0] = t[0], f.farthest_xy[1] = t[1];
   }
   return f;
 }

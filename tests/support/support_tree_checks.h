@@ -7,8 +7,9 @@
 // only within the head zones (their circles around the 16-gons, grown by 1e-3 mm); every piece
 // of the union of the supports' sections above layer 0 overlaps the layer below (supports or
 // part: a foot rests on the part).
-// check_feet_on_part: every foot (a head zone narrowing downwards) ends on the part: its tip,
-// head_penetration_mm above its bottom, lies on the part's surface (within 1e-6 mm).
+// check_feet_on_part: every foot of the structure ends on the part: the point its penetration
+// (more than 0, at most head_penetration_mm) above its tip lies on the part's surface (within
+// 1e-6 mm); a foot failing either counts in in_air.
 #include <cstddef>
 
 #include "slicereuse/mesh/mesh.h"
@@ -27,13 +28,14 @@ struct TreeSections {
   double outside_zones_xy[2] = {0, 0};  // the centre of its largest piece's bounding box
   size_t support_islands = 0;        // pieces of the supports' sections resting on nothing
   size_t first_support_island_layer = 0;
+  double first_support_island_xy[2] = {0, 0};  // the centre of its bounding box
 };
 
 TreeSections check_tree_sections(const Mesh& part, const SupportTree& tree, double layer_mm);
 
 struct FeetOnPart {
   size_t feet = 0;
-  size_t in_air = 0;          // feet whose tip is farther than 1e-6 mm from the part
+  size_t in_air = 0;          // feet off the part, or going deeper than a head
   double farthest_mm = 0;     // the largest distance of a tip from the part
   double farthest_xy[2] = {0, 0};
 };

@@ -225,6 +225,103 @@ TEST(SupportTree, FootUnderABlockedRimStandsOnThePart) {
   check_sections(part, tree);
 }
 
+// A slab (z 8-10) on two legs (z 2-8) with a groove of `width` between them at x = 10, running
+// along y (0-10): one closed surface (a U extruded), so that what lies inside it is told by its
+// faces. The pillar's rim (0.65 mm out) starts inside the legs wherever a head in the groove ends.
+Mesh grooved_slab(double width) {
+  const double a = 10 - width / 2, b = 10 + width / 2;
+  // The U's corners counter-clockwise in x-z, and its rectangles (corners of the U only, so that
+  // no edge ends on another).
+  const double xz[12][2] = {{4, 2}, {a, 2}, {a, 8}, {b, 8}, {b, 2}, {16, 2},
+                            {16, 8}, {16, 10}, {b, 10}, {a, 10}, {4, 10}, {4, 8}};
+  const int quads[5][4] = {{0, 1, 2, 11}, {4, 5, 6, 3}, {11, 2, 9, 10}, {2, 3, 8, 9}, {3, 6, 7, 8}};
+  Mesh m;
+  for (const double y : {0.0, 10.0})
+    for (const auto& v : xz) m.V.insert(m.V.end(), {v[0], y, v[1]});
+  for (const auto& q : quads)  // the cap at y = 0 faces -y: counter-clockwise in x-z; at y = 10 reversed
+    for (const uint32_t o : {0u, 12u}) {
+      const uint32_t c[4] = {o + uint32_t(q[0]), o + uint32_t(q[1]), o + uint32_t(q[2]), o + uint32_t(q[3])};
+      if (o == 0) m.F.insert(m.F.end(), {c[0], c[1], c[2], c[0], c[2], c[3]});
+      else m.F.insert(m.F.end(), {c[0], c[2], c[1], c[0], c[3], c[2]});
+    }
+  for (uint32_t i = 0; i < 12; ++i) {
+    const uint32_t j = (i + 1) % 12;
+    m.F.insert(m.F.end(), {i, j + 12, j, i, i + 12, j + 12});
+  }
+  return m;
+}
+
+// Points at the given (x, z), y = 5, each held by the face nearest it.
+SupportPoints points_at(const Mesh& part, const std::vector<std::array<double, 2>>& xz) {
+  std::vector<uint32_t> faces;
+  for (const auto& p : xz) faces.push_back(face_near(part, p[0], 5, p[1]));
+  SupportPoints pts = points_on(part, faces);
+  for (size_t i = 0; i < xz.size(); ++i) pts.xyz[3 * i] = xz[i][0], pts.xyz[3 * i + 1] = 5, pts.xyz[3 * i + 2] = xz[i][1];
+  return pts;
+}
+
+// A point on the ceiling of a groove narrower than the pillar: no pillar fits, and the head's
+// back lies against the legs: it rests on them (before, the rim rays started inside the legs and
+// met only their undersides: the pillar ran in a leg, its foot hung below it; the sweep's arch
+// 703 3 54.5 69.5 2.2 8.5 6000).
+TEST(SupportTree, HeadInAGrooveNarrowerThanThePillarRestsOnItsWalls) {
+  const Mesh part = grooved_slab(0.9);
+  ASSERT_EQ(test::edge_census(part).bad_edges, 0u);
+  ASSERT_NEAR(test::signed_volume(part), 10 * (12 * 2 + (12 - 0.9) * 6), 1e-9);
+  const SupportPoints pts = points_at(part, {{10, 8}});
+  ASSERT_EQ(pts.normal[2], -1);
+  const SupportTree tree = build_support_tree(part, pts, -5, SupportTreeOptions{});
+  EXPECT_EQ(tree.on_part, 1u);
+  EXPECT_EQ(tree.pillars, 0u);
+  EXPECT_EQ(tree.structure.feet.size(), 0u);
+  ASSERT_EQ(tree.structure.heads.size(), 1u);
+  EXPECT_EQ(tree.structure.heads[0].rest, HeadRest::Part);
+  EXPECT_DOUBLE_EQ(tree.structure.heads[0].cone.back[2], 5);
+  expect_closed_outward_shells(tree, 1);
+  EXPECT_GT(check_sections(part, tree), 0u);
+}
+
+// Wider than the pillar, narrower than its rim's clearance: the rim rays start inside the legs,
+// and only what lies below the legs counts; there is nothing: the pillar runs down the groove to
+// the pad (before, the legs' undersides were taken for a floor, and its foot hung below them).
+TEST(SupportTree, PillarInAGrooveNarrowerThanItsClearanceRunsDownIt) {
+  const Mesh part = grooved_slab(1.2);
+  const SupportTree tree = build_support_tree(part, points_at(part, {{10, 8}}), -5, SupportTreeOptions{});
+  EXPECT_EQ(tree.pillars, 1u);
+  EXPECT_EQ(tree.on_part, 0u);
+  EXPECT_EQ(tree.structure.feet.size(), 0u);
+  check_sections(part, tree);
+}
+
+// Wider than the head's back, narrower than the pillar and its margin: no pillar fits, and the
+// head's back would hang between the legs: the point is dropped, as PrusaSlicer drops the heads
+// it cannot route (the ceiling is a 1.08 mm bridge between the legs); one under a leg is built.
+TEST(SupportTree, HeadInAGrooveThatHoldsNeitherPillarNorHeadIsDropped) {
+  const Mesh part = grooved_slab(1.08);
+  const SupportPoints pts = points_at(part, {{10, 8}, {6, 2}});
+  ASSERT_EQ(pts.normal[5], -1);
+  const SupportTree tree = build_support_tree(part, pts, -5, SupportTreeOptions{});
+  EXPECT_EQ(tree.hanging, 1u);
+  EXPECT_EQ(tree.pillars, 1u);
+  ASSERT_EQ(tree.structure.heads.size(), 1u);
+  EXPECT_EQ(tree.structure.heads[0].point, 1u);
+  check_sections(part, tree);
+}
+
+// A pillar blocked by a plate thinner than twice the penetration: its foot goes halfway into the
+// plate, not out of its underside, where its tip hung as an island of the supports (the sweep's
+// arch 402 2 34.5 16 2.7 9.5 6000).
+TEST(SupportTree, FootOnAThinPlateStaysInsideIt) {
+  Mesh part = test::make_box(0, 0, 2, 10, 10, 2.4);
+  test::append_mesh(part, test::make_box(0, 0, 8, 20, 10, 10));
+  const SupportTree tree = build_support_tree(part, points_on(part, {face_near(part, 5, 5, 8)}), -5, {});
+  ASSERT_EQ(tree.structure.feet.size(), 1u);
+  EXPECT_NEAR(tree.structure.feet[0].cone.tip[2], 2.2, 1e-12);
+  EXPECT_NEAR(tree.structure.feet[0].penetration, 0.2, 1e-12);
+  EXPECT_EQ(expect_feet_on_part(part, tree, SupportTreeOptions{}), 1u);
+  check_sections(part, tree);
+}
+
 // PrusaSlicer builds no head under a point whose surface faces up (its normal within 30 degrees
 // of +z): such a point (a user's, on the top face) is dropped and counted; one on the bottom
 // face beside it is built.
@@ -290,7 +387,9 @@ TEST(SupportTree, SphereAndHandleEnterThePartOnlyAtHeads) {
     ASSERT_GT(pts.size(), 10u);
     const double ground_z = support_ground_z(0, kLayer, SupportTreeOptions{});
     const SupportTree tree = build_support_tree(part, pts, ground_z, SupportTreeOptions{});
-    EXPECT_EQ(tree.pillars + tree.on_part + tree.bridged, pts.size());
+    EXPECT_EQ(tree.pillars + tree.on_part + tree.bridged + tree.hanging, pts.size());
+    // One point of the handle's has a wall within the pillar's margin and none its head meets.
+    EXPECT_EQ(tree.hanging, std::string(name) == "handle" ? 1u : 0u);
     if (std::string(name) == "handle") EXPECT_GT(tree.on_part, 0u);
     expect_feet_on_part(part, tree, SupportTreeOptions{});
     EXPECT_GT(tree.pillars, 0u);

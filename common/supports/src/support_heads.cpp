@@ -15,6 +15,22 @@ double head_radius_at(const SupportHead& head, double z, const SupportPoints& po
   return r_pillar + (head.cone.r_tip - r_pillar) * (z - full_back) / (head.cone.tip[2] - full_back);
 }
 
+namespace {
+
+// Whether the disc of radius r around (x, y) at height z meets the part: its centre or a point of
+// the circles of half and all of r, in kRimRays directions, inside it.
+bool disc_meets_part(const PartColumns& columns, double x, double y, double z, double r) {
+  if (columns.inside(x, y, z)) return true;
+  for (int i = 0; i < kRimRays; ++i) {
+    const double a = 2 * M_PI * i / kRimRays;
+    for (const double d : {r / 2, r})
+      if (columns.inside(x + d * std::cos(a), y + d * std::sin(a), z)) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 std::vector<SupportHead> place_heads(const PartColumns& columns, const SupportPoints& points, double floor,
                                      const SupportTreeOptions& o, std::vector<WayDown>& ways) {
   std::vector<SupportHead> heads;
@@ -31,8 +47,14 @@ std::vector<SupportHead> place_heads(const PartColumns& columns, const SupportPo
     const double full_back = z - o.head_width_mm;
     h.cone.back = {x, y, std::max(full_back, floor)};
     h.cone.r_back = head_radius_at(h, h.cone.back[2], points, o);
+    const WayDown way = find_way_down(columns, x, y, z, full_back, floor, o.pillar_diameter_mm / 2);
+    // No pillar fits, the head does not reach the part below, and its back hangs beside the
+    // part: nothing would hold it.
+    if (way.pillar_in_part && !(way.axis_z > full_back) &&
+        !disc_meets_part(columns, x, y, h.cone.back[2], h.cone.r_back))
+      continue;
     heads.push_back(h);
-    ways.push_back(find_way_down(columns, x, y, z, full_back, floor, o.pillar_diameter_mm / 2 + kRimClearanceMm));
+    ways.push_back(way);
   }
   return heads;
 }

@@ -8,7 +8,10 @@
 // (pillar_diameter_mm) head_width_mm below the point, but not below floor (the pad's top, or the
 // ground without a pad), where it is as wide as the cone is there; its rest not yet decided (the
 // routes stage does). And, in ways, each head's way down from head_width_mm below its point to
-// floor (find_way_down, the pillar's rim kRimClearanceMm outside it).
+// floor (find_way_down, for a pillar of pillar_diameter_mm). A point gets no head when no
+// pillar fits under it (find_way_down's pillar_in_part: a groove narrower than the pillar, a
+// wall beside), the head does not reach the part below, and its back's section meets no part
+// beside it either: the head would hang (PrusaSlicer drops the heads it cannot route).
 #include <vector>
 
 #include "pillar_path.h"

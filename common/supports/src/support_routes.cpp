@@ -81,7 +81,7 @@ Join cheapest_join(const PartColumns& columns, const SupportStructure& s, const 
 void route_heads(const PartColumns& columns, const SupportPoints& points, const std::vector<WayDown>& ways,
                  double floor, const SupportTreeOptions& o, SupportStructure& s) {
   const double r_front = o.head_front_diameter_mm / 2, r_pillar = o.pillar_diameter_mm / 2;
-  const double r_base = o.base_diameter_mm / 2, pen = o.head_penetration_mm;
+  const double r_base = o.base_diameter_mm / 2;
   const double max_run = max_bridge_run(o);
   const bool joins = max_run > 0 && o.max_bridges_on_pillar > 0;
   PillarGrid on_ground(joins ? max_run : 1);
@@ -101,6 +101,11 @@ void route_heads(const PartColumns& columns, const SupportPoints& points, const 
       const double end = std::max({way.axis_z - depth_in_wall(wall, o), full_back, floor});
       head.cone.back[2] = end;
       head.cone.r_back = head_radius_at(head, end, points, o);
+      head.rest = HeadRest::Part;
+      continue;
+    }
+    if (way.pillar_in_part) {
+      // No pillar fits: the head's back already lies in the part beside it, which holds it.
       head.rest = HeadRest::Part;
       continue;
     }
@@ -131,7 +136,10 @@ void route_heads(const PartColumns& columns, const SupportPoints& points, const 
       // met it; under a rim ray's hit, beside the axis, it leans from the pillar to the hit
       // rather than ending in the air on the axis.
       const double foot_top = std::min(full_back, way.blocked_z + kFootRiseMm);
-      const double foot_bottom = std::max(way.blocked_z - pen, floor);
+      // As deep as a head goes: not out of a thin wall's underside, where its tip would hang.
+      const double wall =
+          way.blocked_z - columns.highest_hit(way.blocked_x, way.blocked_y, way.blocked_z - kWallEpsilonMm, floor);
+      const double foot_bottom = std::max(way.blocked_z - depth_in_wall(wall, o), floor);
       const size_t p = new_pillar(h, foot_top, PillarEnd::Foot);
       SupportFoot f;
       f.cone = {{way.blocked_x, way.blocked_y, foot_bottom}, {x, y, foot_top}, r_front, r_pillar};

@@ -7,6 +7,8 @@
 //   - the part, when the part below is nearer than the head's width (ways[h].axis_z above its
 //     full width's bottom): the head's back moves down into the part, head_penetration_mm deep
 //     or halfway through a thinner wall (depth_in_wall), not below floor nor its full width;
+//     or, when no pillar fits under it (ways[h].pillar_in_part: its back's section already meets
+//     the part beside it, a groove narrower than the pillar), its back where it is;
 //   - a bridge to a pillar on the ground of an earlier head (PrusaSlicer's connect_to_nearpillar): from
 //     the head's back, or from a pillar of its own down to where the bridge starts, to the
 //     pillar's axis, descending at critical_angle_deg, at most max_bridge_length_mm long, ending
@@ -16,7 +18,7 @@
 //   - else a pillar to floor on a base cone (base_diameter_mm, base_height_mm at most up to the
 //     head); where the way down is blocked, a pillar ending on the part in a foot: a small head
 //     upside down from 1 mm above the highest hit (but not above the head's back) into the part
-//     at that hit, head_penetration_mm deep (but not below floor).
+//     at that hit, as deep as a head goes into the part there (depth_in_wall; not below floor).
 // Fills the pillars, feet, junctions and bridges in the heads' order.
 #include <vector>
 

@@ -9,7 +9,9 @@
 //     into a thinner wall), widening to the pillar's diameter head_width_mm below the point; and
 //     its way down, by vertical rays through the pillar's axis and rim (pillar_path.h);
 //   2. routes (support_routes.h), the heads in order: where the part below is nearer
-//     than the head's width, the head ends in it (as deep as its tip goes); else the head joins a neighbouring pillar by a
+//     than the head's width, the head ends in it (as deep as its tip goes); where no pillar fits
+//     under the head (its back's section meets the part beside it: a groove narrower than the
+//     pillar), the head rests on the part there; else the head joins a neighbouring pillar by a
 //     bridge descending at least critical_angle_deg (at most max_bridge_length_mm long, at most
 //     max_bridges_on_pillar on a pillar, clear of the part) where that takes less resin than a
 //     pillar of its own, or where its own way down is blocked; else a pillar of pillar_diameter_mm
@@ -28,7 +30,8 @@
 // between its horizontal sections at its ends, the pad a loft between its outlines; each shell
 // closed, its faces counter-clockwise seen from outside; the same structure, the same bytes.
 // A point whose surface faces up (faces_up, support_points.h) gets nothing: counted in
-// up_facing, as PrusaSlicer drops it.
+// up_facing, as PrusaSlicer drops it. Nor does a point where no pillar fits under its head and
+// the head's back meets no part beside it to rest on: counted in hanging.
 // No points: no structure (an empty mesh, ground_z set); no pillar reaching the ground: no pad.
 // Throws Error when a point (not facing up) lies at or below the pad's top (ground_z without a
 // pad), the structure would be taller than max_height_mm ("... pillar of H mm, taller than the
@@ -77,6 +80,7 @@ struct SupportTree {
   size_t on_part = 0;         // heads ending on the part: in it, or on a pillar ending in a foot
   size_t bridged = 0;         // heads joined to a neighbouring pillar by a bridge
   size_t up_facing = 0;       // points dropped: their surface faces up
+  size_t hanging = 0;         // points dropped: no pillar fits under them, nothing beside holds the head
   double ground_z = 0;
 };
 
