@@ -190,11 +190,11 @@ Result run_build(const BuildParams& p, Host& host) {
       part, points, support_ground_z(z_start, p.layer_thickness, p.tree), p.tree);
   host.add_mesh_layer(host.current_mesh_name() + " supports", tree.mesh);
   const double seconds = seconds_since(start);
-  host.log(format("Build Supports: %zu points (%zu dropped: their surface faces up; %zu dropped: no pillar fits under "
-                  "them and their head would hang), %zu pillars to the %s, %zu "
+  host.log(format("Build Supports: %zu points (%zu dropped: their surface faces up; %zu dropped: the part lies right under "
+                  "them, or no pillar fits under them and their head would hang), %zu pillars to the %s, %zu "
                   "heads bridged to a neighbour's pillar, %zu ending on the part, ground at z %g mm (%zu layers below "
                   "the part's first), %zu faces, %.3f s",
-                  points.size(), tree.up_facing, tree.hanging, tree.pillars, p.tree.pad_enable ? "pad" : "plate", tree.bridged,
+                  points.size(), tree.up_facing, tree.unroutable, tree.pillars, p.tree.pad_enable ? "pad" : "plate", tree.bridged,
                   tree.on_part, tree.ground_z, below, tree.mesh.faces(), seconds));
   return {{"points", int64_t(points.size())},
           {"pillars", int64_t(tree.pillars)},

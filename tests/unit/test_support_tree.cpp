@@ -301,8 +301,32 @@ TEST(SupportTree, HeadInAGrooveThatHoldsNeitherPillarNorHeadIsDropped) {
   const SupportPoints pts = points_at(part, {{10, 8}, {6, 2}});
   ASSERT_EQ(pts.normal[5], -1);
   const SupportTree tree = build_support_tree(part, pts, -5, SupportTreeOptions{});
-  EXPECT_EQ(tree.hanging, 1u);
+  EXPECT_EQ(tree.unroutable, 1u);
   EXPECT_EQ(tree.pillars, 1u);
+  ASSERT_EQ(tree.structure.heads.size(), 1u);
+  EXPECT_EQ(tree.structure.heads[0].point, 1u);
+  check_sections(part, tree);
+}
+
+// A point on a wall that leans out towards its foot (its surface facing sideways and 14 degrees
+// up, far from PrusaSlicer's 30 degrees from straight up): the part lies right under it.
+// A vertical head went down through the part, met its underside as "the part below", and ended
+// under it, hanging (the sweep's arch 234 3 20.5 11.5 2.55 6.5 6000); now the point is dropped,
+// the part holding it, and counted.
+TEST(SupportTree, PointWithThePartRightUnderItIsDropped) {
+  // A frustum: the 4 mm square at z = 0, the 3 mm one at z = 2 (its sides face 14 degrees up).
+  Mesh part;
+  part.V = {0, 0, 0, 4, 0, 0, 4, 4, 0, 0, 4, 0, 0.5, 0.5, 2, 3.5, 0.5, 2, 3.5, 3.5, 2, 0.5, 3.5, 2};
+  part.F = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4, 1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
+  ASSERT_EQ(test::edge_census(part).bad_edges, 0u);
+  ASSERT_GT(test::signed_volume(part), 0);
+  SupportPoints pts = points_on(part, {face_near(part, 3.8, 2, 0.4), face_near(part, 2, 2, 0)});
+  ASSERT_GT(pts.normal[2], 0);
+  ASSERT_LT(pts.normal[2], 0.5);
+  pts.xyz[0] = 3.85, pts.xyz[1] = 2, pts.xyz[2] = 0.6;  // on the side x = 4 - z / 4
+  const SupportTree tree = build_support_tree(part, pts, -6, SupportTreeOptions{});
+  EXPECT_EQ(tree.unroutable, 1u);
+  EXPECT_EQ(tree.up_facing, 0u);
   ASSERT_EQ(tree.structure.heads.size(), 1u);
   EXPECT_EQ(tree.structure.heads[0].point, 1u);
   check_sections(part, tree);
@@ -387,9 +411,9 @@ TEST(SupportTree, SphereAndHandleEnterThePartOnlyAtHeads) {
     ASSERT_GT(pts.size(), 10u);
     const double ground_z = support_ground_z(0, kLayer, SupportTreeOptions{});
     const SupportTree tree = build_support_tree(part, pts, ground_z, SupportTreeOptions{});
-    EXPECT_EQ(tree.pillars + tree.on_part + tree.bridged + tree.hanging, pts.size());
+    EXPECT_EQ(tree.pillars + tree.on_part + tree.bridged + tree.unroutable, pts.size());
     // One point of the handle's has a wall within the pillar's margin and none its head meets.
-    EXPECT_EQ(tree.hanging, std::string(name) == "handle" ? 1u : 0u);
+    EXPECT_EQ(tree.unroutable, std::string(name) == "handle" ? 1u : 0u);
     if (std::string(name) == "handle") EXPECT_GT(tree.on_part, 0u);
     expect_feet_on_part(part, tree, SupportTreeOptions{});
     EXPECT_GT(tree.pillars, 0u);

@@ -47,6 +47,9 @@ std::vector<SupportHead> place_heads(const PartColumns& columns, const SupportPo
     const double full_back = z - o.head_width_mm;
     h.cone.back = {x, y, std::max(full_back, floor)};
     h.cone.r_back = head_radius_at(h, h.cone.back[2], points, o);
+    // A point on a wall facing sideways with the part right under it (the axis starts inside
+    // it): a vertical head would end below the part's underside, and the part holds the point.
+    if (columns.inside(x, y, z - kBelowPointMm)) continue;
     const WayDown way = find_way_down(columns, x, y, z, full_back, floor, o.pillar_diameter_mm / 2);
     // No pillar fits, the head does not reach the part below, and its back hangs beside the
     // part: nothing would hold it.

@@ -88,7 +88,7 @@ SupportTree build_support_tree(const Mesh& part, const SupportPoints& points, do
   tree.mesh = mesh_support_structure(tree.structure);
   tree.head_zones = head_zones_of(tree.structure);
   for (size_t i = 0; i < points.size(); ++i) tree.up_facing += faces_up(points, i);
-  tree.hanging = points.size() - tree.up_facing - tree.structure.heads.size();
+  tree.unroutable = points.size() - tree.up_facing - tree.structure.heads.size();
   for (const SupportHead& h : tree.structure.heads) {
     if (h.rest == HeadRest::Part) {
       ++tree.on_part;

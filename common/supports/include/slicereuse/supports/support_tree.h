@@ -30,8 +30,9 @@
 // between its horizontal sections at its ends, the pad a loft between its outlines; each shell
 // closed, its faces counter-clockwise seen from outside; the same structure, the same bytes.
 // A point whose surface faces up (faces_up, support_points.h) gets nothing: counted in
-// up_facing, as PrusaSlicer drops it. Nor does a point where no pillar fits under its head and
-// the head's back meets no part beside it to rest on: counted in hanging.
+// up_facing, as PrusaSlicer drops it. Nor does a point the part lies right under (a wall facing
+// sideways: the axis below it starts inside the part, which holds it), or where no pillar fits
+// under its head and the head's back meets no part beside it to rest on: counted in unroutable.
 // No points: no structure (an empty mesh, ground_z set); no pillar reaching the ground: no pad.
 // Throws Error when a point (not facing up) lies at or below the pad's top (ground_z without a
 // pad), the structure would be taller than max_height_mm ("... pillar of H mm, taller than the
@@ -80,7 +81,7 @@ struct SupportTree {
   size_t on_part = 0;         // heads ending on the part: in it, or on a pillar ending in a foot
   size_t bridged = 0;         // heads joined to a neighbouring pillar by a bridge
   size_t up_facing = 0;       // points dropped: their surface faces up
-  size_t hanging = 0;         // points dropped: no pillar fits under them, nothing beside holds the head
+  size_t unroutable = 0;      // points dropped: the part right under them, or no pillar fits and nothing holds the head
   double ground_z = 0;
 };
 
