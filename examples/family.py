@@ -36,8 +36,8 @@ to 7.5 mm; each member's entry gains "label_height_mm", and the plates' layout p
 members by their labels. A label that fits nowhere fails its member (or plate), naming it, unless
 --allow-unlabelled (then it is printed without, "label_height_mm" 0).
 --hollow WALL_MM: every member hollowed on its contours with walls that thick (PrusaSlicer's
-hollowing, its 2 mm closing distance); each entry gains "cavity_mm3" (0: too thin for a cavity).
-There are no drain holes yet: the cavity is sealed, and the check counts it as a resin trap.
+hollowing, its 2 mm closing distance), a 4 mm drain hole under each cavity through the bottom
+wall to the base; each entry gains "cavity_mm3" (0: too thin for a cavity) and "drain_holes".
 With --labels too, the letters are cut 1 mm less deep than the walls where that is less than 3 mm.
 Prints one JSON object: {"source": MESH0, "seconds": total, "source_seconds", "engine",
 "failed", "targets": [{"mesh", "layers", "points", "resliced_layers", "seconds", "output",

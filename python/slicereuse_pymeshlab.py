@@ -241,10 +241,12 @@ def _labels_identity(parameters):
 
 
 def _add_cavity(entry, result, suffix="", hollowed=True):
-    """The entry with "cavity_mm3" (0: too thin for a cavity) when the job hollowed its member (a
-    plate member's with suffix)."""
+    """The entry with "cavity_mm3" (0: too thin for a cavity) and "drain_holes" when the job hollowed
+    its member (a plate member's with suffix)."""
     cavity = result.get(f"cavity_mm3{suffix}")
-    return entry if cavity is None or not hollowed else dict(entry, cavity_mm3=cavity)
+    if cavity is None or not hollowed:
+        return entry
+    return dict(entry, cavity_mm3=cavity, drain_holes=result[f"drain_holes{suffix}"])
 
 
 def _add_label(entry, result, suffix=""):
@@ -355,9 +357,9 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     nowhere fails the member's job (its "error" names it), or with allow_unlabelled=True leaves
     it off ("label_height_mm" 0); with hollow, the letters are 1 mm less deep than the walls where
     that is less than 3 mm. hollow=WALL_MM hollows every member on its contours with walls
-    that thick (make_print_job's hollow_wall_mm, PrusaSlicer's 2 mm closing distance); each entry
-    then has "cavity_mm3" (0: too thin for a cavity). The cavity is sealed (no drain holes yet),
-    so the check counts it as a resin trap.
+    that thick (make_print_job's hollow_wall_mm, PrusaSlicer's 2 mm closing distance) and a 4 mm
+    drain hole under each cavity, through the bottom wall to the base; each entry then has
+    "cavity_mm3" (0: too thin for a cavity) and "drain_holes".
 
     Where the members are made (slicereuse_batch.py): workers=0 (the default) in this process;
     workers=N an embedded Dask LocalCluster of N worker processes (None: one per two cores, slicereuse_batch.default_workers);
@@ -548,7 +550,8 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
     whose footprint holds it); "require": a plate holding an island, a resin trap or a suction cup
     is not written, its entry's "error" naming each such finding, its member and place.
     labels, allow_unlabelled and hollow as for family(): each plate member's entry has
-    "label_height_mm" and "cavity_mm3", and the layout pictures name the members by their labels.
+    "label_height_mm", "cavity_mm3" and "drain_holes", and the layout pictures name the members by
+    their labels.
     Returns {"source", "members", "seconds", "arrange_seconds", "engine", "failed", "plates":
     [{"output", "layout", "members", "area_used", "layers", "points", "seconds", "worker"[,
     "min_similarity", "max_grey_difference"][, "resumed"]} or {"output", "layout", "members",

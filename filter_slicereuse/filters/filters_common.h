@@ -141,12 +141,14 @@ void report_labels(Host& host, const char* filter, const PlateJobOptions& o, con
 struct JobHollowing {
   double wall_mm;
   double closing_mm;
+  double drain_hole_mm;
 };
 ParamList<JobHollowing> job_hollowing_params();
 void set_job_hollowing(const JobHollowing& h, PlateJobOptions& o);
-// A hollowed plate's cavities: each member's logged (its volume, or why it stays solid; plate_label
-// names the plate, or is empty for a print job), and counted into result as cavity_mm3 (summed
-// with what is there; 0 when solid) and, with per_member, cavity_mm3_<member name>.
+// A hollowed plate's cavities: each member's logged (its volume and drain holes, or why it stays
+// solid; plate_label names the plate, or is empty for a print job), and counted into result as
+// cavity_mm3 and drain_holes (summed with what is there; 0 when solid) and, with per_member,
+// cavity_mm3_<member name> and drain_holes_<member name>.
 void report_hollowing(Host& host, const char* filter, const std::string& plate_label, const PlateJobStats& st,
                       const std::vector<std::string>& names, bool per_member, Result& result);
 

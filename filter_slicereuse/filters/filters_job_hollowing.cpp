@@ -2,6 +2,7 @@
 // it.
 #include "filters_common.h"
 #include "slicereuse/hollowing/cavity.h"
+#include "slicereuse/hollowing/drain_holes.h"
 
 namespace slicereuse::plugin {
 
@@ -16,31 +17,48 @@ ParamList<JobHollowing> job_hollowing_params() {
               kPrusaHollowingClosingMm, Range::at_least(0, "mm"),
               "PrusaSlicer's hollowing_closing_distance: the cavity is made this much deeper, then grown back by "
               "it, which drops its parts narrower than twice this and rounds its edges. 0: the cavity follows the "
-              "part's shape most closely.");
+              "part's shape most closely.")
+      .number(&JobHollowing::drain_hole_mm, "drain_hole_mm", "Hollow: drain hole diameter (mm)", kDrainHoleMm,
+              Range::at_least(0, "mm"),
+              "A drain hole of this diameter under every cavity, through the bottom wall to the base, so that the "
+              "resin drains and no cavity stays sealed (PrusaSlicer's holes are 4 mm by default). 0: no holes: the "
+              "cavity is sealed, and the check reports it as a resin trap.");
   return l;
 }
 
 void set_job_hollowing(const JobHollowing& h, PlateJobOptions& o) {
   o.hollowing.wall_mm = h.wall_mm;
   o.hollowing.closing_mm = h.closing_mm;
+  o.drain_hole_mm = h.drain_hole_mm;
 }
 
 void report_hollowing(Host& host, const char* filter, const std::string& plate_label, const PlateJobStats& st,
                       const std::vector<std::string>& names, bool per_member, Result& result) {
   result.emplace("cavity_mm3", 0.0);
+  result.emplace("drain_holes", int64_t(0));
   if (st.hollowing_seconds == 0) return;  // solid
   const std::string where = plate_label.empty() ? "" : plate_label + ": ";
   double total = 0;
+  size_t holes_total = 0;
   for (size_t m = 0; m < st.cavity_mm3.size(); ++m) {
     total += st.cavity_mm3[m];
-    if (per_member) result["cavity_mm3_" + names[m]] = st.cavity_mm3[m];
+    const std::vector<DrainHole>& holes = st.drain_holes[m];
+    holes_total += holes.size();
+    if (per_member) {
+      result["cavity_mm3_" + names[m]] = st.cavity_mm3[m];
+      result["drain_holes_" + names[m]] = int64_t(holes.size());
+    }
     host.log(st.hollowing_notes[m].empty()
-                 ? format("%s: %shollowed %s: a cavity of %.4g mm3", filter, where.c_str(), names[m].c_str(),
-                          st.cavity_mm3[m])
+                 ? format("%s: %shollowed %s: a cavity of %.4g mm3, %zu drain holes", filter, where.c_str(),
+                          names[m].c_str(), st.cavity_mm3[m], holes.size())
                  : format("%s: %s%s", filter, where.c_str(), st.hollowing_notes[m].c_str()));
+    for (const DrainHole& h : holes)
+      host.log(format("%s: %s%s: drain hole under its cavity at (%.2f, %.2f) mm, through layers 0-%zu", filter,
+                      where.c_str(), names[m].c_str(), h.x_mm + 0.0, h.y_mm + 0.0, h.layer - 1));
   }
   host.log(format("%s: %shollowing %.3f s", filter, where.c_str(), st.hollowing_seconds));
   result["cavity_mm3"] = total + std::get<double>(result["cavity_mm3"]);
+  result["drain_holes"] = int64_t(holes_total) + std::get<int64_t>(result["drain_holes"]);
 }
 
 }  // namespace slicereuse::plugin

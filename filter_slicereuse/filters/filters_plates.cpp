@@ -441,7 +441,7 @@ FilterSpec plate_job_filter() {
                            "direct_members", "encoding_cached", "arrange_seconds", "read_seconds", "slicing_seconds",
                            "seconds", "support_seconds", "area_used_*", "output_*", "layout_*", "direct_reason_*",
                            "sliced_directly_*", "support_points_*", "kept_*", "moved_*", "added_*", "dropped_*",
-                           "label_height_mm_*", "cavity_mm3", "cavity_mm3_*"},
+                           "label_height_mm_*", "cavity_mm3", "cavity_mm3_*", "drain_holes", "drain_holes_*"},
                           true));
 }
 

@@ -160,7 +160,7 @@ FilterSpec print_job_filter() {
                       with_printability_keys(with_display_keys({"layers", "points", "transferred_layers", "resliced_layers", "encoding_cached",
                                          "layer_ranges", "reused", "direct_reason", "output_path", "support_points", "kept",
                                          "moved", "added", "dropped", "read_seconds", "slicing_seconds", "support_seconds",
-                                         "masks_seconds", "seconds", "label_height_mm", "cavity_mm3"}),
+                                         "masks_seconds", "seconds", "label_height_mm", "cavity_mm3", "drain_holes"}),
                                              false));
 }
 

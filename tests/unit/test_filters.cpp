@@ -211,7 +211,7 @@ TEST_F(FiltersThroughAFakeHost, EveryFilterRunsAndReturnsEveryFigureItLogs) {
                    "reused", "direct_reason", "output_path", "support_points", "kept", "moved", "added", "dropped",
                    "read_seconds", "slicing_seconds", "support_seconds", "masks_seconds", "seconds", "islands",
                    "overhangs", "resin_traps", "suction_cups", "touching_bounds", "trapped_mm3", "label_height_mm",
-                   "cavity_mm3"});
+                   "cavity_mm3", "drain_holes"});
   EXPECT_EQ(keys_of(job), job_keys);
   EXPECT_EQ(std::get<double>(job.at("label_height_mm")), -1);  // no labels
   // A sphere on the plate: every layer rests on the one below, nothing holds air.
@@ -344,7 +344,7 @@ TEST_F(FiltersThroughAFakeHost, MakePlateJobPutsTheShownMeshesOnPlatesAndReadsIt
                                                    "resliced_layers", "direct_members", "encoding_cached",
                                                    "arrange_seconds", "read_seconds", "slicing_seconds",
                                                    "support_seconds", "seconds", "area_used_1", "output_1",
-                                                   "layout_1", "cavity_mm3", "islands", "overhangs", "resin_traps", "suction_cups",
+                                                   "layout_1", "cavity_mm3", "drain_holes", "islands", "overhangs", "resin_traps", "suction_cups",
                                                    "touching_bounds", "trapped_mm3", "islands_mesh0", "overhangs_mesh0",
                                                    "resin_traps_mesh0", "suction_cups_mesh0", "touching_bounds_mesh0",
                                                    "islands_mesh1", "overhangs_mesh1", "resin_traps_mesh1",
@@ -541,9 +541,9 @@ TEST_F(FiltersThroughAFakeHost, JobsHollowTheirMembers) {
   FakeHost host;
   host.meshes = {test::make_box(-5, -5, 0, 5, 5, 6), test::make_box(8, -5, 0, 18, 5, 2)};
   const FilterSpec& plate_spec = spec_named("make_plate_job");
-  const Result plate = plate_spec.run(
-      defaults(plate_spec, {{"output_path", path("plate.goo")}}, {{"hollow_wall_mm", 1}, {"hollow_closing_mm", 0}}),
-      host);
+  const Result plate = plate_spec.run(defaults(plate_spec, {{"output_path", path("plate.goo")}},
+                                              {{"hollow_wall_mm", 1}, {"hollow_closing_mm", 0}, {"drain_hole_mm", 0}}),
+                                     host);
   EXPECT_NEAR(std::get<double>(plate.at("cavity_mm3_mesh0")), 8 * 8 * 4, 1e-6);
   EXPECT_EQ(std::get<double>(plate.at("cavity_mm3_mesh1")), 0);
   EXPECT_NEAR(std::get<double>(plate.at("cavity_mm3")), 8 * 8 * 4, 1e-6);
@@ -555,11 +555,18 @@ TEST_F(FiltersThroughAFakeHost, JobsHollowTheirMembers) {
             host.lines.end());
 
   const FilterSpec& job_spec = spec_named("make_print_job");
-  const Result hollow =
-      job_spec.run(defaults(job_spec, {{"output_path", path("job.goo")}}, {{"hollow_wall_mm", 1}, {"hollow_closing_mm", 0}}),
-                   host);
+  const Result hollow = job_spec.run(defaults(job_spec, {{"output_path", path("job.goo")}},
+                                              {{"hollow_wall_mm", 1}, {"hollow_closing_mm", 0}, {"drain_hole_mm", 0}}),
+                                     host);
   EXPECT_NEAR(std::get<double>(hollow.at("cavity_mm3")), 8 * 8 * 4, 1e-6);
   EXPECT_EQ(count(hollow, "resin_traps"), 1);
+  // With the default drain hole (4 mm) under the cavity, nothing is sealed.
+  const Result drained =
+      job_spec.run(defaults(job_spec, {{"output_path", path("drained.goo")}}, {{"hollow_wall_mm", 1}, {"hollow_closing_mm", 0}}),
+                   host);
+  EXPECT_EQ(count(drained, "drain_holes"), 1);
+  EXPECT_EQ(count(drained, "resin_traps"), 0);
+  EXPECT_NEAR(std::get<double>(drained.at("cavity_mm3")), 8 * 8 * 4, 1e-6);
   const Result solid = job_spec.run(defaults(job_spec, {{"output_path", path("solid.goo")}}), host);
   EXPECT_EQ(std::get<double>(solid.at("cavity_mm3")), 0);
   EXPECT_EQ(count(solid, "resin_traps"), 0);

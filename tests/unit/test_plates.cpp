@@ -26,6 +26,7 @@
 #include "slicereuse/plates/placements_file.h"
 #include "slicereuse/plates/plate_job.h"
 #include "slicereuse/plates/plate_layout.h"
+#include "slicereuse/regions/label_region.h"
 #include "slicereuse/png/mask_png.h"
 #include "slicereuse/printfiles/check_print_file.h"
 #include "slicereuse/printfiles/compare_mask_stacks.h"
@@ -1192,6 +1193,68 @@ TEST_F(PlateJobTest, AHollowedBoxIsOneResinTrapOfItsCavityAndItsWallsKeepTheThic
 // Reused and direct hollowed plates give identical masks, made where drawn, in ranges and in one, with
 // the elephant-foot compensation (after the hollowing) and anti-aliasing: the cavity is computed
 // from the member's layers, which reuse makes equal to direct slicing's.
+// Drain holes (#36 item 2): each cavity gets a hole under its lowest layer, through the bottom
+// wall to the base, and no cavity stays sealed: the check finds no resin trap where, without
+// holes, it found one per cavity. Two boxes side by side, joined by a bar on their floor: one
+// part, two cavities, two holes, each under its cavity's middle; a sphere's hole under its
+// cavity's lowest point. A label on the base keeps clear of the holes.
+TEST_F(PlateJobTest, DrainHolesOpenEveryCavityThroughTheBase) {
+  Mesh twin = test::make_box(-18, -5, 0, -2, 5, 6);
+  test::append_mesh(twin, test::make_box(2, -5, 0, 18, 5, 6));
+  test::append_mesh(twin, test::make_box(-2.5, -1, 0, 2.5, 1, 0.5));  // overlapping both: one part
+  Mesh sphere = test::make_sphere(5, 40, 80);
+  for (size_t v = 2; v < sphere.V.size(); v += 3) sphere.V[v] += 5;
+  for (const auto& [mesh, name, cavities] : {std::tuple{twin, "twin", size_t(2)}, {sphere, "sphere", size_t(1)}}) {
+    SCOPED_TRACE(name);
+    PlateJobOptions o;
+    o.slicing.thickness = 0.1;
+    o.check_printability = true;
+    o.hollowing.wall_mm = 1;
+    o.hollowing.closing_mm = 0;
+    const PlateJobStats sealed = export_plate({mesh}, o, display(800, 600), path(std::string(name) + "_sealed"));
+    EXPECT_EQ(sealed.printability.count(FindingKind::ResinTrap), cavities);
+    o.drain_hole_mm = 2;
+    const PlateJobStats drained = export_plate({mesh}, o, display(800, 600), path(name));
+    ASSERT_EQ(drained.drain_holes.size(), 1u);
+    ASSERT_EQ(drained.drain_holes[0].size(), cavities);
+    EXPECT_EQ(drained.printability.count(FindingKind::ResinTrap), 0u);
+    EXPECT_EQ(drained.printability.count(FindingKind::SuctionCup), 0u);
+    EXPECT_EQ(drained.drain_holes[0][0].layer, 10u);  // the cavities begin 1 mm up
+    if (std::string(name) == "twin") {
+      EXPECT_NEAR(drained.drain_holes[0][0].x_mm, -10, 1e-6);
+      EXPECT_NEAR(drained.drain_holes[0][1].x_mm, 10, 1e-6);
+    } else {
+      EXPECT_NEAR(drained.drain_holes[0][0].x_mm, 0, 0.05);
+      EXPECT_NEAR(drained.drain_holes[0][0].y_mm, 0, 0.05);
+    }
+    if (std::string(name) != "twin") continue;  // the sphere's first layer is smaller than its hole
+    // The twin's layer 0 lost each hole's disc (a 24-gon inscribed in a 2 mm circle), no more.
+    MaskStack a(path(std::string(name) + "_sealed")), b(path(name));
+    uint64_t before = 0, after = 0;
+    for (uint8_t v : layer(a, 0).pixels) before += v != 0;
+    for (uint8_t v : layer(b, 0).pixels) after += v != 0;
+    EXPECT_NEAR(double(before - after), double(cavities) * M_PI / 0.01, double(cavities) * 40) << "pixels of 0.1 mm";
+  }
+  // A label on the twin's base keeps 1 mm from both holes.
+  PlateJobOptions o;
+  o.slicing.thickness = 0.1;
+  o.hollowing.wall_mm = 2;
+  o.hollowing.closing_mm = 0;
+  o.drain_hole_mm = 2;
+  o.labels = {"AB"};
+  o.label.depth_mm = 1;
+  const PlateJobStats st = export_plate({twin}, o, display(800, 600), path("labelled"));
+  ASSERT_EQ(st.drain_holes[0].size(), 2u);
+  ASSERT_GT(st.label_heights_mm[0], 0);
+  const std::array<double, 2> box = label_box_mm("AB", st.label_heights_mm[0]);
+  for (const DrainHole& h : st.drain_holes[0]) {
+    const double dx = std::fabs(h.x_mm - st.label_places[0][0]), dy = std::fabs(h.y_mm - st.label_places[0][1]);
+    const bool turned = std::fabs(st.label_places[0][2]) == 90;
+    EXPECT_TRUE(dx > 0.5 * (turned ? box[1] : box[0]) + 1 || dy > 0.5 * (turned ? box[0] : box[1]) + 1)
+        << "hole at " << h.x_mm << ", " << h.y_mm;
+  }
+}
+
 TEST_F(PlateJobTest, ReusedHollowedMembersEqualDirectSlicing) {
   test::FamilyOptions fo;
   fo.shape = "sphere";

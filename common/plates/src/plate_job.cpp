@@ -211,6 +211,7 @@ void hollow_members(std::vector<PlateMember>& members, const PlateJobOptions& o,
                     const Progress& progress) {
   const size_t n = st.direct_reasons.size();
   st.cavity_mm3.assign(n, 0);
+  st.drain_holes.assign(n, {});
   st.hollowing_notes.assign(n, "");
   if (o.hollowing.wall_mm == 0) return;
   const auto t = std::chrono::steady_clock::now();
@@ -222,6 +223,7 @@ void hollow_members(std::vector<PlateMember>& members, const PlateJobOptions& o,
     layers.thickness = st.thickness;
     p.cavity = layers_cavity(layers, o.hollowing, sub_progress(mp, 0.2, 1));
     st.cavity_mm3[m] = cavity_volume_mm3(p.cavity, st.thickness);
+    if (o.drain_hole_mm > 0 && st.cavity_mm3[m] > 0) st.drain_holes[m] = add_drain_holes(p.cavity, o.drain_hole_mm);
     if (st.cavity_mm3[m] == 0) {
       p.cavity.clear();
       st.hollowing_notes[m] =
@@ -312,8 +314,9 @@ std::vector<BaseLabel> base_labels(const std::vector<PlateMember>& members, size
     if (p.support || text.empty()) continue;
     const std::string name = p.owner < o.names.size() ? o.names[p.owner] : format("member %zu", p.owner + 1);
     const size_t layers = engraved_layers(o.label.depth_mm, st.thickness, p.layers());
-    const Slices first = p.transfer ? p.transfer->layers(0, layers)
-                                    : slice_planes(*p.mesh, {p.planes.begin(), p.planes.begin() + long(layers)}, {}, false);
+    Slices first = p.transfer ? p.transfer->layers(0, layers)
+                              : slice_planes(*p.mesh, {p.planes.begin(), p.planes.begin() + long(layers)}, {}, false);
+    if (!p.cavity.empty()) subtract_cavity(first, 0, p.cavity);  // the label keeps clear of drain holes
     BaseLabel b = place_base_label(first, double(p.layers()) * st.thickness, text, name, o.label);
     if (!b.placement.placed) {
       if (o.allow_unlabelled) continue;
@@ -513,6 +516,8 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
                            const std::string& output_path, const Progress& progress) {
   PlateJobStats st;
   check_hollowing(o.hollowing);
+  if (!(std::isfinite(o.drain_hole_mm) && o.drain_hole_mm >= 0))
+    throw Error(format("a drain hole's diameter is %g mm; it must be a finite number, 0 for no holes", o.drain_hole_mm));
   std::vector<PlateMember> members = prepare_members(placed, o, st);
   const PlateFrame frame{st.z_start, st.thickness, o.layers_below};
   size_t L = 0;

@@ -8,6 +8,7 @@
 #include "slicereuse/regions/clip_regions.h"
 #include "slicereuse/regions/label_region.h"
 #include "slicereuse/regions/layer_region.h"
+#include "slicereuse/regions/turns_by_15_degrees.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
 
@@ -15,7 +16,7 @@ namespace slicereuse {
 namespace {
 
 constexpr double kStepShare = 1.0 / 250, kMinStepMm = 0.1;
-constexpr int kAngles = 12;            // by 15 degrees over half a turn (turn_of_angle)
+constexpr int kAngles = 12;            // by 15 degrees over half a turn (turns_by_15_degrees.h)
 constexpr size_t kCentresTried = 16;   // per height and angle, farthest from the edges first
 constexpr double kHeightStep = 0.9;    // each height tried is this share of the one before
 
@@ -133,15 +134,6 @@ FaceGrid face_grid(const ClipperLib::Paths& face) {
   return g;
 }
 
-// The cosine and sine of a multiple of 15 degrees from square roots, which IEEE arithmetic rounds
-// the same everywhere (a library's cos and sin may differ in the last bit, and so the masks).
-std::array<double, 2> turn_of_angle(double angle_deg) {
-  const double r2 = std::sqrt(2.0), r3 = std::sqrt(3.0), r6 = std::sqrt(6.0);
-  const double c15 = (r6 + r2) / 4, s15 = (r6 - r2) / 4;
-  const double table[7][2] = {{1, 0}, {c15, s15}, {r3 / 2, 0.5}, {r2 / 2, r2 / 2}, {0.5, r3 / 2}, {s15, c15}, {0, 1}};
-  const int k = int(std::lround(std::fabs(angle_deg) / 15));
-  return {table[k][0], angle_deg < 0 ? -table[k][1] : table[k][1]};
-}
 
 ClipperLib::Paths placed_region(const ClipperLib::Paths& label, double x_mm, double y_mm, const std::array<double, 2>& cs) {
   const double c = cs[0], s = cs[1];
@@ -208,7 +200,7 @@ LabelPlacement place_label(const ClipperLib::Paths& face, const std::string& tex
     const ClipperLib::Paths label = label_region(text, h, mirrored);
     for (int k = 0; k < kAngles; ++k) {
       const double angle = 15.0 * ((k + 1) / 2) * (k % 2 ? 1 : -1);  // 0, 15, -15, 30, ..., -75, 90
-      const std::array<double, 2> cs = turn_of_angle(angle);
+      const std::array<double, 2> cs = turn_by_15_degrees(int(std::lround(angle / 15)));
       const double c = cs[0], s = cs[1];
       size_t tried = 0;
       for (size_t centre : centres) {

@@ -28,8 +28,9 @@
 // its layers, made as its masks' are (so a reused member's cavity is its direct slicing's), and
 // taken out of its layers before anything else sees them (whole_stack, the elephant-foot
 // compensation, which then shrinks the cavity's walls too, as PrusaSlicer's order does, and the
-// masks); supports stay solid. The cavity is sealed: the printability check reports it as a
-// resin trap until drain holes open it. A member too thin for any cavity stays solid, and
+// masks); supports stay solid. Without drain holes (options.drain_hole_mm) the cavity is sealed,
+// and the printability check reports it as a resin trap; with them each cavity drains through
+// its base. A member too thin for any cavity stays solid, and
 // stats.hollowing_notes says so.
 // Elephant foot (profile.elephant_foot_mm > 0): each member's faded layers, counted from the
 // plate's layer 0 (its pad's bottom) and compensated with its supports together, apart from the
@@ -61,6 +62,7 @@
 #include <vector>
 
 #include "slicereuse/hollowing/cavity.h"
+#include "slicereuse/hollowing/drain_holes.h"
 #include "slicereuse/mesh/mesh.h"
 #include "slicereuse/printability/printability_report.h"
 #include "slicereuse/printfiles/export_masks.h"
@@ -118,8 +120,11 @@ struct PlateJobOptions {
   std::vector<std::string> labels;
   LabelOptions label;
   bool allow_unlabelled = false;
-  // Each member hollowed with walls of hollowing.wall_mm (0: solid) and its closing distance.
+  // Each member hollowed with walls of hollowing.wall_mm (0: solid) and its closing distance;
+  // with drain_hole_mm > 0, a drain hole of that diameter under each cavity (drain_holes.h),
+  // through the bottom wall to the base, so that none stays sealed.
   HollowingOptions hollowing;
+  double drain_hole_mm = 0;
 };
 
 // Where a finding of the plate's printability lies: the member (an index into placed) whose
@@ -147,6 +152,7 @@ struct PlateJobStats {
   // With options.hollowing: per member, its cavity's volume (mm^3), and "" or why it has none;
   // the cavities' computation, members' layers included, in seconds.
   std::vector<double> cavity_mm3;
+  std::vector<std::vector<DrainHole>> drain_holes;  // per member, with options.drain_hole_mm
   std::vector<std::string> hollowing_notes;
   double hollowing_seconds = 0;
   MaskExportStats masks;
