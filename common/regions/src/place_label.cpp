@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "slicereuse/regions/clip_regions.h"
@@ -218,9 +219,14 @@ LabelPlacement place_label(const ClipperLib::Paths& face, const std::string& tex
             corners = state == 1 || (state == -1 && covers(fit, cx, cy));
           }
         if (!corners) continue;
-        ClipperLib::Paths placed = placed_region(label, x, y, cs);
-        if (inside(placed, fit)) {
-          best = {true, x, y, angle, h, std::move(placed)};
+        // The whole box, not only the strokes: a hole of the face (a drain hole) between the
+        // letters would break the label up.
+        ClipperLib::Path box_loop;
+        for (const auto& [u, v] : {std::pair{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}})
+          box_loop.push_back({region_units(x + c * u * box[0] - s * v * box[1]),
+                              region_units(y + s * u * box[0] + c * v * box[1])});
+        if (inside({box_loop}, fit)) {
+          best = {true, x, y, angle, h, placed_region(label, x, y, cs)};
           return best;
         }
         if (++tried == kCentresTried) break;
