@@ -29,7 +29,7 @@ Every print file is checked as it is written, as UVtools checks it: each entry (
 each plate member's) has "printability": {"islands", "overhangs", "resin_traps", "suction_cups",
 "touching_bounds"[, "trapped_mm3"]}. --require-printable: a member (or plate) whose file would
 hold an island, a resin trap or a suction cup is not written; its entry's "error" names each.
---no-check: no check (it costs about half again a member's time; bench/RESULTS.md).
+--no-check: no check (it adds about two fifths to a member's time; bench/RESULTS.md).
 --labels: each member's file stem (or, --labels FILE.csv, its row's label: docs/formats.md,
 "Labels file") is cut 3 mm deep into its base, mirrored to read from below, as large as fits up
 to 7.5 mm; each member's entry gains "label_height_mm", and the plates' layout pictures name the
