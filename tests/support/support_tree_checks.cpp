@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "slicereuse/crossparam/surface_grid.h"
+#include "slicereuse/regions/clip_regions.h"
 #include "slicereuse/regions/layer_region.h"
 #include "slicereuse/slicing/layer_planes.h"
 #include "slicereuse/slicing/slice_layers.h"
@@ -17,14 +18,6 @@ using ClipperLib::Paths;
 
 Paths region_of(const Slices& s, size_t k) { return layer_region(LayerView(s, k)); }
 
-Paths clip(const Paths& a, const Paths& b, ClipperLib::ClipType type) {
-  ClipperLib::Clipper c;
-  c.AddPaths(a, ClipperLib::ptSubject, true);
-  c.AddPaths(b, ClipperLib::ptClip, true);
-  Paths out;
-  c.Execute(type, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-  return out;
-}
 
 ClipperLib::IntRect bounds(const ClipperLib::Path& path) {
   ClipperLib::IntRect b{path[0].X, path[0].Y, path[0].X, path[0].Y};
@@ -55,7 +48,7 @@ Paths zones_at(const std::vector<HeadZone>& zones, double z) {
                           region_units(h.y + R * std::sin(2 * M_PI * i / 64)));
     out.push_back(circle);
   }
-  return clip(out, {}, ClipperLib::ctUnion);
+  return clip_regions(out, {}, ClipperLib::ctUnion);
 }
 
 }  // namespace
@@ -69,12 +62,12 @@ TreeSections check_tree_sections(const Mesh& part, const SupportTree& tree, doub
   Paths below;
   for (size_t k = 0; k < planes.size(); ++k) {
     // The supports' shells overlap: their union once, for every clip below.
-    const Paths p = region_of(ps, k), s = clip(region_of(ss, k), {}, ClipperLib::ctUnion);
+    const Paths p = region_of(ps, k), s = clip_regions(region_of(ss, k), {}, ClipperLib::ctUnion);
     if (k == 0) t.ground_area_mm2 = region_area_mm2(s);
-    const Paths both = clip(p, s, ClipperLib::ctIntersection);
+    const Paths both = clip_regions(p, s, ClipperLib::ctIntersection);
     if (!both.empty()) {
       ++t.overlapping_layers;
-      const Paths out = clip(both, zones_at(tree.head_zones, planes[k]), ClipperLib::ctDifference);
+      const Paths out = clip_regions(both, zones_at(tree.head_zones, planes[k]), ClipperLib::ctDifference);
       const double outside = region_area_mm2(out);
       if (outside > t.outside_zones_mm2) {
         t.outside_zones_mm2 = outside, t.outside_zones_layer = k, t.outside_zones_z = planes[k];
@@ -96,7 +89,7 @@ TreeSections check_tree_sections(const Mesh& part, const SupportTree& tree, doub
       for (const ClipperLib::Path& piece : s)
         if (ClipperLib::Orientation(piece)) outer.push_back(&piece), box.push_back(bounds(piece));
       std::vector<bool> rests(outer.size(), false);
-      for (const ClipperLib::Path& r : clip(s, below, ClipperLib::ctIntersection))
+      for (const ClipperLib::Path& r : clip_regions(s, below, ClipperLib::ctIntersection))
         for (size_t i = 0; i < outer.size() && !r.empty(); ++i)
           if (!rests[i] && near_or_in(r[0], *outer[i], box[i])) rests[i] = true;
       for (size_t i = 0; i < outer.size(); ++i)
@@ -106,7 +99,7 @@ TreeSections check_tree_sections(const Mesh& part, const SupportTree& tree, doub
           t.first_support_island_xy[1] = double(box[i].top + box[i].bottom) / 2 / kRegionScale;
         }
     }
-    below = clip(p, s, ClipperLib::ctUnion);
+    below = clip_regions(p, s, ClipperLib::ctUnion);
   }
   return t;
 }

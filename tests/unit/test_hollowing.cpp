@@ -12,6 +12,7 @@
 #include "family.h"
 #include "slicereuse/hollowing/cavity.h"
 #include "slicereuse/hollowing/hollow_layers.h"
+#include "slicereuse/regions/clip_regions.h"
 #include "slicereuse/regions/layer_region.h"
 #include "slicereuse/slicing/slice_layers.h"
 
@@ -114,15 +115,6 @@ TEST(Cavity, KeepsTheWallOnASlopeIn3D) {
   EXPECT_LT(widest, corner - 0.1);
 }
 
-Paths clipped(const Paths& a, const Paths& b, ClipperLib::ClipType type) {
-  ClipperLib::Clipper c;
-  c.AddPaths(a, ClipperLib::ptSubject, true);
-  c.AddPaths(b, ClipperLib::ptClip, true);
-  Paths out;
-  c.Execute(type, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-  return out;
-}
-
 Paths offset(const Paths& region, double mm) {
   ClipperLib::ClipperOffset o(2, kCavityArcToleranceMm * kRegionScale);
   o.AddPaths(region, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
@@ -149,7 +141,7 @@ std::vector<Paths> by_ball_naively(const std::vector<Paths>& layers, double h, d
     Paths acc = offset(layers[size_t(k)], grow ? r : -r);
     for (long j = std::max(0L, k - reach); j <= std::min(n - 1, k + reach); ++j) {
       const double dz = double(j - k) * h, radius = std::sqrt(std::max(0.0, r * r - dz * dz));
-      acc = clipped(acc, offset(layers[size_t(j)], grow ? radius : -radius),
+      acc = clip_regions(acc, offset(layers[size_t(j)], grow ? radius : -radius),
                     grow ? ClipperLib::ctUnion : ClipperLib::ctIntersection);
     }
     out[size_t(k)] = acc;
@@ -182,7 +174,7 @@ TEST(Cavity, EqualsTheDefinitionTermByTerm) {
         volume += region_area_mm2(expected[k]) * 0.1;
         // Round offsets' chords may lie either side of another offset's: no further apart than
         // the arc tolerance along the boundary.
-        EXPECT_LE(region_area_mm2(clipped(cavity[k], expected[k], ClipperLib::ctXor)),
+        EXPECT_LE(region_area_mm2(clip_regions(cavity[k], expected[k], ClipperLib::ctXor)),
                   perimeter_mm(expected[k]) * kCavityArcToleranceMm)
             << "layer " << k;
       }
