@@ -30,11 +30,7 @@ double mm(ClipperLib::cInt units) { return double(units) / kRegionScale; }
 
 ClipperLib::IntPoint at(double x, double y) { return {region_units(x), region_units(y)}; }
 
-bool covers(const Paths& region, double x, double y) {
-  int inside = 0;
-  for (const Path& p : region) inside += ClipperLib::PointInPolygon(at(x, y), p) != 0;
-  return inside % 2 == 1;
-}
+bool covers(const Paths& region, double x, double y) { return region_covers(region, at(x, y)); }
 
 Paths rect(double x0, double y0, double x1, double y1) { return {{at(x0, y0), at(x1, y0), at(x1, y1), at(x0, y1)}}; }
 

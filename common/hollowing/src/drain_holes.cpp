@@ -44,12 +44,6 @@ std::array<double, 2> centroid(const ClipperLib::Paths& piece) {
   return {cx / (3 * area), cy / (3 * area)};
 }
 
-bool covers(const ClipperLib::Paths& region, const ClipperLib::IntPoint& p) {
-  int loops = 0;
-  for (const ClipperLib::Path& loop : region) loops += ClipperLib::PointInPolygon(p, loop) != 0;
-  return loops % 2 == 1;
-}
-
 // Where a hole of radius r (Clipper units) under the piece goes.
 ClipperLib::IntPoint hole_centre(const ClipperLib::Paths& piece, double r) {
   const std::array<double, 2> c = centroid(piece);
@@ -58,7 +52,7 @@ ClipperLib::IntPoint hole_centre(const ClipperLib::Paths& piece, double r) {
   offset.AddPaths(piece, ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
   ClipperLib::Paths room;
   offset.Execute(room, -r);
-  if (room.empty() || covers(room, middle)) return middle;
+  if (room.empty() || region_covers(room, middle)) return middle;
   // The vertex of the shrunk piece nearest the centroid: the hole lies inside the piece there.
   ClipperLib::IntPoint best = room[0][0];
   double nearest = INFINITY;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "slicereuse/regions/layer_region.h"
 #include "slicereuse/regions/segment_distance.h"
 
 namespace slicereuse {
@@ -51,13 +52,6 @@ bool chords_cross(const IndexedRegion::Run& r, const IndexedRegion::Run& s) {
   const double o1 = side(r.ax, r.ay, r.bx, r.by, s.ax, s.ay), o2 = side(r.ax, r.ay, r.bx, r.by, s.bx, s.by);
   const double o3 = side(s.ax, s.ay, s.bx, s.by, r.ax, r.ay), o4 = side(s.ax, s.ay, s.bx, s.by, r.bx, r.by);
   return ((o1 > 0) != (o2 > 0)) && ((o3 > 0) != (o4 > 0));
-}
-
-// Whether p lies in the region (inside an odd number of its loops).
-bool in_region(const IntPoint& p, const ClipperLib::Paths& region) {
-  bool in = false;
-  for (const ClipperLib::Path& loop : region) in ^= ClipperLib::PointInPolygon(p, loop) != 0;
-  return in;
 }
 
 // Consecutive items (runs or groups) kGroupSize at a time, with their boxes.
@@ -161,9 +155,9 @@ bool clears(const IndexedRegion& inner, const IndexedRegion& outer, double dista
   // The boundaries do not meet, so each loop lies wholly inside or outside the other region:
   // inner lies in outer when every inner loop does and no outer loop lies in inner.
   for (const ClipperLib::Path& loop : in)
-    if (!in_region(loop[0], out)) return false;
+    if (!region_covers(out, loop[0])) return false;
   for (const ClipperLib::Path& loop : out)
-    if (in_region(loop[0], in)) return false;
+    if (region_covers(in, loop[0])) return false;
   return true;
 }
 

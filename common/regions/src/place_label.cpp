@@ -148,14 +148,6 @@ ClipperLib::Paths placed_region(const ClipperLib::Paths& label, double x_mm, dou
   return out;
 }
 
-// Whether (x, y) mm lies inside the region (its loops do not cross: inside an odd number).
-bool covers(const ClipperLib::Paths& region, double x, double y) {
-  const ClipperLib::IntPoint p{region_units(x), region_units(y)};
-  int loops = 0;
-  for (const ClipperLib::Path& loop : region) loops += ClipperLib::PointInPolygon(p, loop) != 0;
-  return loops % 2 == 1;
-}
-
 bool inside(const ClipperLib::Paths& label, const ClipperLib::Paths& fit) {
   return clip_regions(label, fit, ClipperLib::ctDifference).empty();
 }
@@ -216,7 +208,7 @@ LabelPlacement place_label(const ClipperLib::Paths& face, const std::string& tex
             if (!corners) break;
             const double cx = x + c * u * box[0] - s * v * box[1], cy = y + s * u * box[0] + c * v * box[1];
             const int state = g.cell_state(cx, cy);
-            corners = state == 1 || (state == -1 && covers(fit, cx, cy));
+            corners = state == 1 || (state == -1 && region_covers(fit, {region_units(cx), region_units(cy)}));
           }
         if (!corners) continue;
         // The whole box, not only the strokes: a hole of the face (a drain hole) between the

@@ -28,4 +28,12 @@ void region_into_layer(const ClipperLib::Paths& region, double z, Slices& out);
 // Area in mm^2 of a region (outer loops positive, holes negative).
 double region_area_mm2(const ClipperLib::Paths& region);
 
+// Whether point p (Clipper units) lies in a region whose loops do not cross: inside an odd
+// number of them (on a loop counts as inside it).
+inline bool region_covers(const ClipperLib::Paths& region, const ClipperLib::IntPoint& p) {
+  bool in = false;
+  for (const ClipperLib::Path& loop : region) in ^= ClipperLib::PointInPolygon(p, loop) != 0;
+  return in;
+}
+
 }  // namespace slicereuse
