@@ -10,6 +10,7 @@
 #include "filter_api.h"
 #include "filter_params.h"
 #include "slicereuse/formats/slice_files.h"
+#include "slicereuse/hollowing/cavity.h"
 #include "slicereuse/plates/plate_job.h"
 #include "slicereuse/printer/printer_profile.h"
 #include "slicereuse/printfiles/export_masks.h"
@@ -35,6 +36,7 @@ FilterSpec transfer_support_points_filter();
 FilterSpec build_supports_filter();
 FilterSpec check_printability_filter();
 FilterSpec add_labels_filter();
+FilterSpec hollow_mesh_filter();
 
 // The method's reference, closing every description.
 extern const char* const kReference;
@@ -138,9 +140,11 @@ void report_labels(Host& host, const char* filter, const PlateJobOptions& o, con
 // Whether a print or plate job hollows its members (PrusaSlicer's hollowing, computed on the
 // contours: cavity.h, plate_job.h; filters_job_hollowing.cpp): walls of wall_mm (0: solid) and
 // PrusaSlicer's closing distance. The same parameters in both filters.
+// hollowing_params: the cavity's (hollow_wall_mm, default default_wall_mm, and hollow_closing_mm),
+// for the jobs (0: solid) and Hollow Mesh and Add Drain Holes (PrusaSlicer's 3 mm).
+ParamList<HollowingOptions> hollowing_params(double default_wall_mm);
 struct JobHollowing {
-  double wall_mm;
-  double closing_mm;
+  HollowingOptions cavity;
   double drain_hole_mm;
 };
 ParamList<JobHollowing> job_hollowing_params();
@@ -188,6 +192,16 @@ std::vector<MemberSupports> job_member_supports(const std::vector<const Mesh*>& 
 // suffix ("" or "_<member>").
 void add_support_figures(const MemberSupports& s, const std::string& suffix, Result& result);
 inline double support_seconds(const MemberSupports& s) { return s.points_seconds + s.tree_seconds; }
+
+// The layer_thickness and z_start parameters of the filters that slice the current mesh to show
+// what a print job would do with it (supports, hollowing): the planes a print job slices it on.
+template <class P>
+void add_planes(ParamList<P>& l) {
+  l.number(&P::layer_thickness, "layer_thickness", "Layer thickness (mm)", 0.1, Range::above(0, "mm"),
+           "Distance between slicing planes, in mm: the layers a print job slices the mesh into.")
+      .number(&P::z_start, "z_start", "Start height (mm)", kLowestVertexZStart, Range::any(),
+              "Bottom of the first layer, in mm; at or below -1e29 (the default): the lowest vertex of the mesh.");
+}
 
 // The mesh_file parameter of the filters that work on one mesh: the mesh read straight from a
 // file instead of the current mesh (a batch's way, without a layer).

@@ -6,18 +6,28 @@
 
 namespace slicereuse::plugin {
 
-ParamList<JobHollowing> job_hollowing_params() {
-  ParamList<JobHollowing> l;
-  l.number(&JobHollowing::wall_mm, "hollow_wall_mm", "Hollow: wall thickness (mm)", 0, Range::at_least(0, "mm"),
-           "Hollow every member, keeping walls at least this thick in mm (PrusaSlicer's hollowing_min_thickness; "
-           "its profiles' 3 mm): the cavity is every point farther than this inside the part, in 3-D, computed "
-           "on the layers' contours. 0 (the default): solid. The cavity is sealed until drain holes open it, so "
-           "the printability check reports it as a resin trap.")
-      .number(&JobHollowing::closing_mm, "hollow_closing_mm", "Hollow: closing distance (mm)",
+ParamList<HollowingOptions> hollowing_params(double default_wall_mm) {
+  const std::string wall_tooltip =
+      "Hollow the part, keeping walls at least this thick in mm (PrusaSlicer's hollowing_min_thickness; its "
+      "profiles' 3 mm): the cavity is every point farther than this inside the part, in 3-D, computed on the "
+      "layers' contours. " +
+      (default_wall_mm == 0 ? std::string("0 (the default): solid. ")
+                            : format("%g mm by default; 0: solid, nothing to hollow. ", default_wall_mm)) +
+      "The cavity is sealed until drain holes open it, so the printability check reports it as a resin trap.";
+  ParamList<HollowingOptions> l;
+  l.number(&HollowingOptions::wall_mm, "hollow_wall_mm", "Hollow: wall thickness (mm)", default_wall_mm,
+           Range::at_least(0, "mm"), wall_tooltip.c_str())
+      .number(&HollowingOptions::closing_mm, "hollow_closing_mm", "Hollow: closing distance (mm)",
               kPrusaHollowingClosingMm, Range::at_least(0, "mm"),
               "PrusaSlicer's hollowing_closing_distance: the cavity is made this much deeper, then grown back by "
               "it, which drops its parts narrower than twice this and rounds its edges. 0: the cavity follows the "
-              "part's shape most closely.")
+              "part's shape most closely.");
+  return l;
+}
+
+ParamList<JobHollowing> job_hollowing_params() {
+  ParamList<JobHollowing> l;
+  l.include(&JobHollowing::cavity, hollowing_params(0))
       .number(&JobHollowing::drain_hole_mm, "drain_hole_mm", "Hollow: drain hole diameter (mm)", kDrainHoleMm,
               Range::at_least(0, "mm"),
               "A drain hole of this diameter under every cavity, through the bottom wall to the base, so that the "
@@ -27,8 +37,7 @@ ParamList<JobHollowing> job_hollowing_params() {
 }
 
 void set_job_hollowing(const JobHollowing& h, PlateJobOptions& o) {
-  o.hollowing.wall_mm = h.wall_mm;
-  o.hollowing.closing_mm = h.closing_mm;
+  o.hollowing = h.cavity;
   o.drain_hole_mm = h.drain_hole_mm;
 }
 

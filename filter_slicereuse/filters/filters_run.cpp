@@ -14,7 +14,8 @@ const std::vector<FilterSpec>& filter_specs() {
                                                 cross_parameterize_filter(), free_cached_memory_filter(), plate_job_filter(),
                                                 arrange_plates_filter(), generate_support_points_filter(),
                                                 transfer_support_points_filter(), build_supports_filter(),
-                                                check_printability_filter(), add_labels_filter()};
+                                                check_printability_filter(), add_labels_filter(),
+                                                hollow_mesh_filter()};
   return specs;
 }
 

@@ -19,16 +19,6 @@
 namespace slicereuse::plugin {
 namespace {
 
-// The layer_thickness and z_start parameters of the support filters: the planes the points are
-// found on, or the supports' ground is counted from; the print job's, to match its layers.
-template <class P>
-void add_planes(ParamList<P>& l) {
-  l.number(&P::layer_thickness, "layer_thickness", "Layer thickness (mm)", 0.1, Range::above(0, "mm"),
-           "Distance between slicing planes, in mm: the layers the supports are for, as the print job slices them.")
-      .number(&P::z_start, "z_start", "Start height (mm)", kLowestVertexZStart, Range::any(),
-              "Bottom of the first layer, in mm; at or below -1e29 (the default): the lowest vertex of the mesh.");
-}
-
 // points as a new point layer named after the mesh.
 void add_points_layer(Host& host, const std::string& mesh_name, const SupportPoints& points) {
   host.add_point_layer(mesh_name + " support points", points.xyz, points.normal);

@@ -36,7 +36,8 @@ struct ParamSpec {
 
 enum class FilterId { SliceWithEncoding, TransferSlicing, ExportMasks, CompareMasks, MakePrintJob,
                       CrossParameterize, FreeCachedMemory, MakePlateJob, ArrangePlates, GenerateSupportPoints,
-                      TransferSupportPoints, BuildSupports, CheckPrintability, AddLabels };
+                      TransferSupportPoints, BuildSupports, CheckPrintability, AddLabels,
+                      HollowMesh };
 
 // Which meshes a filter works on (MeshLab's arity): none (files only), the current mesh, or the
 // meshes its Mesh parameters name.

@@ -170,6 +170,10 @@ print_job)
   ok log_add_label.txt -i famlab/member_000.ply -s "$EXAMPLES/add_labels.mlx" -o out/label_outline.ply -l x
   above "$(result log_add_label.txt label_height_mm)" 2.4 || fail "Add Labels: $(grep -i label log_add_label.txt)"
   [ -s out/label_outline.ply ] || fail "Add Labels wrote no outline layer"
+  # Hollow Mesh shows the box's cavity (3 mm walls) as a new mesh layer, with its volume.
+  ok log_hollow.txt -i famlab/member_000.ply -s "$EXAMPLES/hollow_mesh.mlx" -o out/cavity.ply -l x
+  above "$(result log_hollow.txt cavity_mm3)" 1 || fail "Hollow Mesh: $(grep -i hollow log_hollow.txt)"
+  [ -s out/cavity.ply ] || fail "Hollow Mesh wrote no cavity layer"
   # Check Printability reads every layer of the print job and writes its CSV.
   ok log_check.txt -s "$EXAMPLES/check_printability.mlx"
   [ "$(result log_check.txt layers)" = "$layers" ] || fail "check_printability: $(grep slicereuse-result log_check.txt)"

@@ -10,10 +10,13 @@
 
 #include "error_of.h"
 #include "family.h"
+#include "shapes.h"
 #include "slicereuse/hollowing/cavity.h"
 #include "slicereuse/hollowing/hollow_layers.h"
 #include "slicereuse/regions/clip_regions.h"
 #include "slicereuse/regions/layer_region.h"
+#include "slicereuse/regions/layers_mesh.h"
+#include "slicereuse/regions/region_triangles.h"
 #include "slicereuse/slicing/slice_layers.h"
 
 namespace slicereuse {
@@ -181,6 +184,40 @@ TEST(Cavity, EqualsTheDefinitionTermByTerm) {
       EXPECT_GT(volume, 0.5);
     }
   }
+}
+
+// A square 20 mm wide less two square holes and a 64-gon hole: its triangles are counter-clockwise,
+// cover it exactly (their union is the region, their areas sum to its area: no overlaps), and its
+// slabs, one per layer, enclose the layers' areas times the thickness.
+TEST(LayersMesh, TrianglesTileTheRegionAndSlabsHoldItsVolume) {
+  Paths region = rectangle(0, 0, 20, 20);
+  for (const Paths& hole : {rectangle(2, 2, 6, 6), rectangle(8, 3, 12, 15)}) {
+    ClipperLib::Path h = hole[0];
+    ClipperLib::ReversePath(h);
+    region.push_back(h);
+  }
+  ClipperLib::Path disc;
+  for (int i = 63; i >= 0; --i)  // clockwise: a hole
+    disc.push_back({region_units(15 + 3 * std::cos(i * M_PI / 32)), region_units(15 + 3 * std::sin(i * M_PI / 32))});
+  region.push_back(disc);
+  const std::vector<RegionTriangle> triangles = region_triangles(region);
+  double sum = 0;
+  Paths tiles;
+  for (const RegionTriangle& t : triangles) {
+    const ClipperLib::Path tile{t[0], t[1], t[2]};
+    EXPECT_GT(ClipperLib::Area(tile), 0);
+    sum += region_area_mm2({tile});
+    tiles.push_back(tile);
+  }
+  EXPECT_NEAR(sum, region_area_mm2(region), 1e-9);
+  EXPECT_NEAR(region_area_mm2(clip_regions(tiles, {}, ClipperLib::ctUnion)), sum, 1e-9);
+  EXPECT_NEAR(std::abs(region_area_mm2(clip_regions(tiles, region, ClipperLib::ctXor))), 0, 1e-9);
+  std::vector<Paths> layers{region, {}, rectangle(0, 0, 1, 2), region};
+  const Mesh m = layers_mesh(layers, 2, 0.5);
+  EXPECT_NEAR(test::signed_volume(m), 0.5 * (2 * region_area_mm2(region) + 2), 1e-6);
+  const ZRange z = z_range(m);
+  EXPECT_EQ(z.min, 2);
+  EXPECT_EQ(z.max, 4);
 }
 
 TEST(Cavity, AWallThickerThanThePartLeavesNoCavity) {
