@@ -37,6 +37,7 @@ FilterSpec build_supports_filter();
 FilterSpec check_printability_filter();
 FilterSpec add_labels_filter();
 FilterSpec hollow_mesh_filter();
+FilterSpec add_drain_holes_filter();
 
 // The method's reference, closing every description.
 extern const char* const kReference;
@@ -143,12 +144,26 @@ void report_labels(Host& host, const char* filter, const PlateJobOptions& o, con
 // hollowing_params: the cavity's (hollow_wall_mm, default default_wall_mm, and hollow_closing_mm),
 // for the jobs (0: solid) and Hollow Mesh and Add Drain Holes (PrusaSlicer's 3 mm).
 ParamList<HollowingOptions> hollowing_params(double default_wall_mm);
+// The automatic drain holes' (drain_hole_mm, 0: none; drain_holes, how many per cavity).
+struct DrainHoleParams {
+  double diameter_mm;
+  int per_cavity;
+};
+ParamList<DrainHoleParams> drain_hole_params();
+// The jobs': the cavity, the holes, and the user's holes, a point layer (drain_points_layer, the
+// host's reference of a layer of the first member's points; -1: none) or a file of them
+// (drain_holes_file, a support-points file), which replace the automatic ones.
 struct JobHollowing {
   HollowingOptions cavity;
-  double drain_hole_mm;
+  DrainHoleParams holes;
+  int points_layer;
+  std::string holes_file;
 };
 ParamList<JobHollowing> job_hollowing_params();
-void set_job_hollowing(const JobHollowing& h, PlateJobOptions& o);
+// Into o; the user's holes located on first (the job's first member): each point within
+// kUserPointReachMm of its surface, or read from the file and checked (a point farther, or a file
+// for other faces, or holes without hollowing, refused in words).
+void set_job_hollowing(const JobHollowing& h, Host& host, const Mesh& first, PlateJobOptions& o);
 // A hollowed plate's cavities: each member's logged (its volume and drain holes, or why it stays
 // solid; plate_label names the plate, or is empty for a print job), and counted into result as
 // cavity_mm3 and drain_holes (summed with what is there; 0 when solid) and, with per_member,

@@ -3,6 +3,8 @@
 #include "filters_common.h"
 #include "slicereuse/hollowing/cavity.h"
 #include "slicereuse/hollowing/drain_holes.h"
+#include "slicereuse/supports/locate_support_points.h"
+#include "slicereuse/supports/support_points_file.h"
 
 namespace slicereuse::plugin {
 
@@ -25,20 +27,60 @@ ParamList<HollowingOptions> hollowing_params(double default_wall_mm) {
   return l;
 }
 
-ParamList<JobHollowing> job_hollowing_params() {
-  ParamList<JobHollowing> l;
-  l.include(&JobHollowing::cavity, hollowing_params(0))
-      .number(&JobHollowing::drain_hole_mm, "drain_hole_mm", "Hollow: drain hole diameter (mm)", kDrainHoleMm,
-              Range::at_least(0, "mm"),
-              "A drain hole of this diameter under every cavity, through the bottom wall to the base, so that the "
-              "resin drains and no cavity stays sealed (PrusaSlicer's holes are 4 mm by default). 0: no holes: the "
-              "cavity is sealed, and the check reports it as a resin trap.");
+ParamList<DrainHoleParams> drain_hole_params() {
+  ParamList<DrainHoleParams> l;
+  l.number(&DrainHoleParams::diameter_mm, "drain_hole_mm", "Hollow: drain hole diameter (mm)", kDrainHoleMm,
+           Range::at_least(0, "mm"),
+           "A drain hole of this diameter under every cavity, through the bottom wall to the base (or at each of "
+           "the user's points), so that the resin drains and no cavity stays sealed (PrusaSlicer's holes are 4 mm by default). 0: no holes: the "
+           "cavity is sealed, and the check reports it as a resin trap.")
+      .whole(&DrainHoleParams::per_cavity, "drain_holes", "Hollow: drain holes per cavity", 1,
+             Range::between(1, 100, ""),
+             "How many drain holes each cavity gets: the first under its middle, each further one where its lowest "
+             "layer lies farthest from the holes placed, so they spread over it (1, the default: one).");
   return l;
 }
 
-void set_job_hollowing(const JobHollowing& h, PlateJobOptions& o) {
+ParamList<JobHollowing> job_hollowing_params() {
+  ParamList<JobHollowing> l;
+  l.include(&JobHollowing::cavity, hollowing_params(0))
+      .include(&JobHollowing::holes, drain_hole_params())
+      .whole(&JobHollowing::points_layer, "drain_points_layer", "Hollow: drain hole points layer", -1,
+             Range::at_least(-1, ""),
+             "The user's drain holes instead of the automatic ones: a point layer of the (first) member's hole "
+             "mouths, as Add Drain Holes adds one (points may be deleted, moved on the surface or added there; a "
+             "point farther than 1 mm from the surface is refused), each drilled along its surface's normal "
+             "through the wall into the cavity, on every member at the same place on its own surface. The layer's "
+             "0-based index as loaded (pymeshlab: its mesh id). -1 (the default): automatic holes.")
+      .file(&JobHollowing::holes_file, ParamType::FileOpen, "drain_holes_file", "Hollow: drain holes file", "*.srp",
+            nullptr,
+            "The user's drain holes from a file instead (a support-points file, .srp, of the hole mouths, as Add "
+            "Drain Holes writes). Empty (the default): the point layer, or automatic holes.");
+  return l;
+}
+
+void set_job_hollowing(const JobHollowing& h, Host& host, const Mesh& first, PlateJobOptions& o) {
   o.hollowing = h.cavity;
-  o.drain_hole_mm = h.drain_hole_mm;
+  o.drain_hole_mm = h.holes.diameter_mm;
+  o.drain_holes_per_cavity = size_t(h.holes.per_cavity);
+  const bool layer = h.points_layer >= 0, file = !h.holes_file.empty();
+  if (!layer && !file) return;
+  if (layer && file)
+    throw Error(format("drain_points_layer is %d and drain_holes_file is %s: give the user's holes one way",
+                       h.points_layer, h.holes_file.c_str()));
+  if (h.cavity.wall_mm == 0 || h.holes.diameter_mm == 0)
+    throw Error(format("drain holes were given, but %s: they need hollow_wall_mm and drain_hole_mm above 0",
+                       h.cavity.wall_mm == 0 ? "hollow_wall_mm is 0 (solid)" : "drain_hole_mm is 0 (no holes)"));
+  if (file) {
+    o.drain_points = read_support_points(h.holes_file);
+    validate_support_points(o.drain_points, &first);
+    return;
+  }
+  const Mesh points = host.mesh_at(h.points_layer);
+  if (points.faces() > 0)
+    throw Error(format("the drain hole points layer (layer %d) is a mesh of %zu faces, not a point layer",
+                       h.points_layer, points.faces()));
+  o.drain_points = locate_support_points(first, points.V, {}, kUserPointReachMm, "drain hole point");
 }
 
 void report_hollowing(Host& host, const char* filter, const std::string& plate_label, const PlateJobStats& st,
@@ -62,8 +104,13 @@ void report_hollowing(Host& host, const char* filter, const std::string& plate_l
                           names[m].c_str(), st.cavity_mm3[m], holes.size())
                  : format("%s: %s%s", filter, where.c_str(), st.hollowing_notes[m].c_str()));
     for (const DrainHole& h : holes)
-      host.log(format("%s: %s%s: drain hole under its cavity at (%.2f, %.2f) mm, through layers 0-%zu", filter,
-                      where.c_str(), names[m].c_str(), h.x_mm + 0.0, h.y_mm + 0.0, h.layer - 1));
+      host.log(h.automatic
+                   ? format("%s: %s%s: drain hole under its cavity at (%.2f, %.2f) mm, through layers 0-%zu", filter,
+                            where.c_str(), names[m].c_str(), h.x_mm + 0.0, h.y_mm + 0.0, h.layer - 1)
+                   : format("%s: %s%s: drain hole at (%.2f, %.2f, %.2f) mm along (%.2f, %.2f, %.2f), through layers "
+                            "%zu-%zu",
+                            filter, where.c_str(), names[m].c_str(), h.x_mm + 0.0, h.y_mm + 0.0, h.z_mm + 0.0,
+                            h.axis[0] + 0.0, h.axis[1] + 0.0, h.axis[2] + 0.0, h.first, h.layer - 1));
   }
   host.log(format("%s: %shollowing %.3f s", filter, where.c_str(), st.hollowing_seconds));
   result["cavity_mm3"] = total + std::get<double>(result["cavity_mm3"]);

@@ -211,7 +211,7 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
   PlateJobOptions jo = plate_job_options(p.layers);
   set_job_checks(p.checks, jo);
   set_job_labels(p.labels, names, jo);  // every member's label checked before any plate is made
-  set_job_hollowing(p.hollowing, jo);
+  set_job_hollowing(p.hollowing, host, *members[0], jo);
   jo.names = names;
   bool cached = false;
   std::shared_ptr<const CachedEncoding> entry;

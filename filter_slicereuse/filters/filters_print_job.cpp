@@ -54,7 +54,7 @@ Result run_print_job(const PrintJobParams& p, Host& host) {
   const Progress progress = host.progress();
   PlateJobOptions o = plate_job_options(p.layers);
   set_job_checks(p.checks, o);
-  set_job_hollowing(p.hollowing, o);
+  set_job_hollowing(p.hollowing, host, member[0], o);
   o.names = {p.mesh_file.empty() ? "the current mesh" : job.name};
   set_job_labels(p.labels, {job.name}, o);
   bool cached = false;

@@ -15,7 +15,7 @@ const std::vector<FilterSpec>& filter_specs() {
                                                 arrange_plates_filter(), generate_support_points_filter(),
                                                 transfer_support_points_filter(), build_supports_filter(),
                                                 check_printability_filter(), add_labels_filter(),
-                                                hollow_mesh_filter()};
+                                                hollow_mesh_filter(), add_drain_holes_filter()};
   return specs;
 }
 

@@ -37,7 +37,7 @@ struct ParamSpec {
 enum class FilterId { SliceWithEncoding, TransferSlicing, ExportMasks, CompareMasks, MakePrintJob,
                       CrossParameterize, FreeCachedMemory, MakePlateJob, ArrangePlates, GenerateSupportPoints,
                       TransferSupportPoints, BuildSupports, CheckPrintability, AddLabels,
-                      HollowMesh };
+                      HollowMesh, AddDrainHoles };
 
 // Which meshes a filter works on (MeshLab's arity): none (files only), the current mesh, or the
 // meshes its Mesh parameters name.

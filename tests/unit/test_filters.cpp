@@ -46,7 +46,7 @@ TEST(Filters, NamesAreUniqueAndEveryParameterIsDeclaredOnce) {
     std::set<std::string> params;
     for (const ParamSpec& p : f.params) EXPECT_TRUE(params.insert(p.name).second) << f.name << ": " << p.name;
   }
-  EXPECT_EQ(filter_specs().size(), 15u);
+  EXPECT_EQ(filter_specs().size(), 16u);
   EXPECT_EQ(find_filter_spec(-1), nullptr);
 }
 

@@ -12,6 +12,7 @@
 #include "family.h"
 #include "shapes.h"
 #include "slicereuse/hollowing/cavity.h"
+#include "slicereuse/hollowing/drain_holes.h"
 #include "slicereuse/hollowing/hollow_layers.h"
 #include "slicereuse/regions/clip_regions.h"
 #include "slicereuse/regions/layer_region.h"
@@ -218,6 +219,84 @@ TEST(LayersMesh, TrianglesTileTheRegionAndSlabsHoldItsVolume) {
   const ZRange z = z_range(m);
   EXPECT_EQ(z.min, 2);
   EXPECT_EQ(z.max, 4);
+}
+
+// The 24-gon of radius r's area: 12 r^2 sin 15 degrees.
+double disc_area(double r) { return 12 * r * r * 0.25881904510252074; }
+
+// The box's cavity (10 x 8 x 6 mm in 0.1 mm layers, walls of 1 mm): rectangle (1, 1)-(9, 7) on
+// layers 10-49, and the layers' mid-planes.
+std::vector<Paths> box_cavity() {
+  HollowingOptions o;
+  o.wall_mm = 1;
+  o.closing_mm = 0;
+  return cavity_regions(std::vector<Paths>(60, rectangle(0, 0, 10, 8)), 0.1, o);
+}
+std::vector<double> box_planes() {
+  std::vector<double> z;
+  for (size_t k = 0; k < 60; ++k) z.push_back(0.1 * (double(k) + 0.5));
+  return z;
+}
+
+// Three holes per cavity: the first under its middle, the others at the corners of the cavity's
+// lowest layer shrunk by the radius farthest from the holes placed; each drilled from layer 0 up
+// to the cavity, apart from the others.
+TEST(DrainHoles, SpreadOverTheCavitysLowestLayer) {
+  std::vector<Paths> cavity = box_cavity();
+  const std::vector<DrainHole> holes = add_drain_holes(cavity, 2, 3);
+  ASSERT_EQ(holes.size(), 3u);
+  EXPECT_NEAR(holes[0].x_mm, 5, 1e-9);
+  EXPECT_NEAR(holes[0].y_mm, 4, 1e-9);
+  const Paths room = rectangle(2, 2, 8, 6);
+  for (const DrainHole& h : holes) {
+    EXPECT_EQ(h.layer, 10u);
+    EXPECT_EQ(h.first, 0u);
+    EXPECT_TRUE(h.automatic);
+    EXPECT_TRUE(region_covers(room, {region_units(h.x_mm), region_units(h.y_mm)}));
+  }
+  // The second at a corner of the room (3.6 mm from the middle), the third at another, as far
+  // from both as any corner is (every corner lies 3.6 mm from the middle).
+  EXPECT_NEAR(std::hypot(holes[1].x_mm - 5, holes[1].y_mm - 4), std::hypot(3, 2), 1e-9);
+  EXPECT_NEAR(std::hypot(holes[2].x_mm - 5, holes[2].y_mm - 4), std::hypot(3, 2), 1e-9);
+  EXPECT_GE(std::hypot(holes[2].x_mm - holes[1].x_mm, holes[2].y_mm - holes[1].y_mm), 6 - 1e-9);
+  for (size_t k = 0; k < 10; ++k) EXPECT_NEAR(region_area_mm2(cavity[k]), 3 * disc_area(1), 1e-6) << k;
+  EXPECT_EQ(test::error_of([&] { add_drain_holes(cavity, 2, 0); }),
+            "0 drain holes per cavity: at least 1, or a drain hole diameter of 0 for none");
+}
+
+// A user's hole from below is the automatic hole's 24-gon, from 1 mm under the mouth to
+// wall + closing + 1 mm above it; one from the side wall runs sideways through it, its layers'
+// sections joining the cavity to the outside; one that ends in the wall is refused in words, and
+// nothing is drilled when any is.
+TEST(DrainHoles, TheUsersRunAlongTheirNormalIntoTheCavity) {
+  const std::vector<double> z = box_planes();
+  std::vector<Paths> cavity = box_cavity();
+  const std::vector<DrainHole> below = add_drain_holes_at(cavity, z, {3, 4, 0}, {0, 0, -1}, 2, 2);
+  ASSERT_EQ(below.size(), 1u);
+  EXPECT_EQ(below[0].first, 0u);
+  EXPECT_EQ(below[0].layer, 20u);  // the prism reaches z = 2
+  EXPECT_FALSE(below[0].automatic);
+  for (size_t k = 0; k < 10; ++k) EXPECT_NEAR(region_area_mm2(cavity[k]), disc_area(1), 1e-6) << k;
+  for (size_t k = 10; k < 50; ++k) EXPECT_NEAR(region_area_mm2(cavity[k]), 8 * 6, 1e-9) << k;
+
+  cavity = box_cavity();
+  const std::vector<DrainHole> side = add_drain_holes_at(cavity, z, {0, 4, 3}, {-1, 0, 0}, 2, 2);
+  ASSERT_EQ(side.size(), 1u);
+  EXPECT_EQ(side[0].first, 20u);  // z from 2 to 4
+  EXPECT_EQ(side[0].layer, 40u);
+  const Paths& middle = cavity[30];  // z = 3.05: the hole's section is (-1, 2) mm across x
+  ASSERT_EQ(middle.size(), 1u);
+  EXPECT_TRUE(region_covers(middle, {region_units(-0.9), region_units(4)}));
+  EXPECT_TRUE(region_covers(middle, {region_units(0.5), region_units(4.9)}));
+  EXPECT_FALSE(region_covers(middle, {region_units(-1.1), region_units(4)}));
+  EXPECT_FALSE(region_covers(middle, {region_units(0.5), region_units(5.1)}));
+
+  cavity = box_cavity();
+  const std::vector<Paths> before = cavity;
+  EXPECT_EQ(test::error_of([&] { add_drain_holes_at(cavity, z, {3, 4, 0, 0.2, 0.2, 6}, {0, 0, -1, 0, 0, 1}, 0.2, 2); }),
+            "drain hole 2 at (0.20, 0.20, 6.00) mm reaches no cavity: drilled 2 mm in along its normal (0.00, 0.00, "
+            "1.00), it ends in the wall; place it over the cavity (Hollow Mesh shows it)");
+  EXPECT_EQ(cavity, before);
 }
 
 TEST(Cavity, AWallThickerThanThePartLeavesNoCavity) {

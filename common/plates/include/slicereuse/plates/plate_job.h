@@ -68,6 +68,7 @@
 #include "slicereuse/printfiles/export_masks.h"
 #include "slicereuse/slicing/slice_layers.h"
 #include "slicereuse/slicing/slices.h"
+#include "slicereuse/supports/support_points.h"
 #include "slicereuse/transfer/transfer_contours.h"
 #include "slicereuse/util/progress.h"
 
@@ -125,6 +126,13 @@ struct PlateJobOptions {
   // through the bottom wall to the base, so that none stays sealed.
   HollowingOptions hollowing;
   double drain_hole_mm = 0;
+  size_t drain_holes_per_cavity = 1;  // automatic holes: the first under the cavity's middle, the rest spread
+  // The user's drain holes (a point layer or a file; support_points.h's encoding: face and area
+  // coordinates, so each member, which must have their faces, has them at the same place on its
+  // own surface): when not empty, they replace the automatic ones, each drilled along its
+  // surface's normal (add_drain_holes_at, drain_holes.h); a hole that reaches no cavity of a
+  // member fails the job, naming the member and the hole.
+  SupportPoints drain_points;
 };
 
 // Where a finding of the plate's printability lies: the member (an index into placed) whose

@@ -10,7 +10,8 @@
 // Throws Error when xyz is not a multiple of 3, kinds has another count or a kind other than 0
 // or 1, a coordinate is not finite, the mesh is not valid (validate_mesh), or a point lies
 // farther than max_distance_mm from the surface ("support point 3 at (x, y, z) mm is 2.5 mm
-// from the mesh's surface, farther than the 1 mm ...": another mesh's points, or moved off it).
+// from the mesh's surface, farther than the 1 mm ...": another mesh's points, or moved off it);
+// noun names the points in messages (drain holes are located the same way).
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -25,6 +26,6 @@ namespace slicereuse {
 constexpr double kUserPointReachMm = 1;
 
 SupportPoints locate_support_points(const Mesh& mesh, const std::vector<double>& xyz, std::vector<uint8_t> kinds = {},
-                                    double max_distance_mm = INFINITY);
+                                    double max_distance_mm = INFINITY, const char* noun = "support point");
 
 }  // namespace slicereuse
