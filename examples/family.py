@@ -6,7 +6,7 @@
                                       [--workers N | --scheduler tcp://HOST:PORT [--send-encoding]]
                                       [--resume] [--strict] [--supports]
                                       [--require-printable | --no-check]
-                                      [--labels [FILE.csv] [--allow-unlabelled]] [--hollow WALL_MM]
+                                      [--labels [FILE.csv] [--allow-unlabelled]] [--hollow WALL_MM [--drain-holes D_MM[,COUNT]]]
                                       MESH0 MESH1 ...
 
 Default: slices MESH0 once with encoding, then for each member MESH1 ...: reads it (STL, PLY or
@@ -38,6 +38,8 @@ members by their labels. A label that fits nowhere fails its member (or plate), 
 --hollow WALL_MM: every member hollowed on its contours with walls that thick (PrusaSlicer's
 hollowing, its 2 mm closing distance), a 4 mm drain hole under each cavity through the bottom
 wall to the base; each entry gains "cavity_mm3" (0: too thin for a cavity) and "drain_holes".
+--drain-holes D_MM[,COUNT]: the drain holes' diameter (0: none, the cavity sealed) and how many
+per cavity (1), spread over its lowest layer.
 With --labels too, the letters are cut 1 mm less deep than the walls where that is less than 3 mm.
 Prints one JSON object: {"source": MESH0, "seconds": total, "source_seconds", "engine",
 "failed", "targets": [{"mesh", "layers", "points", "resliced_layers", "seconds", "output",
@@ -136,6 +138,8 @@ def main():
                     help="--labels: print a member whose label fits nowhere on its base without it")
     ap.add_argument("--hollow", type=float, metavar="WALL_MM",
                     help="hollow every member, keeping walls this thick (mm; PrusaSlicer's profiles: 3)")
+    ap.add_argument("--drain-holes", metavar="D_MM[,COUNT]",
+                    help="--hollow: drain holes this wide (mm; 0: none; default 4), COUNT per cavity (default 1)")
     ap.add_argument("--resume", action="store_true",
                     help="skip members whose outputs an earlier run made complete and valid")
     ap.add_argument("meshes", nargs="+", metavar="MESH", help="the sliced mesh, then its family members")
@@ -169,6 +173,17 @@ def main():
         ap.error("--allow-unlabelled goes with --labels")
     if args.hollow is not None and not args.hollow > 0:
         ap.error("--hollow needs a wall thickness above 0 mm")
+    drain_holes = None
+    if args.drain_holes is not None:
+        if args.hollow is None:
+            ap.error("--drain-holes goes with --hollow")
+        try:
+            diameter, _, count = args.drain_holes.partition(",")
+            drain_holes = (float(diameter), int(count) if count else 1)
+        except ValueError:
+            ap.error(f"--drain-holes takes D_MM or D_MM,COUNT (e.g. 4,2), not {args.drain_holes}")
+        if not (drain_holes[0] >= 0 and 1 <= drain_holes[1] <= 100):
+            ap.error(f"--drain-holes needs a diameter of 0 mm or more and 1 to 100 holes, not {args.drain_holes}")
     engine = {"workers": args.workers, "scheduler": args.scheduler, "resume": args.resume}
     if args.send_encoding:
         engine["send_encoding"] = True
@@ -181,14 +196,16 @@ def main():
                                progress=bar, direct=args.direct, verify=args.verify, spacing_mm=args.spacing,
                                placements=args.placements, extension=extension, strict=args.strict,
                                supports=args.supports, printability=args.printability, labels=args.labels,
-                               allow_unlabelled=args.allow_unlabelled, hollow=args.hollow, **engine)
+                               allow_unlabelled=args.allow_unlabelled, hollow=args.hollow,
+                               drain_holes=drain_holes, **engine)
         else:
             result = sr.family(args.meshes[0], args.meshes[1:], args.layer_thickness, args.out,
                                profile=profile, binary=not args.text, extension=extension, progress=bar,
                                direct=args.direct, verify=args.verify, keep_contours=args.keep_contours,
                                strict=args.strict, supports=args.supports,
                                printability=args.printability, labels=args.labels,
-                               allow_unlabelled=args.allow_unlabelled, hollow=args.hollow, **engine)
+                               allow_unlabelled=args.allow_unlabelled, hollow=args.hollow,
+                               drain_holes=drain_holes, **engine)
     except Exception as e:  # pymeshlab.PyMeshLabException, OSError, RuntimeError, ValueError
         if sys.stderr.isatty():
             sys.stderr.write("\n")
