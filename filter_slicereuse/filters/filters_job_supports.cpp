@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "filters_common.h"
+#include "slicereuse/hollowing/hollow_layers.h"
 #include "slicereuse/supports/support_points_file.h"
 #include "slicereuse/util/error.h"
 
@@ -83,6 +84,26 @@ ParamList<JobSupports> job_support_params() {
   return l;
 }
 
+namespace {
+
+// A hollowed, drained member's drain holes (drilled as the job drills them, from the same layers,
+// at thickness) as cylinders its support heads keep clear of; none when it is solid or undrained.
+// The job computes the cavity again from the same layers (the supports come first).
+std::vector<KeepOutCylinder> drain_hole_keep_out(const Mesh& member, const Slices& layers, double z_start,
+                                                 double thickness, const std::string& name, const PlateJobOptions& o) {
+  std::vector<KeepOutCylinder> out;
+  if (o.hollowing.wall_mm == 0 || o.drain_hole_mm == 0) return out;
+  std::vector<ClipperLib::Paths> cavity = layers_cavity(layers, o.hollowing);
+  if (cavity_volume_mm3(cavity, thickness) == 0) return out;
+  for (const DrainHole& h : drill_member_drain_holes(member, layers, name, o, cavity)) {
+    const auto ends = drain_hole_axis(h, z_start, thickness, drain_hole_depth_mm(o.hollowing));
+    out.push_back({ends[0], ends[1], 0.5 * o.drain_hole_mm});
+  }
+  return out;
+}
+
+}  // namespace
+
 std::vector<MemberSupports> job_member_supports(const std::vector<const Mesh*>& members, const JobSupports& s,
                                                 PlateJobOptions& o, const Progress& progress) {
   std::vector<MemberSupports> out;
@@ -112,14 +133,17 @@ std::vector<MemberSupports> job_member_supports(const std::vector<const Mesh*>& 
     // A member of the encoding's family is transferred (exact: its own slicing, with its own
     // encoding); any other is sliced on the same planes.
     const bool reuse = o.encoding && o.encoding->fingerprint == mesh_fingerprint(*members[m]);
-    const Slices member_slicing = reuse ? transfer_contours(*o.encoding, *members[m], TransferOptions(), nullptr,
+    Slices member_slicing = reuse ? transfer_contours(*o.encoding, *members[m], TransferOptions(), nullptr,
                                                             sub_progress(part, 0, 0.3))
                                         : slice_layers(*members[m], slicing, sub_progress(part, 0, 0.3));
+    const std::string name = m < o.names.size() ? o.names[m] : "member " + std::to_string(m + 1);
+    MemberSupportOptions own = mo;
+    member_slicing.thickness = thickness;
+    own.keep_out = drain_hole_keep_out(*members[m], member_slicing, z_start, thickness, name, o);
     try {
-      out.push_back(make_member_supports(*members[m], member_slicing, z_start, thickness, mo, source.get(), nullptr,
+      out.push_back(make_member_supports(*members[m], member_slicing, z_start, thickness, own, source.get(), nullptr,
                                          sub_progress(part, 0.3, 1)));
     } catch (const Error& e) {
-      const std::string name = m < o.names.size() ? o.names[m] : "member " + std::to_string(m + 1);
       throw Error(name + "'s supports: " + e.what());
     }
   }

@@ -223,6 +223,10 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
   // Supports first: a member takes its supports' room on the plate.
   const SupportedMembers supported = support_members(plan, p.supports, jo, sub_progress(progress, 0.05, 0.1));
   const std::vector<MemberSupports>& supports = supported.supports;
+  for (size_t m = 0; m < supports.size(); ++m)
+    if (supports[m].kept_out > 0)
+      host.log(format("Make Plate Job: %s: %zu support points dropped: their heads would reach into a drain hole",
+                      names[m].c_str(), supports[m].kept_out));
   arrange_members(plan, p, size_t(p.plate), supported.footprints, sub_progress(progress, 0.1, 0.15));
   const Arrangement& arrangement = plan.arrangement;
   const double arrange_seconds = plan.arrange_seconds;

@@ -99,6 +99,9 @@ Result run_print_job(const PrintJobParams& p, Host& host) {
                                           .c_str()
                                     : "generated",
                     sup.tree.pillars, sup.layers_below, support_seconds(sup)));
+  if (sup.kept_out > 0)
+    host.log(format("Make Print Job: %zu support points dropped: their heads would reach into a drain hole",
+                    sup.kept_out));
   log_display_warning(host, "Make Print Job", st.masks, profile);
   Result result = {{"layers", int64_t(st.layers)},
                    {"points", int64_t(st.points)},

@@ -26,6 +26,8 @@
 #include "slicereuse/slicing/slice_layers.h"
 #include "slicereuse/supports/generate_support_points.h"
 #include "slicereuse/supports/locate_support_points.h"
+#include "slicereuse/supports/member_supports.h"
+#include "slicereuse/supports/support_keep_out.h"
 #include "slicereuse/supports/transfer_support_points.h"
 
 using namespace slicereuse;
@@ -409,4 +411,35 @@ TEST(SupportPoints, BottomPointsStayOffNearlyVerticalWalls) {
   EXPECT_GT(pts.size(), 0u);
   EXPECT_EQ(on_walls, 0u);
   expect_covered(s, pts, options(), "leaning box");
+}
+
+// Heads keep clear of drain holes (#36): a raised box's points on its base (its first layer is an
+// island), with a 4 mm hole up its middle: exactly those within the hole's radius plus the head's
+// of its axis are dropped, the others kept in order, and the tree is built from those kept.
+TEST(SupportKeepOut, DropsThePointsWhoseHeadsWouldReachIntoAHole) {
+  const Mesh box = test::make_box(0, 0, 0, 20, 16, 10, 8);
+  SliceOptions slicing;
+  slicing.thickness = 0.1;
+  const Slices s = slice_layers(box, slicing);
+  MemberSupportOptions o;
+  o.points.raised = true;
+  const MemberSupports all = make_member_supports(box, s, 0, 0.1, o);
+  o.keep_out = {{{10, 8, -1}, {10, 8, 3}, 2}};
+  const MemberSupports clear = make_member_supports(box, s, 0, 0.1, o);
+  const double reach = 2 + 0.5 * o.tree.head_front_diameter_mm;
+  size_t near = 0;
+  SupportPoints expected;
+  expected.fingerprint = all.points.fingerprint;
+  for (size_t i = 0; i < all.points.size(); ++i) {
+    const double* p = &all.points.xyz[3 * i];
+    const bool in = std::hypot(p[0] - 10, p[1] - 8) < reach && p[2] >= -1 && p[2] <= 3;
+    near += in;
+    if (!in) expected.push_back_from(all.points, i);
+  }
+  ASSERT_GT(near, 0u);
+  EXPECT_EQ(clear.kept_out, near);
+  EXPECT_EQ(clear.points.xyz, expected.xyz);
+  EXPECT_EQ(clear.points.face, expected.face);
+  EXPECT_EQ(all.kept_out, 0u);
+  EXPECT_LT(clear.tree.mesh.faces(), all.tree.mesh.faces());
 }

@@ -180,6 +180,19 @@ std::vector<DrainHole> add_drain_holes(std::vector<ClipperLib::Paths>& cavity, d
   return holes;
 }
 
+std::array<std::array<double, 3>, 2> drain_hole_axis(const DrainHole& h, double z_start, double thickness,
+                                                     double depth_mm) {
+  if (h.automatic)
+    return {{{h.x_mm, h.y_mm, z_start - kHoleStickOutMm}, {h.x_mm, h.y_mm, z_start + double(h.layer) * thickness}}};
+  std::array<std::array<double, 3>, 2> ends;
+  const double mouth[3] = {h.x_mm, h.y_mm, h.z_mm};
+  for (size_t j = 0; j < 3; ++j) {
+    ends[0][j] = mouth[j] + kHoleStickOutMm * h.axis[j];
+    ends[1][j] = mouth[j] - depth_mm * h.axis[j];
+  }
+  return ends;
+}
+
 void find_drain_hole_mouths(const Mesh& mesh, double z_start, double thickness, std::vector<DrainHole>& holes) {
   for (DrainHole& h : holes) {
     const double below = z_start + double(h.layer) * thickness;

@@ -205,26 +205,6 @@ std::vector<PlateMember> prepare_members(const std::vector<Mesh>& placed, const 
   return members;
 }
 
-// Member m's drain holes into its cavity: the user's (o.drain_points, placed on its own surface),
-// or the automatic ones.
-std::vector<DrainHole> drill_drain_holes(PlateMember& p, const Slices& layers, size_t m, const PlateJobOptions& o) {
-  if (o.drain_points.size() == 0) return add_drain_holes(p.cavity, o.drain_hole_mm, o.drain_holes_per_cavity);
-  const Fingerprint own = mesh_fingerprint(*p.mesh);
-  if (own != o.drain_points.fingerprint)
-    throw Error(format("the drain holes are for a mesh of %s; %s has %s: holes are carried only to members with the "
-                       "same faces",
-                       describe_fingerprint(o.drain_points.fingerprint).c_str(), member_name(o, m).c_str(),
-                       describe_fingerprint(own).c_str()));
-  SupportPoints placed = o.drain_points;
-  place_support_points(placed, *p.mesh);
-  try {
-    return add_drain_holes_at(p.cavity, layers.layer_z, placed.xyz, placed.normal, o.drain_hole_mm,
-                              drain_hole_depth_mm(o.hollowing));
-  } catch (const Error& e) {
-    throw Error(member_name(o, m) + ": " + e.what());
-  }
-}
-
 // With o.hollowing, each member's cavity from all its layers, made as its masks' are (by its
 // transfer or sliced directly on its planes), one member at a time on all cores; its volume, or
 // why there is none, into st. Supports stay solid.
@@ -244,7 +224,8 @@ void hollow_members(std::vector<PlateMember>& members, const PlateJobOptions& o,
     layers.thickness = st.thickness;
     p.cavity = layers_cavity(layers, o.hollowing, sub_progress(mp, 0.2, 1));
     st.cavity_mm3[m] = cavity_volume_mm3(p.cavity, st.thickness);
-    if (o.drain_hole_mm > 0 && st.cavity_mm3[m] > 0) st.drain_holes[m] = drill_drain_holes(p, layers, m, o);
+    if (o.drain_hole_mm > 0 && st.cavity_mm3[m] > 0)
+      st.drain_holes[m] = drill_member_drain_holes(*p.mesh, layers, member_name(o, m), o, p.cavity);
     if (st.cavity_mm3[m] == 0) {
       p.cavity.clear();
       st.hollowing_notes[m] =
@@ -532,6 +513,25 @@ struct PlateChecks {
 };
 
 }  // namespace
+
+std::vector<DrainHole> drill_member_drain_holes(const Mesh& member, const Slices& layers, const std::string& name,
+                                                const PlateJobOptions& o, std::vector<ClipperLib::Paths>& cavity) {
+  if (o.drain_points.size() == 0) return add_drain_holes(cavity, o.drain_hole_mm, o.drain_holes_per_cavity);
+  const Fingerprint own = mesh_fingerprint(member);
+  if (own != o.drain_points.fingerprint)
+    throw Error(format("the drain holes are for a mesh of %s; %s has %s: holes are carried only to members with the "
+                       "same faces",
+                       describe_fingerprint(o.drain_points.fingerprint).c_str(), name.c_str(),
+                       describe_fingerprint(own).c_str()));
+  SupportPoints placed = o.drain_points;
+  place_support_points(placed, member);
+  try {
+    return add_drain_holes_at(cavity, layers.layer_z, placed.xyz, placed.normal, o.drain_hole_mm,
+                              drain_hole_depth_mm(o.hollowing));
+  } catch (const Error& e) {
+    throw Error(name + ": " + e.what());
+  }
+}
 
 PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOptions& o, const PrinterProfile& profile,
                            const std::string& output_path, const Progress& progress) {

@@ -21,6 +21,7 @@ MemberSupports make_member_supports(const Mesh& part, const Slices& part_slicing
   } else {
     s.points = generate_support_points(part, part_slicing, point_options, nullptr, points_progress);
   }
+  s.kept_out = drop_points_in(s.points, options.keep_out, 0.5 * options.tree.head_front_diameter_mm);
   s.points_seconds = seconds_since(t);
   report_progress(progress, 0.9, "building the support tree");
   t = std::chrono::steady_clock::now();

@@ -58,6 +58,12 @@ std::vector<DrainHole> add_drain_holes(std::vector<ClipperLib::Paths>& cavity, d
 // slicing from z_start at thickness), or the bottom of layer 0 when the axis meets none there.
 void find_drain_hole_mouths(const Mesh& mesh, double z_start, double thickness, std::vector<DrainHole>& holes);
 
+// drain_hole_axis: a hole's axis as a segment, for what must keep clear of it (support heads):
+// an automatic hole's from kHoleStickOutMm under layer 0 (of the slicing from z_start at
+// thickness) up to its cavity, a user's from kHoleStickOutMm outside its mouth to depth_mm in.
+std::array<std::array<double, 3>, 2> drain_hole_axis(const DrainHole& hole, double z_start, double thickness,
+                                                     double depth_mm);
+
 std::vector<DrainHole> add_drain_holes_at(std::vector<ClipperLib::Paths>& cavity, const std::vector<double>& layer_z,
                                           const std::vector<double>& mouths, const std::vector<double>& axes,
                                           double diameter_mm, double depth_mm);

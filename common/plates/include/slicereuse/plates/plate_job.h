@@ -175,6 +175,13 @@ struct PlateJobStats {
 };
 
 
+// The drain holes a hollowed job drills into a member: its mesh (in the frame its layers were
+// made in), its layers on the job's planes, its name for messages, and its cavity (layers_cavity
+// of those layers), which gains the holes: options.drain_points placed on its own surface (Error
+// when its faces are not theirs, or a hole reaches no cavity, naming it), else the automatic ones.
+std::vector<DrainHole> drill_member_drain_holes(const Mesh& member, const Slices& layers, const std::string& name,
+                                                const PlateJobOptions& options, std::vector<ClipperLib::Paths>& cavity);
+
 PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOptions& options,
                            const PrinterProfile& profile, const std::string& output_path,
                            const Progress& progress = {});

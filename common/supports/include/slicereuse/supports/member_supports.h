@@ -8,7 +8,7 @@
 // contours transferred from the source's encoding, which keep its encoding), the job's z_start
 // (its planes' bottom) and thickness, and optionally the source's points (and, for a member of
 // another connectivity, the map from the source).
-// Output: the points, how the transfer went (all zero when generated), the tree, the layers
+// Output: the points (less those options.keep_out drops), how the transfer went (all zero when generated), the tree, the layers
 // the job gains below z_start, and the seconds each step took.
 #include <cstddef>
 
@@ -16,6 +16,7 @@
 #include "slicereuse/mesh/mesh.h"
 #include "slicereuse/slicing/slices.h"
 #include "slicereuse/supports/generate_support_points.h"
+#include "slicereuse/supports/support_keep_out.h"
 #include "slicereuse/supports/support_points.h"
 #include "slicereuse/supports/support_tree.h"
 #include "slicereuse/supports/transfer_support_points.h"
@@ -26,6 +27,9 @@ namespace slicereuse {
 struct MemberSupportOptions {
   SupportPointOptions points;
   SupportTreeOptions tree;
+  // What the heads keep clear of (the part's drain holes): points whose head would reach into
+  // one are dropped before the tree is built (support_keep_out.h).
+  std::vector<KeepOutCylinder> keep_out;
 };
 
 struct MemberSupports {
@@ -34,6 +38,7 @@ struct MemberSupports {
   bool transferred = false;
   SupportTree tree;
   size_t layers_below = 0;
+  size_t kept_out = 0;  // points dropped for options.keep_out
   double points_seconds = 0, tree_seconds = 0;
 };
 
