@@ -174,6 +174,26 @@ print_job)
   ok log_hollow.txt -i famlab/member_000.ply -s "$EXAMPLES/hollow_mesh.mlx" -o out/cavity.ply -l x
   above "$(result log_hollow.txt cavity_mm3)" 1 || fail "Hollow Mesh: $(grep -i hollow log_hollow.txt)"
   [ -s out/cavity.ply ] || fail "Hollow Mesh wrote no cavity layer"
+  # Add Drain Holes shows the hole as a point layer and writes it; a print job drills the hole of
+  # that file, and, in one script, the one of the point layer it adds (layer 1): no resin trap.
+  ok log_holes.txt -i famlab/member_000.ply -s "$EXAMPLES/add_drain_holes.mlx" -o out/holes.ply -l x
+  [ "$(result log_holes.txt drain_holes)" = 1 ] || fail "Add Drain Holes: $(grep -i drain log_holes.txt)"
+  [ -s out/holes.srp ] || fail "Add Drain Holes wrote no out/holes.srp"
+  edit print_job.mlx holes_job.mlx 's#name="encoding_file" value="out/slice.enc"#name="encoding_file" value=""#' \
+    's#name="hollow_wall_mm" value="0"#name="hollow_wall_mm" value="3"#' \
+    's#name="drain_holes_file" value=""#name="drain_holes_file" value="out/holes.srp"#' 's#out/print_job\.sl1#out/holes_job.sl1#'
+  ok log_holes_job.txt -i famlab/member_000.ply -s holes_job.mlx
+  [ "$(result log_holes_job.txt drain_holes)" = 1 ] && [ "$(result log_holes_job.txt resin_traps)" = 0 ] ||
+    fail "the holes file's job: $(grep -i 'drain\|trap' log_holes_job.txt)"
+  edit print_job.mlx layer_job.mlx 's#name="encoding_file" value="out/slice.enc"#name="encoding_file" value=""#' \
+    's#name="hollow_wall_mm" value="0"#name="hollow_wall_mm" value="3"#' \
+    's#name="drain_points_layer" value="-1"#name="drain_points_layer" value="1"#' 's#out/print_job\.sl1#out/layer_job.sl1#'
+  { sed '/<\/FilterScript>/d' "$EXAMPLES/add_drain_holes.mlx"; sed -n '/<filter name="Make Print Job">/,$p' layer_job.mlx; } >holes_layer.mlx
+  ok log_holes_layer.txt -i famlab/member_000.ply -s holes_layer.mlx
+  [ "$(result log_holes_layer.txt drain_holes)" = 1 ] && [ "$(result log_holes_layer.txt resin_traps)" = 0 ] ||
+    fail "the point layer's job: $(grep -i 'drain\|trap' log_holes_layer.txt)"
+  grep -q "drain hole at (.*) mm along (0.00, 0.00, -1.00)" log_holes_layer.txt ||
+    fail "the point layer's hole: $(grep -i drain log_holes_layer.txt)"
   # Check Printability reads every layer of the print job and writes its CSV.
   ok log_check.txt -s "$EXAMPLES/check_printability.mlx"
   [ "$(result log_check.txt layers)" = "$layers" ] || fail "check_printability: $(grep slicereuse-result log_check.txt)"
