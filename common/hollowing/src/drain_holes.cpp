@@ -6,30 +6,13 @@
 
 #include "slicereuse/regions/clip_regions.h"
 #include "slicereuse/regions/layer_region.h"
+#include "slicereuse/regions/region_pieces.h"
 #include "slicereuse/regions/turns_by_15_degrees.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
 
 namespace slicereuse {
 namespace {
-
-// The pieces of a region: each outer loop with the holes inside it.
-std::vector<ClipperLib::Paths> pieces_of(const ClipperLib::Paths& region) {
-  ClipperLib::Clipper clipper;
-  clipper.AddPaths(region, ClipperLib::ptSubject, true);
-  ClipperLib::PolyTree tree;
-  clipper.Execute(ClipperLib::ctUnion, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-  std::vector<ClipperLib::Paths> pieces;
-  std::vector<const ClipperLib::PolyNode*> outers;
-  for (const ClipperLib::PolyNode* n = tree.GetFirst(); n; n = n->GetNext())
-    if (!n->IsHole()) outers.push_back(n);
-  for (const ClipperLib::PolyNode* outer : outers) {
-    ClipperLib::Paths piece{outer->Contour};
-    for (const ClipperLib::PolyNode* hole : outer->Childs) piece.push_back(hole->Contour);
-    pieces.push_back(std::move(piece));
-  }
-  return pieces;
-}
 
 // The centroid of a piece (outer loop less its holes), in Clipper units.
 std::array<double, 2> centroid(const ClipperLib::Paths& piece) {
@@ -159,7 +142,7 @@ std::vector<DrainHole> add_drain_holes(std::vector<ClipperLib::Paths>& cavity, d
   std::vector<ClipperLib::Path> discs;
   for (size_t k = 0; k < cavity.size(); ++k) {
     if (cavity[k].empty()) continue;
-    for (const ClipperLib::Paths& piece : pieces_of(cavity[k])) {
+    for (const ClipperLib::Paths& piece : region_pieces(cavity[k])) {
       if (k > 0 && !clip_regions(piece, cavity[k - 1], ClipperLib::ctIntersection).empty()) continue;
       const ClipperLib::Paths room = room_in(piece, r);
       std::vector<ClipperLib::IntPoint> centres{hole_centre(piece, room)};

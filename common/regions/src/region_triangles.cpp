@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "slicereuse/regions/region_pieces.h"
+
 namespace slicereuse {
 namespace {
 
@@ -14,23 +16,6 @@ using ClipperLib::Paths;
 // Twice the signed area of (a, b, c), exactly: positive when counter-clockwise.
 __int128 cross(const IntPoint& a, const IntPoint& b, const IntPoint& c) {
   return __int128(b.X - a.X) * __int128(c.Y - a.Y) - __int128(b.Y - a.Y) * __int128(c.X - a.X);
-}
-
-// The region's pieces (an outer loop, counter-clockwise, and its holes), strictly simple.
-std::vector<Paths> pieces_of(const Paths& region) {
-  ClipperLib::Clipper clipper;
-  clipper.StrictlySimple(true);
-  clipper.AddPaths(region, ClipperLib::ptSubject, true);
-  ClipperLib::PolyTree tree;
-  clipper.Execute(ClipperLib::ctUnion, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-  std::vector<Paths> pieces;
-  for (const ClipperLib::PolyNode* n = tree.GetFirst(); n; n = n->GetNext()) {
-    if (n->IsHole()) continue;
-    Paths piece{n->Contour};
-    for (const ClipperLib::PolyNode* hole : n->Childs) piece.push_back(hole->Contour);
-    pieces.push_back(std::move(piece));
-  }
-  return pieces;
 }
 
 // The piece's part on one side of the line y = c (below: y <= c, else y >= c).
@@ -84,7 +69,7 @@ void clip_ears(Path loop, std::vector<RegionTriangle>& out) {
 
 std::vector<RegionTriangle> region_triangles(const ClipperLib::Paths& region) {
   std::vector<RegionTriangle> out;
-  std::vector<Paths> todo = pieces_of(region);
+  std::vector<Paths> todo = region_pieces(region);
   while (!todo.empty()) {
     Paths piece = std::move(todo.back());
     todo.pop_back();
@@ -101,7 +86,7 @@ std::vector<RegionTriangle> region_triangles(const ClipperLib::Paths& region) {
     }
     const cInt c = lo + (hi - lo) / 2;
     for (bool below : {true, false})
-      for (Paths& p : pieces_of(side_of(piece, c, below))) todo.push_back(std::move(p));
+      for (Paths& p : region_pieces(side_of(piece, c, below))) todo.push_back(std::move(p));
   }
   return out;
 }
