@@ -192,5 +192,23 @@ TEST_F(HollowingFilters, SupportHeadsKeepClearOfDrainHoles) {
   EXPECT_LT(std::get<double>(drained.at("trapped_mm3")), 0.1);
 }
 
+// On a plate, each member (placed: moved and turned) gets the first member's user holes at the
+// same place on its own surface, and every cavity drains.
+TEST_F(HollowingFilters, APlatesMembersEachGetTheUsersHoles) {
+  FakeHost host;
+  const Mesh source = test::make_box(0, 0, 0, 20, 16, 10, 4);
+  Mesh member = source;
+  for (size_t i = 0; i < member.V.size(); i += 3) member.V[i] *= 1.2;
+  host.meshes = {source, member, Mesh{{6, 5, 0, 14, 11, 0}, {}}};
+  const FilterSpec& plate = spec_named("make_plate_job");
+  const Result r = plate.run(defaults(plate, {{"output_path", path("plate.goo")}},
+                                      {{"hollow_wall_mm", 2}, {"hollow_closing_mm", 0}, {"drain_points_layer", 2}}),
+                             host);
+  EXPECT_EQ(count(r, "drain_holes_mesh0"), 2);
+  EXPECT_EQ(count(r, "drain_holes_mesh1"), 2);
+  EXPECT_EQ(count(r, "resin_traps"), 0);
+  EXPECT_EQ(count(r, "suction_cups"), 0);
+}
+
 }  // namespace
 }  // namespace slicereuse::plugin
