@@ -6,7 +6,7 @@
                                       [--workers N | --scheduler tcp://HOST:PORT [--send-encoding]]
                                       [--resume] [--strict] [--supports]
                                       [--require-printable | --no-check]
-                                      [--labels [FILE.csv] [--allow-unlabelled]] [--hollow WALL_MM [--drain-holes D_MM[,COUNT]]]
+                                      [--labels [FILE.csv] [--allow-unlabelled]] [--hollow WALL_MM [--drain-holes D_MM[,COUNT]] [--drain-holes-file FILE.srp]]
                                       MESH0 MESH1 ...
 
 Default: slices MESH0 once with encoding, then for each member MESH1 ...: reads it (STL, PLY or
@@ -39,7 +39,9 @@ members by their labels. A label that fits nowhere fails its member (or plate), 
 hollowing, its 2 mm closing distance), a 4 mm drain hole under each cavity through the bottom
 wall to the base; each entry gains "cavity_mm3" (0: too thin for a cavity) and "drain_holes".
 --drain-holes D_MM[,COUNT]: the drain holes' diameter (0: none, the cavity sealed) and how many
-per cavity (1), spread over its lowest layer.
+per cavity (1), spread over its lowest layer. --drain-holes-file FILE.srp: the holes Add Drain
+Holes wrote (on a member with the same faces), edited or not, instead: each member gets them at
+the same place on its own surface, drilled along the surface's normal into the cavity.
 With --labels too, the letters are cut 1 mm less deep than the walls where that is less than 3 mm.
 Prints one JSON object: {"source": MESH0, "seconds": total, "source_seconds", "engine",
 "failed", "targets": [{"mesh", "layers", "points", "resliced_layers", "seconds", "output",
@@ -140,6 +142,8 @@ def main():
                     help="hollow every member, keeping walls this thick (mm; PrusaSlicer's profiles: 3)")
     ap.add_argument("--drain-holes", metavar="D_MM[,COUNT]",
                     help="--hollow: drain holes this wide (mm; 0: none; default 4), COUNT per cavity (default 1)")
+    ap.add_argument("--drain-holes-file", metavar="FILE.srp",
+                    help="--hollow: the user's drain holes (Add Drain Holes' file) instead of the automatic ones")
     ap.add_argument("--resume", action="store_true",
                     help="skip members whose outputs an earlier run made complete and valid")
     ap.add_argument("meshes", nargs="+", metavar="MESH", help="the sliced mesh, then its family members")
@@ -184,6 +188,8 @@ def main():
             ap.error(f"--drain-holes takes D_MM or D_MM,COUNT (e.g. 4,2), not {args.drain_holes}")
         if not (drain_holes[0] >= 0 and 1 <= drain_holes[1] <= 100):
             ap.error(f"--drain-holes needs a diameter of 0 mm or more and 1 to 100 holes, not {args.drain_holes}")
+    if args.drain_holes_file is not None and args.hollow is None:
+        ap.error("--drain-holes-file goes with --hollow")
     engine = {"workers": args.workers, "scheduler": args.scheduler, "resume": args.resume}
     if args.send_encoding:
         engine["send_encoding"] = True
@@ -197,7 +203,7 @@ def main():
                                placements=args.placements, extension=extension, strict=args.strict,
                                supports=args.supports, printability=args.printability, labels=args.labels,
                                allow_unlabelled=args.allow_unlabelled, hollow=args.hollow,
-                               drain_holes=drain_holes, **engine)
+                               drain_holes=drain_holes, drain_holes_file=args.drain_holes_file, **engine)
         else:
             result = sr.family(args.meshes[0], args.meshes[1:], args.layer_thickness, args.out,
                                profile=profile, binary=not args.text, extension=extension, progress=bar,
@@ -205,7 +211,7 @@ def main():
                                strict=args.strict, supports=args.supports,
                                printability=args.printability, labels=args.labels,
                                allow_unlabelled=args.allow_unlabelled, hollow=args.hollow,
-                               drain_holes=drain_holes, **engine)
+                               drain_holes=drain_holes, drain_holes_file=args.drain_holes_file, **engine)
     except Exception as e:  # pymeshlab.PyMeshLabException, OSError, RuntimeError, ValueError
         if sys.stderr.isatty():
             sys.stderr.write("\n")

@@ -223,17 +223,23 @@ def _label_parameters(labels, allow_unlabelled=False, hollow=None):
             "label_depth_mm": depth, "allow_unlabelled": bool(allow_unlabelled)}
 
 
-def _hollow_parameters(hollow, drain_holes=None):
+def _hollow_parameters(hollow, drain_holes=None, drain_holes_file=None):
     """make_print_job's and make_plate_job's hollowing parameters for hollow: None (solid) or the
-    wall thickness in mm (PrusaSlicer's closing distance, 2 mm, kept), and drain_holes: None (one
-    4 mm hole per cavity), a diameter in mm (0: none), or (diameter, holes per cavity)."""
+    wall thickness in mm (PrusaSlicer's closing distance, 2 mm, kept), drain_holes: None (one
+    4 mm hole per cavity), a diameter in mm (0: none), or (diameter, holes per cavity), and
+    drain_holes_file: None, or the user's holes (Add Drain Holes' .srp file), which replace the
+    automatic ones."""
     if hollow is None:
-        if drain_holes is not None:
-            raise ValueError("drain_holes needs hollow: a wall thickness in mm")
+        if drain_holes is not None or drain_holes_file is not None:
+            raise ValueError("drain_holes and drain_holes_file need hollow: a wall thickness in mm")
         return {"hollow_wall_mm": 0.0}
     if not (isinstance(hollow, (int, float)) and hollow > 0):
         raise ValueError(f"hollow must be None (solid) or a wall thickness in mm above 0, not {hollow!r}")
     parameters = {"hollow_wall_mm": float(hollow)}
+    if drain_holes_file is not None:
+        if not Path(drain_holes_file).is_file():
+            raise ValueError(f"drain_holes_file {drain_holes_file} is not a file")
+        parameters["drain_holes_file"] = str(Path(drain_holes_file).resolve())
     if drain_holes is None:
         return parameters
     diameter, count = drain_holes if isinstance(drain_holes, (tuple, list)) else (drain_holes, 1)
@@ -241,6 +247,13 @@ def _hollow_parameters(hollow, drain_holes=None):
         raise ValueError(f"drain_holes must be a diameter in mm (0: none) or (diameter, 1 to 100 holes per cavity), "
                          f"not {drain_holes!r}")
     return dict(parameters, drain_hole_mm=float(diameter), drain_holes=count)
+
+
+def _hollow_identity(parameters):
+    """What a batch's resume key holds of its hollowing parameters: the holes file's identity."""
+    if "drain_holes_file" not in parameters:
+        return dict(parameters)
+    return dict(parameters, drain_holes_file=batch.file_identity(parameters["drain_holes_file"]))
 
 
 def _labels_identity(parameters):
@@ -329,7 +342,7 @@ def _job_supports(supports, direct, out, source, layer_thickness, epoch, resume)
 def family(source, targets, layer_thickness, out, profile=None, binary=True, progress=None,
            direct=False, verify=False, keep_contours=False, details=False, extension=None,
            workers=0, scheduler=None, resume=False, send_encoding=False, strict=False, supports=False,
-           printability="check", labels=None, allow_unlabelled=False, hollow=None, drain_holes=None):
+           printability="check", labels=None, allow_unlabelled=False, hollow=None, drain_holes=None, drain_holes_file=None):
     """The production pipeline: one print job per family member, out/<member stem><extension>
     (one of print_file_extensions(), or "" for a folder of PNG images; None: the printer's own,
     printer_extension(profile's printer)).
@@ -370,7 +383,9 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     that thick (make_print_job's hollow_wall_mm, PrusaSlicer's 2 mm closing distance) and a 4 mm
     drain hole under each cavity, through the bottom wall to the base (drain_holes: another
     diameter in mm, 0 for none, or (diameter, count), count holes spread over each cavity's lowest
-    layer); each entry then has "cavity_mm3" (0: too thin for a cavity) and "drain_holes".
+    layer); drain_holes_file: the user's holes instead (Add Drain Holes' .srp file, made on a member
+    with the same faces: each member gets them at the same place on its own surface); each entry
+    then has "cavity_mm3" (0: too thin for a cavity) and "drain_holes".
 
     Where the members are made (slicereuse_batch.py): workers=0 (the default) in this process;
     workers=N an embedded Dask LocalCluster of N worker processes (None: one per two cores, slicereuse_batch.default_workers);
@@ -395,7 +410,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     than wall time). progress(step, steps, text) is called after each step."""
     _check_files([source, *targets])
     _check_parameters(printability)  # before the source is sliced
-    hollow_parameters = _hollow_parameters(hollow, drain_holes)
+    hollow_parameters = _hollow_parameters(hollow, drain_holes, drain_holes_file)
     label_parameters = _label_parameters(labels, allow_unlabelled, hollow)
     stems = [Path(t).stem for t in targets]
     repeated = {s for s in stems if stems.count(s) > 1}
@@ -424,7 +439,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     parameters = dict(encoding=batch.file_identity(encoding) if encoding else None,
                       layer_thickness=layer_thickness, profile=profile, verify=verify, details=details,
                       strict=strict, supports=_supports_identity(member_supports),
-                      printability=printability, labels=_labels_identity(label_parameters), hollow=hollow_parameters)
+                      printability=printability, labels=_labels_identity(label_parameters), hollow=_hollow_identity(hollow_parameters))
     jobs = []
     for target, stem in zip(targets, stems):
         output = out / f"{stem}{extension}"
@@ -534,7 +549,7 @@ def _free_cached_memory():
 def plates(source, targets, layer_thickness, out, profile=None, progress=None, direct=False, verify=False,
            spacing_mm=2.0, placements=None, extension=None, workers=0, scheduler=None, resume=False,
            strict=False, supports=False, printability="check", labels=None, allow_unlabelled=False,
-           hollow=None, drain_holes=None):
+           hollow=None, drain_holes=None, drain_holes_file=None):
     """The lab's job: the targets arranged on build plates of the printer, one print file per
     plate, out/plate_<k><extension> (one of print_file_extensions(), or "" for folders of PNG images;
     None: the printer's own, printer_extension(profile's printer)), its top view
@@ -560,7 +575,7 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
     "printability" (as family()'s) and each member's its own counts (a finding goes to the member
     whose footprint holds it); "require": a plate holding an island, a resin trap or a suction cup
     is not written, its entry's "error" naming each such finding, its member and place.
-    labels, allow_unlabelled, hollow and drain_holes as for family(): each plate member's entry has
+    labels, allow_unlabelled, hollow, drain_holes and drain_holes_file as for family(): each plate member's entry has
     "label_height_mm", "cavity_mm3" and "drain_holes", and the layout pictures name the members by
     their labels.
     Returns {"source", "members", "seconds", "arrange_seconds", "engine", "failed", "plates":
@@ -571,7 +586,7 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
     covers arranging and making every plate (not slicing the source)."""
     _check_files([source, *targets])
     _check_parameters(printability)  # before anything is arranged
-    hollow_parameters = _hollow_parameters(hollow, drain_holes)
+    hollow_parameters = _hollow_parameters(hollow, drain_holes, drain_holes_file)
     label_parameters = _label_parameters(labels, allow_unlabelled, hollow)
     by_name = {Path(t).name: str(Path(t).resolve()) for t in targets}
     if len(by_name) != len(targets):
@@ -619,7 +634,7 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
                           if encoding else None, layer_thickness=layer_thickness, profile=profile, verify=verify,
                           strict=strict, supports=_supports_identity(member_supports),
                           printability=printability, labels=_labels_identity(label_parameters),
-                          hollow=hollow_parameters)
+                          hollow=_hollow_identity(hollow_parameters))
         jobs = []
         for k, plate in enumerate(layout["plates"], 1):
             output = plate["output"]

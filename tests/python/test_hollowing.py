@@ -58,3 +58,22 @@ def test_family_drains_each_cavity_through_count_holes(pymeshlab, tmp_path):
     bad = family_py("--hollow", 3, "--drain-holes", "4,0", "--out", tmp_path / "bad", source, member)
     assert bad.returncode == 2 and "1 to 100 holes" in bad.stderr, bad.stderr
     assert not (tmp_path / "bad").exists()
+
+
+def test_family_drills_the_users_holes_on_every_member(pymeshlab, tmp_path):
+    """Add Drain Holes' file of the source given to family.py: each member (the same 12 triangles,
+    longer) gets the hole at the same place on its own base, by reuse as directly, and its cavity
+    floods."""
+    source = write_box(tmp_path / "parts" / "src.stl", [30, 15, 15])
+    member = write_box(tmp_path / "parts" / "m1.stl", [36, 15, 15])
+    ms = pymeshlab.MeshSet()
+    ms.load_new_mesh(source)
+    holes = tmp_path / "holes.srp"
+    ms.apply_filter("add_drain_holes", layer_thickness=THICKNESS, hollow_wall_mm=3, drain_holes_file=str(holes))
+    run = family_py("--hollow", 3, "--drain-holes-file", holes, "--verify", "--out", tmp_path / "out", source, member)
+    assert run.returncode == 0, run.stderr
+    [entry] = json.loads(run.stdout)["targets"]
+    assert entry["method"] == "reuse" and entry["min_similarity"] == 1 and entry["max_grey_difference"] == 0, entry
+    assert entry["drain_holes"] == 1 and entry["printability"]["resin_traps"] == 0, entry
+    bad = family_py("--drain-holes-file", holes, "--out", tmp_path / "bad", source, member)
+    assert bad.returncode == 2 and "--drain-holes-file goes with --hollow" in bad.stderr, bad.stderr
