@@ -157,9 +157,14 @@ std::vector<DrainHole> add_drain_holes(std::vector<ClipperLib::Paths>& cavity, d
       }
     }
   }
-  // Each hole into the layers under its cavity (after all are found: a hole is no cavity's start).
-  for (size_t h = 0; h < holes.size(); ++h)
-    for (size_t k = 0; k < holes[h].layer; ++k) cavity[k] = clip_regions(cavity[k], {discs[h]}, ClipperLib::ctUnion);
+  // Each hole into the layers under its cavity (after all are found: a hole is no cavity's start),
+  // all of a layer's holes in one union.
+  for (size_t k = 0; k < cavity.size(); ++k) {
+    ClipperLib::Paths under;
+    for (size_t h = 0; h < holes.size(); ++h)
+      if (k < holes[h].layer) under.push_back(discs[h]);
+    if (!under.empty()) cavity[k] = clip_regions(cavity[k], under, ClipperLib::ctUnion);
+  }
   return holes;
 }
 
@@ -248,8 +253,11 @@ std::vector<DrainHole> add_drain_holes_at(std::vector<ClipperLib::Paths>& cavity
     holes.push_back(hole);
     sections.push_back(std::move(cut));
   }
+  std::vector<ClipperLib::Paths> cuts(cavity.size());
   for (const auto& cut : sections)
-    for (const auto& [k, section] : cut) cavity[k] = clip_regions(cavity[k], {section}, ClipperLib::ctUnion);
+    for (const auto& [k, section] : cut) cuts[k].push_back(section);
+  for (size_t k = 0; k < cavity.size(); ++k)
+    if (!cuts[k].empty()) cavity[k] = clip_regions(cavity[k], cuts[k], ClipperLib::ctUnion);
   return holes;
 }
 
