@@ -73,7 +73,11 @@ void set_job_hollowing(const JobHollowing& h, Host& host, const Mesh& first, Pla
                        h.cavity.wall_mm == 0 ? "hollow_wall_mm is 0 (solid)" : "drain_hole_mm is 0 (no holes)"));
   if (file) {
     o.drain_points = read_support_points(h.holes_file);
-    validate_support_points(o.drain_points, &first);
+    try {
+      validate_support_points(o.drain_points, &first);
+    } catch (const Error& e) {
+      throw Error(format("drain_holes_file %s: %s", h.holes_file.c_str(), e.what()));
+    }
     return;
   }
   const Mesh points = host.mesh_at(h.points_layer);

@@ -166,7 +166,7 @@ TEST_F(HollowingFilters, EveryMemberGetsTheSourcesHolesOnItsOwnSurface) {
   EXPECT_NE(error_of([&] {
               job.run(defaults(job, {{"output_path", path("other.goo")}, {"drain_holes_file", path("holes.srp")}}, hollow),
                       host);
-            }).find("the support points are for a mesh of"),
+            }).find("drain_holes_file " + path("holes.srp") + ": the support points are for a mesh of"),
             std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(path("other.goo")));
 }
