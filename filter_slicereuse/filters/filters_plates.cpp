@@ -252,6 +252,8 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
     const double from = 0.15 + 0.85 * double(k) / double(plates), to = 0.15 + 0.85 * double(k + 1) / double(plates);
     jo.names = plate_names;
     set_job_labels(p.labels, plate_names, jo);
+    jo.label_turns_deg.clear();  // a label on a side goes on the member's own side, however turned
+    for (size_t m : arrangement.members[k]) jo.label_turns_deg.push_back(arrangement.placement[m].theta_deg);
     std::vector<Mesh> placed_supports;
     for (size_t m : supports.empty() ? std::vector<size_t>() : arrangement.members[k])
       placed_supports.push_back(place_mesh(supports[m].tree.mesh, arrangement.placement[m]));
