@@ -431,7 +431,8 @@ FilterSpec plate_job_filter() {
       "Printability</i>), the findings counted per member; with <i>require printable</i>, a plate holding an "
       "island, a resin trap or a suction cup is refused and not written.</p>"
       "<p>With <i>labels</i>, each member's name (or its row of a labels file: a case ID) is cut into its base, "
-      "mirrored to read from below, as large as fits up to the label height; the layout picture names each "
+      "mirrored to read from below (or upright into the <i>label side</i>, the member's own however the plate "
+      "turns it), as large as fits up to the label height; the layout picture names each "
       "member by its label. A label that fits nowhere fails the job, naming the member, unless <i>allow "
       "unlabelled</i>.</p>") +
       kReference;
