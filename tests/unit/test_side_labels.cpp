@@ -222,8 +222,8 @@ TEST_F(SideLabelTest, NoFitIsReportedInWordsAndAllowUnlabelledPrintsWithout) {
 // half the depth of a plane, across the layers and along each: a front leaning back 10 degrees
 // (1.32 mm over 7.5 mm) takes the label whole, on the plane of its lowest layer's front; one
 // leaning 45 degrees, or with a groove 2 mm deep down its middle, takes none; a groove 1 mm deep
-// is within the tolerance.
-TEST_F(SideLabelTest, OnlyAFaceFlatWithinHalfTheDepthTakesTheLabel) {
+// is within the tolerance. Behind it, the part must be solid for the depth and 1 mm more.
+TEST_F(SideLabelTest, OnlyAFaceFlatWithinHalfTheDepthAndSolidBehindTakesTheLabel) {
   PlateJobOptions o;
   o.slicing.thickness = 0.1;
   o.names = {"part"};
@@ -253,4 +253,43 @@ TEST_F(SideLabelTest, OnlyAFaceFlatWithinHalfTheDepthTakesTheLabel) {
                "the label 'CASE1' fits nowhere on the front side of part");
   regions({grooved(1)}, o, "groove1");
   EXPECT_EQ(last.label_heights_mm, std::vector<double>{7.5});
+  // Behind the face, the part must be solid for the depth and a millimetre more: a slab 3.5 mm
+  // thick would be cut nearly through, one 4.5 mm thick holds the label.
+  EXPECT_ERROR(export_plate({test::make_box(-20, -10, 0, 20, -6.5, 12, 4)}, o, display(), path("thin.sl1")),
+               "with every point within 1.5 mm of a plane and 4 mm of solid part behind the innermost");
+  regions({test::make_box(-20, -10, 0, 20, -5.5, 12, 4)}, o, "slab");
+  EXPECT_EQ(last.label_heights_mm, std::vector<double>{7.5});
+}
+
+// Hollowed with 4 mm walls, a 40 x 20 x 20 mm box's front label 3 mm deep keeps 1 mm from the
+// cavity: what it takes from each layer, grown by just under 1 mm, meets none of the layer's
+// cavity.
+TEST_F(SideLabelTest, OnAHollowedMemberTheLettersKeepAMillimetreFromTheCavity) {
+  const std::vector<Mesh> box{test::make_box(-20, -10, 0, 20, 10, 20, 4)};
+  PlateJobOptions o;
+  o.slicing.thickness = 0.1;
+  o.names = {"box"};
+  o.hollowing.wall_mm = 4;
+  const std::vector<Paths> plain = regions(box, o, "plain");
+  ASSERT_GT(last.cavity_mm3.at(0), 0);
+  o.labels = {"CASE1"};
+  o.label.side = LabelSide::Front;
+  const std::vector<Paths> cut = regions(box, o, "front");
+  ASSERT_EQ(last.label_heights_mm, std::vector<double>{7.5});
+  size_t near_cavity = 0;
+  const size_t first = size_t(std::llround((last.label_places[0][2] - 3.75) / 0.1));
+  for (size_t k = first; k < first + 75; ++k) {
+    Paths cavity;  // the layer's holes, as regions
+    for (const ClipperLib::Path& loop : plain[k])
+      if (!ClipperLib::Orientation(loop)) cavity.push_back(ClipperLib::Path(loop.rbegin(), loop.rend()));
+    near_cavity += !cavity.empty();
+    const Paths taken = clip_regions(plain[k], cut[k], ClipperLib::ctDifference);
+    ASSERT_FALSE(taken.empty()) << "layer " << k;
+    ClipperLib::ClipperOffset grow;
+    grow.AddPaths(taken, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+    Paths grown;
+    grow.Execute(grown, double(region_units(0.999)));
+    EXPECT_TRUE(clip_regions(grown, cavity, ClipperLib::ctIntersection).empty()) << "layer " << k;
+  }
+  EXPECT_GT(near_cavity, 40u);  // the cavity spans most of the label's layers
 }

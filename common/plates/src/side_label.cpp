@@ -48,10 +48,14 @@ Paths turned(const Paths& region, const Turn& t) {
 
 Path rect(cInt x0, cInt y0, cInt x1, cInt y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
 
+// A region's box (its points': no Clipper, which would build its edges first); empty: none.
 ClipperLib::IntRect bounds(const Paths& region) {
-  ClipperLib::Clipper c;
-  c.AddPaths(region, ClipperLib::ptSubject, true);
-  return c.GetBounds();
+  ClipperLib::IntRect b{std::numeric_limits<cInt>::max(), std::numeric_limits<cInt>::max(),
+                        std::numeric_limits<cInt>::min(), std::numeric_limits<cInt>::min()};
+  for (const Path& path : region)
+    for (const IntPoint& p : path)
+      b = {std::min(b.left, p.X), std::min(b.top, p.Y), std::max(b.right, p.X), std::max(b.bottom, p.Y)};
+  return b;
 }
 
 // A layer's face over the strip a <= u <= b of the side's frame (the side facing -w, w being y):
@@ -175,13 +179,13 @@ SideLabel place_side_label(const Slices& layers, double thickness_mm, double tur
   const double tol_mm = kFlatShare * o.depth_mm;
   s.why = format("the label '%s' fits nowhere on the %s side of %s: even %.3g mm high it is %.3g mm long, and no %.3g "
                  "mm of its height has a face %.3g mm wide (%g mm either side of the label) with every point within "
-                 "%.3g mm of a plane and %.3g mm of solid part behind that",
+                 "%.3g mm of a plane and %.3g mm of solid part behind the innermost",
                  text.c_str(), side_name(o.side), name.c_str(), o.min_height_mm, least[0], o.min_height_mm,
-                 least[0] + 2 * o.margin_mm, o.margin_mm, tol_mm, tol_mm + o.depth_mm + kLabelRoofMm);
+                 least[0] + 2 * o.margin_mm, o.margin_mm, tol_mm, o.depth_mm + kLabelRoofMm);
   if (u_lo > u_hi) return s;
   const cInt u_centre = (u_lo + u_hi) / 2;
   const cInt margin = region_units(o.margin_mm), tol = region_units(tol_mm), depth = region_units(o.depth_mm);
-  const cInt reach = tol + depth + region_units(kLabelRoofMm);
+  const cInt roof = region_units(kLabelRoofMm), reach = tol + depth + roof;
   // Only the widest box's strip (and its margins) matters from here on.
   const cInt widest = region_units(0.5 * label_box_mm(text, o.height_mm)[0]) + margin + 1;
   for (Paths& r : regions)
@@ -220,7 +224,7 @@ SideLabel place_side_label(const Slices& layers, double thickness_mm, double tur
         innermost = std::max(innermost, f.innermost);
         solid = std::min(solid, f.solid);
       }
-      if (!fits || innermost > double(plane + tol) || solid < double(plane + reach)) continue;
+      if (!fits || innermost > double(plane + tol) || solid < innermost + double(depth + roof)) continue;
       // Placed: the letters upright on the face, u to the right, z up, centred on the box.
       const double z_centre = bottom + double(j) * thickness_mm + 0.5 * h;
       Paths letters = label_region(text, h, false);

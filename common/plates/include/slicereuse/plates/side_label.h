@@ -14,8 +14,9 @@
 // middle height, at which on every layer whose plane the box spans, across the box's width and
 // options.margin_mm either side: every u has the part, the part's outermost point at each u lies
 // within half the depth of the outermost of all of them (the face's plane, p: a flat face), and
-// the part is solid from there to the depth and kLabelRoofMm beyond (the letters cut through
-// nothing). All exact on the layers' regions (Clipper): no sampling.
+// the part is solid from the innermost of those points to the depth and kLabelRoofMm beyond (no
+// letter, which lies within the depth of the face, cuts through). Exact on the layers' regions
+// (Clipper; the face's points from the regions' edges): no sampling.
 // Placed: per engraved layer (its own layers [first, first + cuts.size())), the letters' section
 // at its plane (the horizontal line through the placed letters, label_region.h, cut by Clipper)
 // as bands across the side from outside the part to depth and half the depth beyond p, in plate
