@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "error_of.h"
@@ -60,6 +61,18 @@ double section_mm(const Paths& region, double y) {
 
 class SideLabelTest : public test::TempFolderTest {
  protected:
+  // A plate's options: 0.1 mm layers, the members so named, labelled (when `labels`) on `side`.
+  static PlateJobOptions options(std::vector<std::string> names, std::vector<std::string> labels = {},
+                                 LabelSide side = LabelSide::Front) {
+    PlateJobOptions o;
+    o.slicing.thickness = 0.1;
+    o.names = std::move(names);
+    o.labels = std::move(labels);
+    o.label.side = side;
+    return o;
+  }
+  const std::vector<Mesh> box{test::make_box(-20, -10, 0, 20, 10, 12, 4)};  // 40 x 20 x 12 mm
+
   // Each layer's region of the one member's part as the plate job cuts it (before the elephant
   // foot), the plate written to `name`.
   std::vector<Paths> regions(const std::vector<Mesh>& placed, const PlateJobOptions& options, const std::string& name) {
@@ -83,14 +96,8 @@ class SideLabelTest : public test::TempFolderTest {
 // over the planes of layers 22 to 96. Each of those loses the letters' section times 3 mm, in
 // the band 3 mm deep behind the front; no other layer changes.
 TEST_F(SideLabelTest, CutsTheLettersSectionTimesTheDepthOnlyInTheLayersItsBoxSpans) {
-  const std::vector<Mesh> box{test::make_box(-20, -10, 0, 20, 10, 12, 4)};
-  PlateJobOptions o;
-  o.slicing.thickness = 0.1;
-  o.names = {"box"};
-  const std::vector<Paths> plain = regions(box, o, "plain");
-  o.labels = {"CASE1"};
-  o.label.side = LabelSide::Front;
-  const std::vector<Paths> cut = regions(box, o, "front");
+  const std::vector<Paths> plain = regions(box, options({"box"}), "plain");
+  const std::vector<Paths> cut = regions(box, options({"box"}, {"CASE1"}), "front");
   ASSERT_EQ(last.label_heights_mm, std::vector<double>{7.5});
   EXPECT_NEAR(last.label_places[0][0], 0, 1e-6);
   EXPECT_NEAR(last.label_places[0][1], -10, 1e-6);
@@ -125,12 +132,8 @@ TEST_F(SideLabelTest, CutsTheLettersSectionTimesTheDepthOnlyInTheLayersItsBoxSpa
 // from that side: front (seen from -y) at x < 0, back at x > 0, left (seen from -x) at y > 0,
 // right at y < 0. A member turned a quarter on the plate has its own front facing +x.
 TEST_F(SideLabelTest, EachSideReadsFromOutsideAndATurnedMemberKeepsItsOwnSide) {
-  const std::vector<Mesh> box{test::make_box(-20, -10, 0, 20, 10, 12, 4)};
-  PlateJobOptions o;
-  o.slicing.thickness = 0.1;
-  o.names = {"box"};
-  const std::vector<Paths> plain = regions(box, o, "plain");
-  o.labels = {"L"};
+  const std::vector<Paths> plain = regions(box, options({"box"}), "plain");
+  PlateJobOptions o = options({"box"}, {"L"});
   struct Expected {
     LabelSide side;
     double x, y;      // the label's centre on the face
@@ -171,15 +174,9 @@ TEST_F(SideLabelTest, ReuseGivesDirectSlicingsMasks) {
   PrinterProfile profile = display();
   profile.antialiasing = true;
   profile.elephant_foot_mm = 0.2;
-  SliceOptions so;
-  so.thickness = 0.1;
-  const Slices encoding = slice_layers(a, so);
-  PlateJobOptions direct;
-  direct.slicing = so;
+  PlateJobOptions direct = options({"a", "b"}, {"CASE1", "CASE2"});
+  const Slices encoding = slice_layers(a, direct.slicing);
   direct.slicing.z_start = encoding.z_start;
-  direct.names = {"a", "b"};
-  direct.labels = {"CASE1", "CASE2"};
-  direct.label.side = LabelSide::Front;
   const PlateJobStats d = export_plate({a, b}, direct, profile, path("direct"));
   EXPECT_EQ(d.label_heights_mm, (std::vector<double>{7.5, 7.5}));
   PlateJobOptions reuse = direct;
@@ -197,11 +194,7 @@ TEST_F(SideLabelTest, ReuseGivesDirectSlicingsMasks) {
 // allow_unlabelled left off; a hollowed member's letters keep 1 mm from the cavity, as on the base.
 TEST_F(SideLabelTest, NoFitIsReportedInWordsAndAllowUnlabelledPrintsWithout) {
   const std::vector<Mesh> placed{test::make_box(-20, -18, 0, -14, -12, 12, 2), test::make_box(-20, 0, 0, 20, 15, 12, 4)};
-  PlateJobOptions o;
-  o.slicing.thickness = 0.1;
-  o.names = {"tiny", "big"};
-  o.labels = {"CASE12", "CASE13"};
-  o.label.side = LabelSide::Back;
+  PlateJobOptions o = options({"tiny", "big"}, {"CASE12", "CASE13"}, LabelSide::Back);
   const std::string message = test::error_of([&] { export_plate(placed, o, display(), path("p.sl1")); });
   EXPECT_NE(message.find("the label 'CASE12' fits nowhere on the back side of tiny: even 2.5 mm high it is "),
             std::string::npos)
@@ -224,11 +217,7 @@ TEST_F(SideLabelTest, NoFitIsReportedInWordsAndAllowUnlabelledPrintsWithout) {
 // leaning 45 degrees, or with a groove 2 mm deep down its middle, takes none; a groove 1 mm deep
 // is within the tolerance. Behind it, the part must be solid for the depth and 1 mm more.
 TEST_F(SideLabelTest, OnlyAFaceFlatWithinHalfTheDepthAndSolidBehindTakesTheLabel) {
-  PlateJobOptions o;
-  o.slicing.thickness = 0.1;
-  o.names = {"part"};
-  o.labels = {"CASE1"};
-  o.label.side = LabelSide::Front;
+  const PlateJobOptions o = options({"part"}, {"CASE1"});
   const auto leaning = [](double degrees) {
     Mesh m = test::make_box(-20, -10, 0, 20, 10, 12, 4);
     const double t = std::tan(degrees * M_PI / 180);
@@ -265,16 +254,13 @@ TEST_F(SideLabelTest, OnlyAFaceFlatWithinHalfTheDepthAndSolidBehindTakesTheLabel
 // cavity: what it takes from each layer, grown by just under 1 mm, meets none of the layer's
 // cavity.
 TEST_F(SideLabelTest, OnAHollowedMemberTheLettersKeepAMillimetreFromTheCavity) {
-  const std::vector<Mesh> box{test::make_box(-20, -10, 0, 20, 10, 20, 4)};
-  PlateJobOptions o;
-  o.slicing.thickness = 0.1;
-  o.names = {"box"};
+  const std::vector<Mesh> tall{test::make_box(-20, -10, 0, 20, 10, 20, 4)};
+  PlateJobOptions o = options({"box"});
   o.hollowing.wall_mm = 4;
-  const std::vector<Paths> plain = regions(box, o, "plain");
+  const std::vector<Paths> plain = regions(tall, o, "plain");
   ASSERT_GT(last.cavity_mm3.at(0), 0);
   o.labels = {"CASE1"};
-  o.label.side = LabelSide::Front;
-  const std::vector<Paths> cut = regions(box, o, "front");
+  const std::vector<Paths> cut = regions(tall, o, "front");
   ASSERT_EQ(last.label_heights_mm, std::vector<double>{7.5});
   size_t near_cavity = 0;
   const size_t first = size_t(std::llround((last.label_places[0][2] - 3.75) / 0.1));
