@@ -317,7 +317,8 @@ std::vector<LabelCut> member_labels(const std::vector<PlateMember>& members, siz
     if (p.support || text.empty()) continue;
     const std::string name = p.owner < o.names.size() ? o.names[p.owner] : format("member %zu", p.owner + 1);
     if (o.label.side != LabelSide::Base) {
-      // Solid, the cavity kept: the letters come no nearer it than the wall less their depth.
+      // Placed on its solid layers: the letters take only what lies within their depth of the
+      // outside (engrave_part), so they keep the wall less their depth from the cavity (above).
       const Slices all = p.transfer ? p.transfer->layers(0, p.layers())
                                     : slice_planes(*p.mesh, p.planes, {}, false);
       const double turn = p.owner < o.label_turns_deg.size() ? o.label_turns_deg[p.owner] : 0;
