@@ -68,11 +68,16 @@ struct LayerFace {
   double innermost = 0, solid = 0;
 };
 
+// What of a region lies over a <= u <= b and at most w_max, and its box.
+Paths over(const Paths& region, cInt a, cInt b, cInt w_max = std::numeric_limits<cInt>::max()) {
+  if (region.empty()) return {};
+  const ClipperLib::IntRect all = bounds(region);
+  return clip_regions(region, {rect(a, all.top - 1, b, std::min(all.bottom + 1, w_max))}, ClipperLib::ctIntersection);
+}
+
 LayerFace layer_face(const Paths& region, cInt a, cInt b, cInt reach) {
   LayerFace f;
-  if (region.empty()) return f;
-  const ClipperLib::IntRect all = bounds(region);
-  const Paths strip = clip_regions(region, {rect(a, all.top - 1, b, all.bottom + 1)}, ClipperLib::ctIntersection);
+  const Paths strip = over(region, a, b);
   if (strip.empty()) return f;
   f.outermost = bounds(strip).top;
   const cInt cap = f.outermost + reach;
@@ -186,17 +191,19 @@ SideLabel place_side_label(const Slices& layers, double thickness_mm, double tur
   const cInt u_centre = (u_lo + u_hi) / 2;
   const cInt margin = region_units(o.margin_mm), tol = region_units(tol_mm), depth = region_units(o.depth_mm);
   const cInt roof = region_units(kLabelRoofMm), reach = tol + depth + roof;
-  // Only the widest box's strip (and its margins) matters from here on.
-  const cInt widest = region_units(0.5 * label_box_mm(text, o.height_mm)[0]) + margin + 1;
-  for (Paths& r : regions)
-    if (!r.empty()) {
-      const ClipperLib::IntRect b = bounds(r);
-      r = clip_regions(r, {rect(u_centre - widest, b.top - 1, u_centre + widest, b.bottom + 1)},
-                       ClipperLib::ctIntersection);
-    }
   std::vector<double> heights;
   for (double h = o.height_mm; h > o.min_height_mm; h *= kHeightStep) heights.push_back(h);
   heights.push_back(o.min_height_mm);
+  // Half the strip a box h high looks at: its width and the margins.
+  const auto half_strip = [&](double h) { return region_units(0.5 * label_box_mm(text, h)[0]) + margin; };
+  // All that matters from here on: the widest strip, up to the reach beyond the outermost point
+  // over the narrowest (a wider strip's outermost lies no farther in); none there, no box fits.
+  const cInt widest = half_strip(std::max(heights.front(), heights.back()));
+  const cInt narrowest = half_strip(std::min(heights.front(), heights.back()));
+  for (Paths& r : regions) {
+    const Paths inner = over(r, u_centre - narrowest, u_centre + narrowest);
+    r = inner.empty() ? Paths{} : over(r, u_centre - widest, u_centre + widest, bounds(inner).top + reach);
+  }
   const double bottom = layers.layer_z[0] - 0.5 * thickness_mm;
   for (const double h : heights) {
     // The box's layers: those whose plane it spans, from its bottom on layer j's.
@@ -209,8 +216,7 @@ SideLabel place_side_label(const Slices& layers, double thickness_mm, double tur
     // Nearest the member's middle height first, the lower of two as near.
     const auto off_middle = [&](size_t j) { return std::fabs(2.0 * double(j) + h / thickness_mm - double(L)); };
     std::stable_sort(bottoms.begin(), bottoms.end(), [&](size_t x, size_t y) { return off_middle(x) < off_middle(y); });
-    const cInt half = region_units(0.5 * label_box_mm(text, h)[0]);
-    const cInt a = u_centre - half - margin, b = u_centre + half + margin;
+    const cInt a = u_centre - half_strip(h), b = u_centre + half_strip(h);
     std::vector<std::optional<LayerFace>> faces(L);
     for (const size_t j : bottoms) {
       bool fits = true;
