@@ -168,3 +168,17 @@ def test_bad_label_side_arguments_are_refused_before_any_work(pymeshlab, tmp_pat
     with pytest.raises(ValueError, match="label_side='back' goes with labels"):
         sr.plates(source, [a], THICKNESS, tmp_path / "none", label_side="back")
     assert not (tmp_path / "bad").exists() and not (tmp_path / "none").exists()
+
+
+def test_add_labels_shows_a_side_label_where_a_job_cuts_it(pymeshlab, tmp_path):
+    [box] = write_tall_boxes(tmp_path / "parts", ["CASE1.stl"])
+    ms = pymeshlab.MeshSet()
+    ms.load_new_mesh(box)
+    shown = ms.apply_filter("add_labels", layer_thickness=THICKNESS, label_side=sr.LABEL_SIDES.index("right"))
+    # "CASE1" on the 15 mm right side: 2.905 mm high (12.3 mm long, 14.3 with its margins), centred.
+    assert shown["label_height_mm"] == pytest.approx(7.5 * 0.9 ** 9), shown
+    assert (shown["x_mm"], shown["y_mm"], shown["angle_deg"]) == (pytest.approx(30), pytest.approx(7.5), 0), shown
+    job = ms.apply_filter("make_print_job", mesh_file=box, layer_thickness=THICKNESS, labels=True,
+                          label_side=sr.LABEL_SIDES.index("right"), output_path=str(tmp_path / "job.sl1s"),
+                          printer="prusa_sl1s_speed")
+    assert job["label_height_mm"] == shown["label_height_mm"]
