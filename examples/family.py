@@ -6,7 +6,8 @@
                                       [--workers N | --scheduler tcp://HOST:PORT [--send-encoding]]
                                       [--resume] [--strict] [--supports]
                                       [--require-printable | --no-check]
-                                      [--labels [FILE.csv] [--allow-unlabelled]] [--hollow WALL_MM [--drain-holes D_MM[,COUNT]] [--drain-holes-file FILE.srp]]
+                                      [--labels [FILE.csv] [--allow-unlabelled] [--label-side SIDE]]
+                                      [--hollow WALL_MM [--drain-holes D_MM[,COUNT]] [--drain-holes-file FILE.srp]]
                                       MESH0 MESH1 ...
 
 Default: slices MESH0 once with encoding, then for each member MESH1 ...: reads it (STL, PLY or
@@ -34,7 +35,9 @@ hold an island, a resin trap or a suction cup is not written; its entry's "error
 "Labels file") is cut 3 mm deep into its base, mirrored to read from below, as large as fits up
 to 7.5 mm; each member's entry gains "label_height_mm", and the plates' layout pictures name the
 members by their labels. A label that fits nowhere fails its member (or plate), naming it, unless
---allow-unlabelled (then it is printed without, "label_height_mm" 0).
+--allow-unlabelled (then it is printed without, "label_height_mm" 0). --label-side front, back,
+left or right (-y, +y, -x, +x seen from above) cuts it upright into that side instead, readable
+from outside, where the side is flat.
 --hollow WALL_MM: every member hollowed on its contours with walls that thick (PrusaSlicer's
 hollowing, its 2 mm closing distance), a 4 mm drain hole under each cavity through the bottom
 wall to the base; each entry gains "cavity_mm3" (0: too thin for a cavity) and "drain_holes".
@@ -138,6 +141,9 @@ def main():
                          "(member,label)")
     ap.add_argument("--allow-unlabelled", action="store_true",
                     help="--labels: print a member whose label fits nowhere on its base without it")
+    ap.add_argument("--label-side", choices=sr.LABEL_SIDES, default="base",
+                    help="--labels: the face the label goes into: the base (the default, mirrored to read from "
+                         "below) or a side, upright: front (-y), back (+y), left (-x), right (+x)")
     ap.add_argument("--hollow", type=float, metavar="WALL_MM",
                     help="hollow every member, keeping walls this thick (mm; PrusaSlicer's profiles: 3)")
     ap.add_argument("--drain-holes", metavar="D_MM[,COUNT]",
@@ -175,6 +181,8 @@ def main():
         ap.error("--strict is for members made by reuse, not --direct")
     if args.allow_unlabelled and not args.labels:
         ap.error("--allow-unlabelled goes with --labels")
+    if args.label_side != "base" and not args.labels:
+        ap.error("--label-side goes with --labels")
     if args.hollow is not None and not args.hollow > 0:
         ap.error("--hollow needs a wall thickness above 0 mm")
     drain_holes = None
@@ -202,16 +210,18 @@ def main():
                                progress=bar, direct=args.direct, verify=args.verify, spacing_mm=args.spacing,
                                placements=args.placements, extension=extension, strict=args.strict,
                                supports=args.supports, printability=args.printability, labels=args.labels,
-                               allow_unlabelled=args.allow_unlabelled, hollow=args.hollow,
-                               drain_holes=drain_holes, drain_holes_file=args.drain_holes_file, **engine)
+                               allow_unlabelled=args.allow_unlabelled, label_side=args.label_side,
+                               hollow=args.hollow, drain_holes=drain_holes, drain_holes_file=args.drain_holes_file,
+                               **engine)
         else:
             result = sr.family(args.meshes[0], args.meshes[1:], args.layer_thickness, args.out,
                                profile=profile, binary=not args.text, extension=extension, progress=bar,
                                direct=args.direct, verify=args.verify, keep_contours=args.keep_contours,
                                strict=args.strict, supports=args.supports,
                                printability=args.printability, labels=args.labels,
-                               allow_unlabelled=args.allow_unlabelled, hollow=args.hollow,
-                               drain_holes=drain_holes, drain_holes_file=args.drain_holes_file, **engine)
+                               allow_unlabelled=args.allow_unlabelled, label_side=args.label_side,
+                               hollow=args.hollow, drain_holes=drain_holes, drain_holes_file=args.drain_holes_file,
+                               **engine)
     except Exception as e:  # pymeshlab.PyMeshLabException, OSError, RuntimeError, ValueError
         if sys.stderr.isatty():
             sys.stderr.write("\n")

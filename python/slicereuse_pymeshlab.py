@@ -201,15 +201,23 @@ def _check_parameters(printability):
 
 
 LABEL_DEPTH_MM, LABEL_MIN_DEPTH_MM = 3.0, 0.5  # the filters' default depth; the least this sets
+# The filters' label_side, in its order: the base, or a side seen from above (front -y, back +y,
+# left -x, right +x).
+LABEL_SIDES = ("base", "front", "back", "left", "right")
 
 
-def _label_parameters(labels, allow_unlabelled=False, hollow=None):
+def _label_parameters(labels, allow_unlabelled=False, hollow=None, side="base"):
     """make_print_job's and make_plate_job's label parameters for labels: None (no labels),
     "names" (each member's file name without its extension) or the path of a labels file (CSV,
     docs/formats.md "Labels file"); allow_unlabelled prints a member whose label fits nowhere
     without it (else its job fails naming it). 3 mm deep, or with hollow (walls in mm) 1 mm less
-    than the walls where that is less, so that the letters keep 1 mm from the cavity."""
+    than the walls where that is less, so that the letters keep 1 mm from the cavity. side: one
+    of LABEL_SIDES."""
+    if side not in LABEL_SIDES:
+        raise ValueError(f"label_side must be one of {', '.join(LABEL_SIDES)}, not {side!r}")
     if labels is None:
+        if side != "base":
+            raise ValueError(f"label_side={side!r} goes with labels")
         return {"labels": False, "labels_file": "", "allow_unlabelled": False}
     if labels != "names" and not Path(labels).is_file():
         raise ValueError(f'labels must be None, "names" or a labels file (CSV), but {labels!r} is no file')
@@ -219,8 +227,11 @@ def _label_parameters(labels, allow_unlabelled=False, hollow=None):
             raise ValueError(f"labels on hollowed members need walls over {1 + LABEL_MIN_DEPTH_MM:g} mm thick (the "
                              f"letters keep 1 mm from the cavity), not {hollow!r} mm")
         depth = min(depth, hollow - 1)
-    return {"labels": True, "labels_file": "" if labels == "names" else str(Path(labels).resolve()),
-            "label_depth_mm": depth, "allow_unlabelled": bool(allow_unlabelled)}
+    parameters = {"labels": True, "labels_file": "" if labels == "names" else str(Path(labels).resolve()),
+                  "label_depth_mm": depth, "allow_unlabelled": bool(allow_unlabelled)}
+    if side != "base":  # the filter's default otherwise: a batch's resume keys stay as they were
+        parameters["label_side"] = LABEL_SIDES.index(side)
+    return parameters
 
 
 def _hollow_parameters(hollow, drain_holes=None, drain_holes_file=None):
@@ -342,7 +353,8 @@ def _job_supports(supports, direct, out, source, layer_thickness, epoch, resume)
 def family(source, targets, layer_thickness, out, profile=None, binary=True, progress=None,
            direct=False, verify=False, keep_contours=False, details=False, extension=None,
            workers=0, scheduler=None, resume=False, send_encoding=False, strict=False, supports=False,
-           printability="check", labels=None, allow_unlabelled=False, hollow=None, drain_holes=None, drain_holes_file=None):
+           printability="check", labels=None, allow_unlabelled=False, hollow=None, label_side="base",
+           drain_holes=None, drain_holes_file=None):
     """The production pipeline: one print job per family member, out/<member stem><extension>
     (one of print_file_extensions(), or "" for a folder of PNG images; None: the printer's own,
     printer_extension(profile's printer)).
@@ -379,7 +391,9 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     as large as fits up to 7.5 mm; each entry then has "label_height_mm". A label that fits
     nowhere fails the member's job (its "error" names it), or with allow_unlabelled=True leaves
     it off ("label_height_mm" 0); with hollow, the letters are 1 mm less deep than the walls where
-    that is less than 3 mm. hollow=WALL_MM hollows every member on its contours with walls
+    that is less than 3 mm. label_side="front", "back", "left" or "right" (-y, +y, -x, +x seen
+    from above) cuts the label upright into that side instead, readable from outside, centred
+    along it where it is flat (within half the depth) and solid behind the letters. hollow=WALL_MM hollows every member on its contours with walls
     that thick (make_print_job's hollow_wall_mm, PrusaSlicer's 2 mm closing distance) and a 4 mm
     drain hole under each cavity, through the bottom wall to the base (drain_holes: another
     diameter in mm, 0 for none, or (diameter, count), count holes spread over each cavity's lowest
@@ -411,7 +425,7 @@ def family(source, targets, layer_thickness, out, profile=None, binary=True, pro
     _check_files([source, *targets])
     _check_parameters(printability)  # before the source is sliced
     hollow_parameters = _hollow_parameters(hollow, drain_holes, drain_holes_file)
-    label_parameters = _label_parameters(labels, allow_unlabelled, hollow)
+    label_parameters = _label_parameters(labels, allow_unlabelled, hollow, label_side)
     stems = [Path(t).stem for t in targets]
     repeated = {s for s in stems if stems.count(s) > 1}
     if repeated:
@@ -549,7 +563,7 @@ def _free_cached_memory():
 def plates(source, targets, layer_thickness, out, profile=None, progress=None, direct=False, verify=False,
            spacing_mm=2.0, placements=None, extension=None, workers=0, scheduler=None, resume=False,
            strict=False, supports=False, printability="check", labels=None, allow_unlabelled=False,
-           hollow=None, drain_holes=None, drain_holes_file=None):
+           hollow=None, label_side="base", drain_holes=None, drain_holes_file=None):
     """The lab's job: the targets arranged on build plates of the printer, one print file per
     plate, out/plate_<k><extension> (one of print_file_extensions(), or "" for folders of PNG images;
     None: the printer's own, printer_extension(profile's printer)), its top view
@@ -575,9 +589,9 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
     "printability" (as family()'s) and each member's its own counts (a finding goes to the member
     whose footprint holds it); "require": a plate holding an island, a resin trap or a suction cup
     is not written, its entry's "error" naming each such finding, its member and place.
-    labels, allow_unlabelled, hollow, drain_holes and drain_holes_file as for family(): each plate member's entry has
-    "label_height_mm", "cavity_mm3" and "drain_holes", and the layout pictures name the members by
-    their labels.
+    labels, allow_unlabelled, label_side, hollow, drain_holes and drain_holes_file as for family():
+    each plate member's entry has "label_height_mm", "cavity_mm3" and "drain_holes", and the layout
+    pictures name the members by their labels.
     Returns {"source", "members", "seconds", "arrange_seconds", "engine", "failed", "plates":
     [{"output", "layout", "members", "area_used", "layers", "points", "seconds", "worker"[,
     "min_similarity", "max_grey_difference"][, "resumed"]} or {"output", "layout", "members",
@@ -587,7 +601,7 @@ def plates(source, targets, layer_thickness, out, profile=None, progress=None, d
     _check_files([source, *targets])
     _check_parameters(printability)  # before anything is arranged
     hollow_parameters = _hollow_parameters(hollow, drain_holes, drain_holes_file)
-    label_parameters = _label_parameters(labels, allow_unlabelled, hollow)
+    label_parameters = _label_parameters(labels, allow_unlabelled, hollow, label_side)
     by_name = {Path(t).name: str(Path(t).resolve()) for t in targets}
     if len(by_name) != len(targets):
         names = [Path(t).name for t in targets]

@@ -118,18 +118,22 @@ void report_printability(Host& host, const char* filter, const std::string& plat
 // keys and the result keys report_printability adds (with "_*" for the members' when per_member).
 std::vector<std::string> with_printability_keys(std::vector<std::string> keys, bool per_member);
 
-// Labels a print or plate job engraves into its members' bases (filters_job_labels.cpp; #36):
-// each member's name without its extension, or its label in a labels file (labels_file.h); the
-// height, depth, and whether a member whose label fits nowhere is printed without it. The same
+// Labels a print or plate job engraves into its members (filters_job_labels.cpp; #36): each
+// member's name without its extension, or its label in a labels file (labels_file.h); the
+// height, depth, the side (the base or one of four), and whether a member whose label fits nowhere is printed without it. The same
 // parameters in both filters.
 struct JobLabels {
   bool labels;
   std::string labels_file;
   double height_mm;
   double depth_mm;
+  LabelSide side;
   bool allow_unlabelled;
 };
 ParamList<JobLabels> job_label_params();
+// label_side's choices, in LabelSide's order, and its tooltip (the jobs' and Add Labels').
+std::vector<std::string> label_side_names();
+extern const char* const kLabelSideTooltip;
 // The job's labels for its members (named `names`: file or layer names) into o; throws Error for
 // a labels file that cannot be read or lacks a member, or a label the font cannot print.
 void set_job_labels(const JobLabels& l, const std::vector<std::string>& names, PlateJobOptions& o);

@@ -256,6 +256,8 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
     const double from = 0.15 + 0.85 * double(k) / double(plates), to = 0.15 + 0.85 * double(k + 1) / double(plates);
     jo.names = plate_names;
     set_job_labels(p.labels, plate_names, jo);
+    jo.label_turns_deg.clear();  // a label on a side goes on the member's own side, however turned
+    for (size_t m : arrangement.members[k]) jo.label_turns_deg.push_back(arrangement.placement[m].theta_deg);
     std::vector<Mesh> placed_supports;
     for (size_t m : supports.empty() ? std::vector<size_t>() : arrangement.members[k])
       placed_supports.push_back(place_mesh(supports[m].tree.mesh, arrangement.placement[m]));
@@ -433,7 +435,8 @@ FilterSpec plate_job_filter() {
       "Printability</i>), the findings counted per member; with <i>require printable</i>, a plate holding an "
       "island, a resin trap or a suction cup is refused and not written.</p>"
       "<p>With <i>labels</i>, each member's name (or its row of a labels file: a case ID) is cut into its base, "
-      "mirrored to read from below, as large as fits up to the label height; the layout picture names each "
+      "mirrored to read from below (or upright into the <i>label side</i>, the member's own however the plate "
+      "turns it), as large as fits up to the label height; the layout picture names each "
       "member by its label. A label that fits nowhere fails the job, naming the member, unless <i>allow "
       "unlabelled</i>.</p>") +
       kReference;

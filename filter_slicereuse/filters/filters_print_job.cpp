@@ -154,8 +154,8 @@ FilterSpec print_job_filter() {
       "from them (as <i>Build Supports</i>); they are sliced with the mesh, on the layers below "
       "it.</p>"
       "<p>With <i>labels</i>, the mesh's name (or its row of a labels file) is cut into its base, mirrored to read "
-      "from below, as large as fits up to the label height, on the contours, so a reused member's label is "
-      "direct slicing's.</p>") +
+      "from below (or upright into the <i>label side</i>), as large as fits up to the label height, on the "
+      "contours, so a reused member's label is direct slicing's.</p>") +
       kReference;
   return typed_filter({FilterId::MakePrintJob, "Make Print Job", "make_print_job", description, Arity::None,
                        kLayerClass, false},

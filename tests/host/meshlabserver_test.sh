@@ -166,6 +166,14 @@ print_job)
   above "$(result log_label.txt label_height_mm)" 2.4 || fail "no label: $(grep -i label log_label.txt)"
   grep -q "Make Print Job: the current mesh labelled 'member_000'" log_label.txt ||
     fail "label not logged: $(grep -i label log_label.txt)"
+  # On its front side instead (label_side 1), upright, logged with its side.
+  edit print_job.mlx side_job.mlx 's#name="encoding_file" value="out/slice.enc"#name="encoding_file" value=""#' \
+    's#name="labels" value="false"#name="labels" value="true"#' 's#name="label_side" value="0"#name="label_side" value="1"#' \
+    's#out/print_job\.sl1#out/side_job.sl1#'
+  ok log_side.txt -i famlab/member_000.ply -s side_job.mlx
+  above "$(result log_side.txt label_height_mm)" 2.4 || fail "no side label: $(grep -i label log_side.txt)"
+  grep -q "Make Print Job: the current mesh labelled 'member_000' on its front side" log_side.txt ||
+    fail "side label not logged: $(grep -i label log_side.txt)"
   # Add Labels shows the label where the job cut it: the same height, its outline a new layer.
   ok log_add_label.txt -i famlab/member_000.ply -s "$EXAMPLES/add_labels.mlx" -o out/label_outline.ply -l x
   above "$(result log_add_label.txt label_height_mm)" 2.4 || fail "Add Labels: $(grep -i label log_add_label.txt)"

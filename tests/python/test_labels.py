@@ -109,3 +109,76 @@ def test_family_hollows_labels_and_reuses_alike(pymeshlab, tmp_path):
     assert 0.8 * 23 * 7 * 7 < entry["cavity_mm3"] < 23 * 7 * 7, entry
     assert entry["drain_holes"] == 1 and entry["label_height_mm"] > 0, entry
     assert entry["printability"]["resin_traps"] == 0 and entry["printability"]["suction_cups"] == 0, entry
+
+
+def write_tall_boxes(folder, names):
+    """Boxes 30 x 15 x 12 mm, each a millimetre longer than the one before (one family), as STL
+    files named names; returns their paths."""
+    folder.mkdir(parents=True, exist_ok=True)
+    paths = []
+    for i, name in enumerate(names):
+        write_stl(folder / name, box_triangles([0, 0, 0], [30 + i, 15, 12]))
+        paths.append(str(folder / name))
+    return paths
+
+
+def test_family_cuts_labels_into_a_side_alike_by_reuse_and_direct(pymeshlab, tmp_path):
+    source, a, b = write_tall_boxes(tmp_path / "parts", ["src.stl", "CASE1.stl", "CASE2.stl"])
+    r = sr.family(source, [a, b], THICKNESS, tmp_path / "out", profile={"printer": "prusa_sl1s_speed"},
+                  verify=True, labels="names", label_side="front")
+    assert r["failed"] == 0, r
+    for entry in r["targets"]:
+        assert entry["method"] == "reuse", entry
+        assert entry["min_similarity"] == 1 and entry["max_grey_difference"] == 0, entry  # reuse = direct
+    # "CASE1" at 6.75 mm is 28.5 mm long, 30.5 with its 1 mm margins: the 31 mm front holds it, the
+    # 12 mm height too (1 mm clear above and below).
+    assert [e["label_height_mm"] for e in r["targets"]] == [pytest.approx(7.5 * 0.9)] * 2, r
+    # The side's label is not the base's: the files differ.
+    base = sr.family(source, [a], THICKNESS, tmp_path / "base", profile={"printer": "prusa_sl1s_speed"},
+                     labels="names")
+    assert base["failed"] == 0, base
+    assert (tmp_path / "base" / "CASE1.sl1s").read_bytes() != (tmp_path / "out" / "CASE1.sl1s").read_bytes()
+
+
+def test_plates_refuse_a_side_label_that_fits_nowhere_unless_allowed_unlabelled(tmp_path):
+    source, a = write_tall_boxes(tmp_path / "parts", ["src.stl", "CASE1.stl"])
+    narrow = tmp_path / "parts" / "NARROW.stl"
+    write_stl(narrow, box_triangles([0, 0, 0], [31, 6, 12]))  # its left side is 6 mm wide
+    run = family_py("--plates", "--direct", "--labels", "--label-side", "left", "--out", tmp_path / "out", source, a,
+                    narrow)
+    assert run.returncode == 1, run.stderr
+    [plate] = json.loads(run.stdout)["plates"]
+    assert "the label 'NARROW' fits nowhere on the left side of NARROW.stl" in plate["error"], plate
+    run = family_py("--plates", "--direct", "--labels", "--label-side", "left", "--allow-unlabelled", "--out",
+                    tmp_path / "out", source, a, narrow)
+    assert run.returncode == 0, run.stderr
+    [plate] = json.loads(run.stdout)["plates"]
+    heights = {m["name"]: m["label_height_mm"] for m in plate["members"]}
+    assert heights["NARROW.stl"] == 0 and heights["CASE1.stl"] > 0, plate
+
+
+def test_bad_label_side_arguments_are_refused_before_any_work(pymeshlab, tmp_path):
+    source, a = write_tall_boxes(tmp_path / "parts", ["src.stl", "a.stl"])
+    bad = family_py("--label-side", "front", "--out", tmp_path / "bad", source, a)
+    assert bad.returncode == 2 and "--label-side goes with --labels" in bad.stderr, bad.stderr
+    bad = family_py("--labels", "--label-side", "top", "--out", tmp_path / "bad", source, a)
+    assert bad.returncode == 2 and "invalid choice: 'top'" in bad.stderr, bad.stderr
+    with pytest.raises(ValueError, match="label_side must be one of base, front, back, left, right, not 'top'"):
+        sr.family(source, [a], THICKNESS, tmp_path / "none", labels="names", label_side="top")
+    with pytest.raises(ValueError, match="label_side='back' goes with labels"):
+        sr.plates(source, [a], THICKNESS, tmp_path / "none", label_side="back")
+    assert not (tmp_path / "bad").exists() and not (tmp_path / "none").exists()
+
+
+def test_add_labels_shows_a_side_label_where_a_job_cuts_it(pymeshlab, tmp_path):
+    [box] = write_tall_boxes(tmp_path / "parts", ["CASE1.stl"])
+    ms = pymeshlab.MeshSet()
+    ms.load_new_mesh(box)
+    shown = ms.apply_filter("add_labels", layer_thickness=THICKNESS, label_side=sr.LABEL_SIDES.index("right"))
+    # "CASE1" on the 15 mm right side: 2.905 mm high (12.3 mm long, 14.3 with its margins), centred.
+    assert shown["label_height_mm"] == pytest.approx(7.5 * 0.9 ** 9), shown
+    assert (shown["x_mm"], shown["y_mm"], shown["angle_deg"]) == (pytest.approx(30), pytest.approx(7.5), 0), shown
+    job = ms.apply_filter("make_print_job", mesh_file=box, layer_thickness=THICKNESS, labels=True,
+                          label_side=sr.LABEL_SIDES.index("right"), output_path=str(tmp_path / "job.sl1s"),
+                          printer="prusa_sl1s_speed")
+    assert job["label_height_mm"] == shown["label_height_mm"]

@@ -324,6 +324,43 @@ TEST_F(FiltersThroughAFakeHost, AddLabelsShowsWhereAPrintJobCutsTheLabel) {
             std::string::npos);
 }
 
+// label_side: Add Labels shows the label upright on the chosen side, its outline in that side's
+// plane within its box's heights, where Make Print Job and Make Plate Job cut it; a label that
+// fits on no side is refused in words.
+TEST_F(FiltersThroughAFakeHost, AddLabelsShowsALabelOnASideWhereTheJobsCutIt) {
+  FakeHost host;
+  host.meshes.push_back(test::make_box(0, 0, 0, 30, 15, 12, 4));
+  const FilterSpec& spec = spec_named("add_labels");
+  const std::map<std::string, double> back{{"layer_thickness", 0.1}, {"label_side", 2}};
+  const Result shown = spec.run(defaults(spec, {}, back), host);
+  // "mesh0" is 5 letters, as "CASE1": 6.075 mm high (25.7 mm long, 27.7 with its margins) on the
+  // 30 mm back; its box from 3 mm up, the bottom nearest the middle of the 12 mm side.
+  EXPECT_DOUBLE_EQ(std::get<double>(shown.at("label_height_mm")), 7.5 * 0.9 * 0.9);
+  EXPECT_NEAR(std::get<double>(shown.at("x_mm")), 15, 1e-6);
+  EXPECT_NEAR(std::get<double>(shown.at("y_mm")), 15, 1e-6);
+  EXPECT_NEAR(std::get<double>(shown.at("z_mm")), 3 + 0.5 * 6.075, 1e-9);
+  EXPECT_EQ(std::get<double>(shown.at("angle_deg")), 0);
+  const std::vector<double>& xyz = host.polyline_layers.at("label mesh0");
+  ASSERT_FALSE(xyz.empty());
+  for (size_t i = 0; i < xyz.size(); i += 3) {
+    EXPECT_NEAR(xyz[i + 1], 15, 1e-6);  // on the back's plane
+    EXPECT_GE(xyz[i + 2], 3 - 1e-6);
+    EXPECT_LE(xyz[i + 2], 3 + 6.075 + 1e-6);
+  }
+  const FilterSpec& job = spec_named("make_print_job");
+  std::map<std::string, double> labelled = back;
+  labelled["labels"] = 1;
+  const Result printed = job.run(defaults(job, {{"output_path", path("job.sl1")}}, labelled), host);
+  EXPECT_EQ(std::get<double>(printed.at("label_height_mm")), std::get<double>(shown.at("label_height_mm")));
+  const FilterSpec& plate = spec_named("make_plate_job");
+  const Result plated = plate.run(defaults(plate, {{"output_path", path("plate.sl1")}}, labelled), host);
+  EXPECT_EQ(std::get<double>(plated.at("label_height_mm_mesh0")), std::get<double>(shown.at("label_height_mm")));
+  host.meshes[0] = test::make_box(0, 0, 0, 6, 15, 12, 4);
+  EXPECT_NE(error_of([&] { spec.run(defaults(spec, {}, back), host); })
+                .find("the label 'mesh0' fits nowhere on the back side of mesh0: even 2.5 mm high"),
+            std::string::npos);
+}
+
 TEST_F(FiltersThroughAFakeHost, MakePlateJobPutsTheShownMeshesOnPlatesAndReadsItsPlacementsBack) {
   FakeHost host;
   host.meshes.push_back(make_sphere(1, 24, 32));

@@ -19,6 +19,7 @@
 #include "family.h"
 #include "mask_stack.h"
 #include "shapes.h"
+#include "wall_measure.h"
 #include "slicereuse/plates/arrange_plates.h"
 #include "slicereuse/plates/footprint.h"
 #include "slicereuse/plates/placement.h"
@@ -1044,103 +1045,6 @@ TEST(PlateJob, RefusesNoMembersAnEncodingWithoutThicknessAndAStartAboveEveryMemb
   EXPECT_FALSE(std::filesystem::exists("/tmp/never"));
 }
 
-// The thinnest wall of a hollowed PNG stack, measured on its masks in 3-D: the least distance
-// from a cavity pixel's centre (unlit, enclosed in its layer) to an outside pixel's (unlit,
-// joined to the image's border in its layer) of any layer, or to the empty layers beyond the
-// stack, pixel mm wide and layer mm apart; limit when nothing is nearer. Also the cavity's volume.
-struct WallMeasure {
-  double thinnest_mm = INFINITY;
-  double cavity_mm3 = 0;
-};
-
-// Squared distance (in pixels) of each pixel to the nearest pixel set in `from` (exact, two 1-D
-// lower envelopes of parabolas, Felzenszwalb and Huttenlocher).
-std::vector<double> squared_distances(const std::vector<char>& from, int w, int h) {
-  const double far = 1e18;
-  std::vector<double> d(size_t(w) * h);
-  for (size_t i = 0; i < d.size(); ++i) d[i] = from[i] ? 0 : far;
-  const auto pass = [](std::vector<double>& f, size_t n, size_t stride, size_t start) {
-    std::vector<double> g(n), z(n + 1);
-    std::vector<size_t> v(n);
-    for (size_t q = 0; q < n; ++q) g[q] = f[start + q * stride];
-    size_t k = 0;
-    v[0] = 0, z[0] = -1e30, z[1] = 1e30;
-    for (size_t q = 1; q < n; ++q) {
-      double s;
-      while (true) {
-        s = ((g[q] + double(q * q)) - (g[v[k]] + double(v[k] * v[k]))) / (2.0 * double(q) - 2.0 * double(v[k]));
-        if (s <= z[k] && k > 0) --k;
-        else break;
-      }
-      if (s <= z[k]) {  // k == 0: q replaces it
-        v[0] = q;
-        z[1] = 1e30;
-        continue;
-      }
-      ++k, v[k] = q, z[k] = s, z[k + 1] = 1e30;
-    }
-    k = 0;
-    for (size_t q = 0; q < n; ++q) {
-      while (z[k + 1] < double(q)) ++k;
-      const double dq = double(q) - double(v[k]);
-      f[start + q * stride] = dq * dq + g[v[k]];
-    }
-  };
-  for (int y = 0; y < h; ++y) pass(d, size_t(w), 1, size_t(y) * w);
-  for (int x = 0; x < w; ++x) pass(d, size_t(h), size_t(w), size_t(x));
-  return d;
-}
-
-WallMeasure measure_walls(MaskStack& stack, double pixel_mm, double layer_mm, double limit_mm) {
-  std::vector<std::vector<char>> outside, cavity;
-  int w = 0, h = 0;
-  for (size_t k = 0; k < stack.layers(); ++k) {
-    std::vector<uint8_t> bytes;
-    stack.read(k, bytes);
-    MaskImage img;
-    decode_mask_png(bytes.data(), bytes.size(), stack.layer_name(k), img);
-    w = img.width, h = img.height;
-    std::vector<char> out(img.pixels.size(), 0);
-    std::vector<size_t> todo;
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x)
-        if ((x == 0 || y == 0 || x == w - 1 || y == h - 1) && img.pixels[size_t(y) * w + x] < 128) {
-          out[size_t(y) * w + x] = 1;
-          todo.push_back(size_t(y) * w + x);
-        }
-    while (!todo.empty()) {
-      const size_t i = todo.back();
-      todo.pop_back();
-      const int x = int(i % size_t(w)), y = int(i / size_t(w));
-      for (auto [nx, ny] : {std::pair{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}}) {
-        if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
-        const size_t j = size_t(ny) * w + nx;
-        if (!out[j] && img.pixels[j] < 128) out[j] = 1, todo.push_back(j);
-      }
-    }
-    std::vector<char> hole(img.pixels.size(), 0);
-    for (size_t i = 0; i < hole.size(); ++i) hole[i] = img.pixels[i] < 128 && !out[i];
-    outside.push_back(std::move(out));
-    cavity.push_back(std::move(hole));
-  }
-  std::vector<std::vector<double>> d2;
-  for (const auto& o : outside) d2.push_back(squared_distances(o, w, h));
-  WallMeasure m;
-  m.thinnest_mm = limit_mm;
-  const long L = long(stack.layers()), reach = long(std::ceil(limit_mm / layer_mm));
-  for (long k = 0; k < L; ++k)
-    for (size_t i = 0; i < cavity[size_t(k)].size(); ++i) {
-      if (!cavity[size_t(k)][i]) continue;
-      m.cavity_mm3 += pixel_mm * pixel_mm * layer_mm;
-      for (long j = k - reach; j <= k + reach; ++j) {
-        const double dz = double(j - k) * layer_mm;
-        const double planar2 = j < 0 || j >= L ? 0 : d2[size_t(j)][i] * pixel_mm * pixel_mm;
-        m.thinnest_mm = std::min(m.thinnest_mm, std::sqrt(planar2 + dz * dz));
-      }
-    }
-  return m;
-}
-
 // A hollowed solid box (direct slicing, 0.1 mm layers and pixels, walls of 1 mm): its cavity is
 // the box shrunk by 1 mm, sealed, so the printability check finds exactly one resin trap of its
 // volume, and its walls measure 1 mm on the masks in 3-D. So do a sphere's, whose walls all
@@ -1169,7 +1073,7 @@ TEST_F(PlateJobTest, AHollowedBoxIsOneResinTrapOfItsCavityAndItsWallsKeepTheThic
         else EXPECT_NEAR(f.volume_mm3, st.cavity_mm3[0], 0.5 * 0.1 * 4 * M_PI * 16);  // half a pixel over its surface
       }
     MaskStack stack(path(name));
-    const WallMeasure walls = measure_walls(stack, 0.1, 0.1, 3);
+    const test::WallMeasure walls = test::measure_walls(stack, 0.1, 0.1, 3);
     EXPECT_GE(walls.thinnest_mm, 1 - 0.1);
     EXPECT_LE(walls.thinnest_mm, 1 + 0.1 + 1e-9);
     EXPECT_NEAR(walls.cavity_mm3, st.printability.findings[0].volume_mm3, 1e-6);

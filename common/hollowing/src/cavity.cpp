@@ -6,6 +6,7 @@
 
 #include "region_clearance.h"
 #include "slicereuse/regions/layer_region.h"
+#include "slicereuse/regions/simplify_paths.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
 #include "slicereuse/util/parallel_blocks.h"
@@ -126,14 +127,40 @@ Paths intersect_all(const std::vector<const Paths*>& regions) {
   return out;
 }
 
-// The layers within a ball of radius r of a layer, and their disk's radius at d layers away.
+// The layers within a ball of radius r of a layer, and their disk's radius at d layers away, plus
+// slack (the error the layers' simplification may have made, so that erosion stays inside).
 struct LayeredBall {
-  LayeredBall(double radius_mm, double thickness_mm)
-      : r(radius_mm), h(thickness_mm), reach(long(std::floor(radius_mm / thickness_mm + 1e-9))) {}
-  double radius(long d) const { return std::sqrt(std::max(0.0, r * r - double(d * d) * h * h)); }
-  double r, h;
+  LayeredBall(double radius_mm, double thickness_mm, double slack_mm = 0)
+      : r(radius_mm), h(thickness_mm), slack(slack_mm), reach(long(std::floor(radius_mm / thickness_mm + 1e-9))) {}
+  double radius(long d) const { return std::sqrt(std::max(0.0, r * r - double(d * d) * h * h)) + slack; }
+  double r, h, slack;
   long reach;  // layers each way
 };
+
+// The layers simplified to within kCavitySimplifyMm (simplify_paths.h), and the farthest any
+// dropped vertex lay from its chord: a layer's region then lies within that of the original's
+// boundary. A loop too thin to keep three vertices stays as it was (it may be a hole, which must
+// not fill).
+std::vector<Paths> simplified_layers(const std::vector<Paths>& layers, double& deviation_mm) {
+  std::vector<Paths> out(layers.size());
+  std::vector<double> deviation(layers.size(), 0);
+  parallel_blocks(
+      layers.size(),
+      [&](size_t k) {
+        ClipperLib::Clipper clipper;
+        for (const ClipperLib::Path& loop : layers[k]) {
+          double d = 0;
+          const Paths simple = simplify_paths({loop}, kCavitySimplifyMm * kRegionScale, &d);
+          clipper.AddPaths(simple.empty() ? Paths{loop} : simple, ClipperLib::ptSubject, true);
+          deviation[k] = std::max(deviation[k], d);
+        }
+        // Simplified loops may touch or cross where the originals came near (simplify_paths.h).
+        clipper.Execute(ClipperLib::ctUnion, out[k], ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+      },
+      {}, "hollowing");
+  deviation_mm = *std::max_element(deviation.begin(), deviation.end()) / kRegionScale;
+  return out;
+}
 
 // A term binds when the result comes this near its offset's edge (in Clipper units, the offsets'
 // arc tolerance): it is tried first on the next layer, whose result it likely bounds too (a
@@ -303,10 +330,16 @@ std::vector<Paths> cavity_regions(const std::vector<Paths>& layers, double thick
   if (!(thickness_mm > 0 && std::isfinite(thickness_mm)))
     throw Error(format("hollowing needs a positive layer thickness, not %g mm", thickness_mm));
   const size_t n = layers.size();
-  if (options.wall_mm == 0) return std::vector<Paths>(n);
-  const LayeredBall eroding(options.wall_mm + options.closing_mm, thickness_mm);
+  if (options.wall_mm == 0 || n == 0) return std::vector<Paths>(n);
+  // Eroding each simplified layer by as much more as it strayed keeps the cavity inside the exact
+  // one (a point that far inside the simplified region lies at least the radius inside the
+  // original: the region between a dropped chain and its chord lies within the deviation of the
+  // chord), so walls stay at least t thick; the dilation then adds no error of its own.
+  double deviation_mm = 0;
+  const std::vector<Paths> simple = simplified_layers(layers, deviation_mm);
+  const LayeredBall eroding(options.wall_mm + options.closing_mm, thickness_mm, deviation_mm);
   const bool closing = options.closing_mm > 0;
-  std::vector<Paths> eroded = by_ball(layers, eroding, false, sub_progress(progress, 0, closing ? 0.5 : 1));
+  std::vector<Paths> eroded = by_ball(simple, eroding, false, sub_progress(progress, 0, closing ? 0.5 : 1));
   if (!closing) return eroded;
   return by_ball(eroded, LayeredBall(options.closing_mm, thickness_mm), true, sub_progress(progress, 0.5, 1));
 }

@@ -9,11 +9,6 @@
 #include "slicereuse/util/format.h"
 
 namespace slicereuse {
-namespace {
-
-constexpr double kLabelRoofMm = 1;  // of the part above a label's letters, at least
-
-}  // namespace
 
 size_t engraved_layers(double depth_mm, double thickness_mm, size_t member_layers) {
   // A 1e-9 tolerance: 3 mm of 0.05 mm layers is 60 layers, not 61.

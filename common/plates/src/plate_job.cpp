@@ -11,7 +11,9 @@
 #include "engrave_labels.h"
 #include "slicereuse/hollowing/hollow_layers.h"
 #include "slicereuse/mesh/fingerprint.h"
+#include "slicereuse/plates/base_label.h"
 #include "slicereuse/plates/faded_layers.h"
+#include "slicereuse/plates/side_label.h"
 #include "slicereuse/slicing/layer_chunks.h"
 #include "slicereuse/slicing/layer_planes.h"
 #include "slicereuse/slicing/slice_layers.h"
@@ -279,9 +281,9 @@ std::vector<size_t> part_owners(const std::vector<PlateMember>& members, size_t 
   return owners;
 }
 
-// Those parts with each labelled member's label cut from its own first layers (engrave_part).
+// Those parts with each labelled member's label cut from its own layers (engrave_part).
 void engrave_parts(std::vector<SlicePart>& parts, size_t a, size_t b, const std::vector<PlateMember>& members,
-                   const std::vector<BaseLabel>& labels) {
+                   const std::vector<LabelCut>& labels) {
   if (labels.empty()) return;
   size_t i = 0;
   for (const PlateMember& p : members) {
@@ -293,15 +295,16 @@ void engrave_parts(std::vector<SlicePart>& parts, size_t a, size_t b, const std:
 
 constexpr double kLabelSkinMm = 1;  // of the part between a label's letters and a cavity, at least
 
-// Each labelled member's label placed on its base (base_label.h), from its own first layers; a
-// label that fits nowhere fails the job, or with allow_unlabelled leaves the member unlabelled.
-std::vector<BaseLabel> base_labels(const std::vector<PlateMember>& members, size_t count, const PlateJobOptions& o,
-                                   PlateJobStats& st) {
-  std::vector<BaseLabel> labels;
+// Each labelled member's label placed on its base (base_label.h) from its own first layers, or
+// on its side (side_label.h) from all its layers; a label that fits nowhere fails the job, or
+// with allow_unlabelled leaves the member unlabelled.
+std::vector<LabelCut> member_labels(const std::vector<PlateMember>& members, size_t count, const PlateJobOptions& o,
+                                    PlateJobStats& st) {
+  std::vector<LabelCut> labels;
   if (o.labels.empty()) return labels;
   if (o.labels.size() != count)
     throw Error(format("a plate of %zu members was given %zu labels: one (or \"\") per member", count, o.labels.size()));
-  // The cavity lies at least the wall above the base: letters deeper than the wall less 1 mm
+  // The cavity lies at least the wall inside the part: letters deeper than the wall less 1 mm
   // would open into it, or leave a skin over it.
   if (o.hollowing.wall_mm > 0 && o.label.depth_mm > o.hollowing.wall_mm - kLabelSkinMm)
     throw Error(format("labels %g mm deep would come within %g mm of the cavity behind walls of %g mm: make them at most "
@@ -315,6 +318,22 @@ std::vector<BaseLabel> base_labels(const std::vector<PlateMember>& members, size
     const std::string& text = o.labels[p.owner];
     if (p.support || text.empty()) continue;
     const std::string name = p.owner < o.names.size() ? o.names[p.owner] : format("member %zu", p.owner + 1);
+    if (o.label.side != LabelSide::Base) {
+      // Placed on its solid layers: the letters take only what lies within their depth of the
+      // outside (engrave_part), so they keep the wall less their depth from the cavity (above).
+      const Slices all = p.transfer ? p.transfer->layers(0, p.layers())
+                                    : slice_planes(*p.mesh, p.planes, {}, false);
+      const double turn = p.owner < o.label_turns_deg.size() ? o.label_turns_deg[p.owner] : 0;
+      SideLabel s = place_side_label(all, st.thickness, turn, text, name, o.label);
+      if (s.cuts.empty()) {
+        if (o.allow_unlabelled) continue;
+        throw Error(s.why);
+      }
+      st.label_heights_mm[p.owner] = s.height_mm;
+      st.label_places[p.owner] = {s.x_mm, s.y_mm, s.z_mm};
+      labels[p.owner] = {s.first, s.cuts.size(), std::move(s.cuts), o.label.depth_mm};
+      continue;
+    }
     const size_t layers = engraved_layers(o.label.depth_mm, st.thickness, p.layers());
     Slices first = p.transfer ? p.transfer->layers(0, layers)
                               : slice_planes(*p.mesh, {p.planes.begin(), p.planes.begin() + long(layers)}, {}, false);
@@ -326,7 +345,7 @@ std::vector<BaseLabel> base_labels(const std::vector<PlateMember>& members, size
     }
     st.label_heights_mm[p.owner] = b.placement.height_mm;
     st.label_places[p.owner] = {b.placement.x_mm, b.placement.y_mm, b.placement.angle_deg};
-    labels[p.owner] = std::move(b);
+    labels[p.owner] = {0, b.layers, {std::move(b.placement.region)}, 0};
   }
   return labels;
 }
@@ -556,7 +575,7 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
   const Progress rest = sub_progress(progress, hollowing ? 0.3 : 0, 1);
   const uint64_t budget = o.whole_stack ? 0 : range_budget(o);
   const PlateChecks checks(members, placed.size(), o, profile, st);
-  const std::vector<BaseLabel> labels = base_labels(members, placed.size(), o, st);
+  const std::vector<LabelCut> labels = member_labels(members, placed.size(), o, st);
 
   if (o.encoding && !o.whole_stack) {
     // Made where drawn when the layers to slice directly fit in the budget (else in ranges).

@@ -12,6 +12,7 @@
 #include "slicereuse/regions/turns_by_15_degrees.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
+#include "slicereuse/util/squared_distances.h"
 
 namespace slicereuse {
 namespace {
@@ -46,41 +47,6 @@ struct FaceGrid {
   }
 
 };
-
-// 1-D squared distance transform of f (n values) into d (Felzenszwalb and Huttenlocher).
-void distance_1d(const std::vector<double>& f, std::vector<double>& d) {
-  const size_t n = f.size();
-  std::vector<size_t> v(n);
-  std::vector<double> z(n + 1);
-  size_t k = 0;
-  v[0] = 0;
-  z[0] = -INFINITY;
-  z[1] = INFINITY;
-  for (size_t q = 1; q < n; ++q) {
-    double s;
-    while (true) {
-      s = ((f[q] + double(q * q)) - (f[v[k]] + double(v[k] * v[k]))) / (2.0 * double(q) - 2.0 * double(v[k]));
-      if (s > z[k] || k == 0) break;
-      --k;
-    }
-    if (s <= z[k]) {  // k == 0 and the parabola of q lies under v[0]'s everywhere
-      v[0] = q;
-      z[1] = INFINITY;
-      continue;
-    }
-    ++k;
-    v[k] = q;
-    z[k] = s;
-    z[k + 1] = INFINITY;
-  }
-  k = 0;
-  d.resize(n);
-  for (size_t q = 0; q < n; ++q) {
-    while (z[k + 1] < double(q)) ++k;
-    const double dq = double(q) - double(v[k]);
-    d[q] = dq * dq + f[v[k]];
-  }
-}
 
 FaceGrid face_grid(const ClipperLib::Paths& face) {
   FaceGrid g;
@@ -117,21 +83,10 @@ FaceGrid face_grid(const ClipperLib::Paths& face) {
       for (int i = i0; i <= i1; ++i) g.inside[size_t(j) * size_t(g.w) + size_t(i)] = 1;
     }
   }
-  // Squared distance to the nearest outside cell: columns, then rows.
-  const double far = double(g.w) * g.w + double(g.h) * g.h;
-  std::vector<double> sq(g.inside.size()), f, d;
-  for (int i = 0; i < g.w; ++i) {
-    f.assign(size_t(g.h), 0);
-    for (int j = 0; j < g.h; ++j) f[size_t(j)] = g.inside[size_t(j) * size_t(g.w) + size_t(i)] ? far : 0;
-    distance_1d(f, d);
-    for (int j = 0; j < g.h; ++j) sq[size_t(j) * size_t(g.w) + size_t(i)] = d[size_t(j)];
-  }
-  g.clearance.resize(sq.size());
-  for (int j = 0; j < g.h; ++j) {
-    f.assign(sq.begin() + long(j) * g.w, sq.begin() + long(j + 1) * g.w);
-    distance_1d(f, d);
-    for (int i = 0; i < g.w; ++i) g.clearance[size_t(j) * size_t(g.w) + size_t(i)] = std::sqrt(d[size_t(i)]);
-  }
+  std::vector<uint8_t> outside(g.inside.size());
+  for (size_t i = 0; i < outside.size(); ++i) outside[i] = !g.inside[i];
+  g.clearance = squared_distances(outside, g.w, g.h);
+  for (double& c : g.clearance) c = std::sqrt(c);
   return g;
 }
 

@@ -18,6 +18,9 @@
 // its edges, and keeps the walls at least t thick (a ball of t + D holds every sum of a ball of t
 // and one of D at the same heights). D = 0 gives erode(t) itself.
 // Offsets are ClipperOffset's (round joins within kCavityArcToleranceMm, on Clipper's 1 nm grid).
+// The layers are first simplified to within kCavitySimplifyMm and eroded by as much more as they
+// strayed: the cavity lies inside the exact one (walls at least t), within that distance of it
+// (0 when only collinear vertices go, as on a box), for a fraction of the points.
 // Cost: per layer, the offsets of the few layers that bound its cavity, and proofs that the
 // others do not (cavity.cpp); a prism costs one offset a layer whatever t.
 // Throws Error for a wall or closing distance negative or not finite, or a thickness not
@@ -36,6 +39,9 @@ constexpr double kPrusaHollowingWallMm = 3;
 constexpr double kPrusaHollowingClosingMm = 2;
 // How far a round offset's chords may stray from the true arc (0.1 um, a 500th of a 50 um pixel).
 constexpr double kCavityArcToleranceMm = 1e-4;
+// How far the layers' simplified contours may stray before eroding (5 um, a tenth of a 50 um
+// pixel): a dense mesh's contours then cost what a coarse one's do.
+constexpr double kCavitySimplifyMm = 5e-3;
 
 struct HollowingOptions {
   double wall_mm = 0;                              // 0: solid, no cavity

@@ -20,6 +20,8 @@
 
 namespace slicereuse {
 
+constexpr double kLabelRoofMm = 1;  // of the part behind a label's letters, at least
+
 struct BaseLabel {
   size_t layers = 0;  // its own layers [0, layers) are cut; 0: not placed
   LabelPlacement placement;

@@ -38,9 +38,10 @@
 // compensation on layer 0 fading to none over profile.faded_layers, as PrusaSlicer's) in every
 // way of making it.
 // Labels (options.labels): a member's label is placed once on the region its first layers share
-// down to options.label.depth_mm (place_label.h, mirrored to read from below), and cut from
-// those layers' contours before the elephant-foot compensation, in every way of making it: from
-// its own contours, so a reused member's labelled masks are those of direct slicing.
+// down to options.label.depth_mm (place_label.h, mirrored to read from below), or on the side
+// options.label.side from all its layers (side_label.h), and cut from those layers' contours
+// before the elephant-foot compensation, in every way of making it: from its own contours, so a
+// reused member's labelled masks are those of direct slicing.
 // Memory: reusing, each member's transfer is prepared once (ExactTransfer) and its layer k is
 // transferred where layer k's mask is drawn, on that thread (LayerMaker, export_masks.h), so the
 // plate holds a few layers of points plus those of the layers made directly beforehand (the
@@ -74,14 +75,20 @@
 
 namespace slicereuse {
 
-// Labels engraved into members' bases (place_label.h, label_region.h): height_mm high where
-// the label fits, down by tenths to min_height_mm, depth_mm deep, margin_mm inside the base's
-// edges; mirrored to read from below. Defaults after the dental literature (7.5 mm high, 3 mm deep).
+// Where a label goes: the base, or one of the four sides seen from above, the member's own
+// (before its placement turned it): front -y, back +y, left -x, right +x.
+enum class LabelSide { Base, Front, Back, Left, Right };
+
+// Labels engraved into members (place_label.h, label_region.h): height_mm high where the label
+// fits, down by tenths to min_height_mm, depth_mm deep, margin_mm inside the face's edges; on
+// the base mirrored to read from below (base_label.h), on a side upright (side_label.h).
+// Defaults after the dental literature (7.5 mm high, 3 mm deep).
 struct LabelOptions {
   double height_mm = 7.5;
   double min_height_mm = 2.5;
   double depth_mm = 3;
   double margin_mm = 1;
+  LabelSide side = LabelSide::Base;
 };
 
 struct PlateJobOptions {
@@ -121,6 +128,9 @@ struct PlateJobOptions {
   std::vector<std::string> labels;
   LabelOptions label;
   bool allow_unlabelled = false;
+  // Per member, the turn about z its placement gave it (degrees, placement.h), so that a label
+  // on a side goes on the member's own side; empty: none turned.
+  std::vector<double> label_turns_deg;
   // Each member hollowed with walls of hollowing.wall_mm (0: solid) and its closing distance;
   // with drain_hole_mm > 0, a drain hole of that diameter under each cavity (drain_holes.h),
   // through the bottom wall to the base, so that none stays sealed.
@@ -169,7 +179,8 @@ struct PlateJobStats {
   PrintabilityReport printability;
   std::vector<FindingPlace> finding_places;
   // With options.labels: per member, its label's height in mm (0: none, or it fitted nowhere and
-  // allow_unlabelled printed it without), and its place: centre (mm, plate) and turn (degrees).
+  // allow_unlabelled printed it without), and its place: on the base its centre x, y (mm, plate)
+  // and turn (degrees); on a side the centre of its box on the side, x, y, z (mm, plate).
   std::vector<double> label_heights_mm;
   std::vector<std::array<double, 3>> label_places;
 };
