@@ -121,6 +121,11 @@ Result run_add_drain_holes(const AddDrainHolesParams& p, Host& host) {
   if (p.holes.diameter_mm == 0) throw Error("drain_hole_mm is 0, which drills no holes: give their diameter, e.g. 4 mm");
   Hollowed h = hollow(mesh, name, p.layer_thickness, p.z_start, p.cavity, host.progress());
   std::vector<DrainHole> holes = add_drain_holes(h.cavity, p.holes.diameter_mm, size_t(p.holes.per_cavity));
+  try {
+    check_drain_holes_fit(holes, p.holes.diameter_mm, h.layers);
+  } catch (const Error& e) {
+    throw Error(name + ": " + e.what());
+  }
   find_drain_hole_mouths(mesh, h.layers.z_start, h.layers.thickness, holes);
   std::vector<double> xyz, normals;
   for (const DrainHole& d : holes) {

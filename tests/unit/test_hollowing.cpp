@@ -271,6 +271,41 @@ TEST(DrainHoles, SpreadOverTheCavitysLowestLayer) {
             "0 drain holes per cavity: at least 1, or a drain hole diameter of 0 for none");
 }
 
+// A hole wider than the part's base under its cavity would cut through the part's side: refused
+// in words. One wider than the cavity's floor but inside the base is drilled (a 10 x 8 x 6 mm box,
+// walls of 1 mm: its cavity's floor is 8 x 6 mm, its base 10 x 8 mm; a 9 mm 24-gon at its middle
+// reaches 0.5 mm beyond two of its sides, 2.55 mm2 in all).
+TEST(DrainHoles, AHoleWiderThanThePartsBaseIsRefusedInWords) {
+  const Slices box = slice_layers(test::make_box(0, 0, 0, 10, 8, 6), SliceOptions{0.1});
+  HollowingOptions o;
+  o.wall_mm = 1;
+  o.closing_mm = 0;
+  for (const double d : {2.0, 7.0}) {
+    std::vector<Paths> cavity = layers_cavity(box, o);
+    const std::vector<DrainHole> holes = add_drain_holes(cavity, d);
+    ASSERT_EQ(holes.size(), 1u);
+    EXPECT_NO_THROW(check_drain_holes_fit(holes, d, box)) << d << " mm";
+  }
+  std::vector<Paths> cavity = layers_cavity(box, o);
+  const std::vector<DrainHole> holes = add_drain_holes(cavity, 9);
+  EXPECT_EQ(test::error_of([&] { check_drain_holes_fit(holes, 9, box); }),
+            "a drain hole of 9 mm at (5.00, 4.00) mm would cut through the part's side on layer 9 (z 0.950 mm): "
+            "2.55 mm2 of it lies outside the part there, right under its cavity; make drain_hole_mm smaller");
+  // A box on a waist too thin for a cavity, on a base as wide as the box: the hole fits the floor
+  // and the base, but would open the waist's sides (a sphere's base, whose layers hold less of
+  // the hole the lower they are, passes: PlateJobTest.DrainHolesOpenEveryCavityThroughTheBase).
+  Mesh waisted = test::make_box(0, 0, 0.82, 10, 8, 6.82);
+  test::append_mesh(waisted, test::make_box(3, 2, 0.38, 7, 6, 0.88));
+  test::append_mesh(waisted, test::make_box(0, 0, 0, 10, 8, 0.42));
+  const Slices on_waist = slice_layers(waisted, SliceOptions{0.1});
+  std::vector<Paths> floor = layers_cavity(on_waist, o);
+  const std::vector<DrainHole> wide = add_drain_holes(floor, 5);
+  ASSERT_EQ(wide.size(), 1u);
+  EXPECT_EQ(test::error_of([&] { check_drain_holes_fit(wide, 5, on_waist); }),
+            "a drain hole of 5 mm at (5.00, 4.00) mm would cut through the part's side on layer 4 (z 0.450 mm): "
+            "3.91 mm2 of it lies outside the part there, over part of the layer below; make drain_hole_mm smaller");
+}
+
 // A user's hole from below is the automatic hole's 24-gon, from 1 mm under the mouth to
 // wall + closing + 1 mm above it; one from the side wall runs sideways through it, its layers'
 // sections joining the cavity to the outside; one that ends in the wall is refused in words, and

@@ -1094,9 +1094,21 @@ TEST_F(PlateJobTest, AHollowedBoxIsOneResinTrapOfItsCavityAndItsWallsKeepTheThic
   EXPECT_FALSE(std::filesystem::exists(path("bad")));
 }
 
-// Reused and direct hollowed plates give identical masks, made where drawn, in ranges and in one, with
-// the elephant-foot compensation (after the hollowing) and anti-aliasing: the cavity is computed
-// from the member's layers, which reuse makes equal to direct slicing's.
+// A drain hole wider than the member's floor under its cavity fails the job naming the member,
+// and nothing is written.
+TEST_F(PlateJobTest, ADrainHoleWiderThanTheFloorFailsTheJobNamingTheMember) {
+  PlateJobOptions o;
+  o.slicing.thickness = 0.1;
+  o.names = {"case-7"};
+  o.hollowing.wall_mm = 1;
+  o.hollowing.closing_mm = 0;
+  o.drain_hole_mm = 9;
+  const std::string message =
+      test::error_of([&] { export_plate({test::make_box(0, 0, 0, 10, 8, 6)}, o, display(800, 600), path("wide")); });
+  EXPECT_EQ(message.substr(0, 65), "case-7: a drain hole of 9 mm at (5.00, 4.00) mm would cut through") << message;
+  EXPECT_FALSE(std::filesystem::exists(path("wide")));
+}
+
 // Drain holes (#36 item 2): each cavity gets a hole under its lowest layer, through the bottom
 // wall to the base, and no cavity stays sealed: the check finds no resin trap where, without
 // holes, it found one per cavity. Two boxes side by side, joined by a bar on their floor: one
@@ -1159,6 +1171,9 @@ TEST_F(PlateJobTest, DrainHolesOpenEveryCavityThroughTheBase) {
   }
 }
 
+// Reused and direct hollowed plates give identical masks, made where drawn, in ranges and in one, with
+// the elephant-foot compensation (after the hollowing) and anti-aliasing: the cavity is computed
+// from the member's layers, which reuse makes equal to direct slicing's.
 TEST_F(PlateJobTest, ReusedHollowedMembersEqualDirectSlicing) {
   test::FamilyOptions fo;
   fo.shape = "sphere";

@@ -168,6 +168,38 @@ std::vector<DrainHole> add_drain_holes(std::vector<ClipperLib::Paths>& cavity, d
   return holes;
 }
 
+void check_drain_holes_fit(const std::vector<DrainHole>& holes, double diameter_mm, const Slices& part) {
+  const double r = 0.5 * double(region_units(diameter_mm));
+  std::vector<ClipperLib::Paths> regions;  // made as far up as the holes reach
+  const auto region = [&](size_t k) -> const ClipperLib::Paths& {
+    while (regions.size() <= k) regions.push_back(layer_region(LayerView(part, regions.size())));
+    return regions[k];
+  };
+  // Under a millionth of a square millimetre is the discs' rounding to Clipper's grid.
+  constexpr double kRoundingMm2 = 1e-6;
+  for (const DrainHole& h : holes) {
+    if (!h.automatic || h.layer == h.first || h.layer > part.layers()) continue;
+    const ClipperLib::Paths d{disc({region_units(h.x_mm), region_units(h.y_mm)}, r)};
+    // Right under the cavity the part rings the hole; further down, what of the hole lies outside
+    // the part must stay outside on every layer below (its mouth on a base that curves up, as a
+    // sphere's does), else it opens sideways through a wall.
+    ClipperLib::Paths above;
+    for (size_t k = h.layer; k-- > h.first;) {
+      ClipperLib::Paths outside = clip_regions(d, region(k), ClipperLib::ctDifference);
+      const double sideways = region_area_mm2(
+          k + 1 == h.layer ? outside : clip_regions(above, outside, ClipperLib::ctDifference));
+      if (sideways > kRoundingMm2) {
+        const bool under = k + 1 == h.layer;  // else the layer above is where it leaves the part
+        throw Error(format("a drain hole of %g mm at (%.2f, %.2f) mm would cut through the part's side on layer %zu "
+                           "(z %.3f mm): %.3g mm2 of it lies outside the part there, %s; make drain_hole_mm smaller",
+                           diameter_mm, h.x_mm, h.y_mm, under ? k : k + 1, part.layer_z[under ? k : k + 1], sideways,
+                           under ? "right under its cavity" : "over part of the layer below"));
+      }
+      above = std::move(outside);
+    }
+  }
+}
+
 std::array<std::array<double, 3>, 2> drain_hole_axis(const DrainHole& h, double z_start, double thickness,
                                                      double depth_mm) {
   if (h.automatic)

@@ -535,7 +535,15 @@ struct PlateChecks {
 
 std::vector<DrainHole> drill_member_drain_holes(const Mesh& member, const Slices& layers, const std::string& name,
                                                 const PlateJobOptions& o, std::vector<ClipperLib::Paths>& cavity) {
-  if (o.drain_points.size() == 0) return add_drain_holes(cavity, o.drain_hole_mm, o.drain_holes_per_cavity);
+  if (o.drain_points.size() == 0) {
+    std::vector<DrainHole> holes = add_drain_holes(cavity, o.drain_hole_mm, o.drain_holes_per_cavity);
+    try {
+      check_drain_holes_fit(holes, o.drain_hole_mm, layers);
+    } catch (const Error& e) {
+      throw Error(name + ": " + e.what());
+    }
+    return holes;
+  }
   const Fingerprint own = mesh_fingerprint(member);
   if (own != o.drain_points.fingerprint)
     throw Error(format("the drain holes are for a mesh of %s; %s has %s: holes are carried only to members with the "

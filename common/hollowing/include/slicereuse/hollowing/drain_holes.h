@@ -14,6 +14,12 @@
 // lies farthest from the holes placed (its corners are the candidates), so they spread over the
 // cavity's lowest layer.
 //
+// check_drain_holes_fit: throws Error when an automatic hole is wider than the part's face it is
+// drilled through, so that it would cut through the part's side rather than open its base (part:
+// the part's layers, as the cavity's): its 24-gon reaches outside the part on the layer right
+// under its cavity, or further down outside where the layer above holds it. A hole whose mouth
+// spreads over a base that curves up (a sphere's) passes. Names the hole, the layer and the area.
+//
 // find_drain_hole_mouths: see below.
 //
 // add_drain_holes_at (the user's): in, each layer's cavity and mid-plane z (Slices::layer_z),
@@ -30,6 +36,7 @@
 
 #include "slicereuse/hollowing/cavity.h"
 #include "slicereuse/mesh/mesh.h"
+#include "slicereuse/slicing/slices.h"
 
 namespace slicereuse {
 
@@ -52,6 +59,8 @@ struct DrainHole {
 };
 
 std::vector<DrainHole> add_drain_holes(std::vector<ClipperLib::Paths>& cavity, double diameter_mm, size_t count = 1);
+
+void check_drain_holes_fit(const std::vector<DrainHole>& holes, double diameter_mm, const Slices& part);
 
 // find_drain_hole_mouths: where each automatic hole opens, for showing it: its z_mm set to the
 // highest point of the mesh's surface on its axis below its cavity (layer hole.layer of the
