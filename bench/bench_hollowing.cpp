@@ -2,8 +2,9 @@
 // layers' regions. Prints the part's layers and points, the cavity's volume, and the median
 // seconds of the cavity in all and per layer (the layers' regions made beforehand, not counted),
 // wall and CPU (all threads': on a busy machine the steadier figure, and PrusaSlicer's user time's
-// match). Then the part hollowed by the plate job into 50 um masks (no drain holes), and its
-// thinnest wall measured on them in 3-D (wall_measure.h), against the wall asked less a pixel.
+// match). Then the plate job end to end into 50 um masks, solid and hollowed, drained and
+// labelled: what the three add to it. Then the part hollowed alone (no drain holes), and its
+// thinnest wall measured on its masks in 3-D (wall_measure.h), against the wall asked less a pixel.
 // Usage: bench_hollowing [--shape sphere] [--faces 200000] [--height 35] [--thickness 0.05]
 //                        [--wall 2] [--closing 2] [--runs 3]
 #include <omp.h>
@@ -21,6 +22,7 @@
 #include "family.h"
 #include "wall_measure.h"
 #include "slicereuse/hollowing/cavity.h"
+#include "slicereuse/hollowing/drain_holes.h"
 #include "slicereuse/plates/plate_job.h"
 #include "slicereuse/regions/layer_region.h"
 #include "slicereuse/slicing/slice_layers.h"
@@ -89,11 +91,38 @@ int main(int argc, char** argv) {
   PrinterProfile display;
   display.width_px = int(std::ceil((x1 - x0 + 2) / kPixelMm)), display.height_px = int(std::ceil((y1 - y0 + 2) / kPixelMm));
   display.pixel_size_x_um = display.pixel_size_y_um = kPixelMm * 1e3;
-  PlateJobOptions o;
-  o.slicing = options;
-  o.hollowing = hollowing;
-  o.drain_hole_mm = 0;
   const std::string folder = (std::filesystem::temp_directory_path() / "bench_hollowing_masks").string();
+  // The plate job end to end, solid and then hollowed, drained (PrusaSlicer's 4 mm hole) and
+  // labelled (on its front, at the height that fits; unlabelled when none does): what the three
+  // add to the member's job, in wall and CPU seconds (medians).
+  PlateJobOptions solid;
+  solid.slicing = options;
+  PlateJobOptions whole = solid;
+  whole.hollowing = hollowing;
+  whole.drain_hole_mm = kDrainHoleMm;
+  whole.labels = {"C-0412"};
+  whole.label.side = LabelSide::Front;
+  whole.label.depth_mm = std::min(whole.label.depth_mm, hollowing.wall_mm - 1);
+  whole.allow_unlabelled = true;
+  std::vector<double> job_wall[2], job_cpu[2];
+  PlateJobStats st;
+  for (int r = 0; r < args.runs; ++r)
+    for (int hollowed = 0; hollowed < 2; ++hollowed) {
+      std::filesystem::remove_all(folder);
+      const auto t0 = std::chrono::steady_clock::now();
+      const std::clock_t c0 = std::clock();
+      st = export_plate({centred}, hollowed ? whole : solid, display, folder);
+      job_cpu[hollowed].push_back(double(std::clock() - c0) / CLOCKS_PER_SEC);
+      job_wall[hollowed].push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    }
+  std::printf("the plate job into %g um masks, solid %.3f s (CPU %.3f), hollowed, drained (%zu holes) and labelled "
+              "(%.3g mm high) %.3f s (CPU %.3f): the three add %.3f s (CPU %.3f)\n",
+              kPixelMm * 1e3, median_of(job_wall[0]), median_of(job_cpu[0]), st.drain_holes[0].size(),
+              st.label_heights_mm[0], median_of(job_wall[1]), median_of(job_cpu[1]),
+              median_of(job_wall[1]) - median_of(job_wall[0]), median_of(job_cpu[1]) - median_of(job_cpu[0]));
+
+  PlateJobOptions o = solid;
+  o.hollowing = hollowing;
   std::filesystem::remove_all(folder);
   export_plate({centred}, o, display, folder);
   MaskStack stack(folder);

@@ -166,8 +166,10 @@ std::vector<Paths> simplified_layers(const std::vector<Paths>& layers, double& d
 // arc tolerance): it is tried first on the next layer, whose result it likely bounds too (a
 // micrometre seeded half as many terms again that did not bind, on a sphere).
 constexpr double kBindingUnits = kCavityArcToleranceMm * kRegionScale;
-// Layers a thread works through in order, handing on the terms that bind from one to the next.
-constexpr size_t kBlockLayers = 16;
+// Layers a thread works through in order, handing on the terms that bind from one to the next:
+// each run starts cold, with no binding term known (a 35 mm sphere, 700 layers: 16 a run 11 %
+// slower than 64, 128 no faster, and fewer runs than threads would idle some).
+constexpr size_t kBlockLayers = 64;
 
 // The stack's layers and, for every aligned run of 2^s of them (s >= 1) up to the ball's reach,
 // their intersection (eroding) or union (dilating): a run's whole set of terms is proved at once
