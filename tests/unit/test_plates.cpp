@@ -124,6 +124,22 @@ PrinterProfile display(int w, int h, double um = 100) {
   return p;
 }
 
+// A plate job at 0.1 mm layers hollowing its members with walls of wall_mm and no closing.
+PlateJobOptions hollowing_at_tenths(double wall_mm) {
+  PlateJobOptions o;
+  o.slicing.thickness = 0.1;
+  o.hollowing.wall_mm = wall_mm;
+  o.hollowing.closing_mm = 0;
+  return o;
+}
+
+// A sphere of 5 mm radius standing on z = 0.
+Mesh standing_sphere() {
+  Mesh sphere = test::make_sphere(5, 40, 80);
+  for (size_t v = 2; v < sphere.V.size(); v += 3) sphere.V[v] += 5;
+  return sphere;
+}
+
 // Members of different shapes: arch family members (non-convex, U-shaped), boxes and a sphere.
 struct Members {
   std::vector<Mesh> meshes;
@@ -1050,16 +1066,12 @@ TEST(PlateJob, RefusesNoMembersAnEncodingWithoutThicknessAndAStartAboveEveryMemb
 // volume, and its walls measure 1 mm on the masks in 3-D. So do a sphere's, whose walls all
 // slope: a 2-D offset per layer would thin them.
 TEST_F(PlateJobTest, AHollowedBoxIsOneResinTrapOfItsCavityAndItsWallsKeepTheThickness) {
-  Mesh sphere = test::make_sphere(5, 40, 80);
-  for (size_t v = 2; v < sphere.V.size(); v += 3) sphere.V[v] += 5;
+  const Mesh sphere = standing_sphere();
   for (const auto& [mesh, name, cavity] :
        {std::tuple{test::make_box(-5, -4, 0, 5, 4, 6), "box", 8.0 * 6 * 4}, {sphere, "sphere", 4 * M_PI / 3 * 64}}) {
     SCOPED_TRACE(name);
-    PlateJobOptions o;
-    o.slicing.thickness = 0.1;
+    PlateJobOptions o = hollowing_at_tenths(1);
     o.check_printability = true;
-    o.hollowing.wall_mm = 1;
-    o.hollowing.closing_mm = 0;
     const PlateJobStats st = export_plate({mesh}, o, display(800, 600), path(name));
     ASSERT_EQ(st.cavity_mm3.size(), 1u);
     EXPECT_NEAR(st.cavity_mm3[0], cavity, cavity * 0.01);  // a sphere's facets: within a per cent
@@ -1097,11 +1109,8 @@ TEST_F(PlateJobTest, AHollowedBoxIsOneResinTrapOfItsCavityAndItsWallsKeepTheThic
 // A drain hole wider than the member's floor under its cavity fails the job naming the member,
 // and nothing is written.
 TEST_F(PlateJobTest, ADrainHoleWiderThanTheFloorFailsTheJobNamingTheMember) {
-  PlateJobOptions o;
-  o.slicing.thickness = 0.1;
+  PlateJobOptions o = hollowing_at_tenths(1);
   o.names = {"case-7"};
-  o.hollowing.wall_mm = 1;
-  o.hollowing.closing_mm = 0;
   o.drain_hole_mm = 9;
   const std::string message =
       test::error_of([&] { export_plate({test::make_box(0, 0, 0, 10, 8, 6)}, o, display(800, 600), path("wide")); });
@@ -1118,15 +1127,11 @@ TEST_F(PlateJobTest, DrainHolesOpenEveryCavityThroughTheBase) {
   Mesh twin = test::make_box(-18, -5, 0, -2, 5, 6);
   test::append_mesh(twin, test::make_box(2, -5, 0, 18, 5, 6));
   test::append_mesh(twin, test::make_box(-2.5, -1, 0, 2.5, 1, 0.5));  // overlapping both: one part
-  Mesh sphere = test::make_sphere(5, 40, 80);
-  for (size_t v = 2; v < sphere.V.size(); v += 3) sphere.V[v] += 5;
+  const Mesh sphere = standing_sphere();
   for (const auto& [mesh, name, cavities] : {std::tuple{twin, "twin", size_t(2)}, {sphere, "sphere", size_t(1)}}) {
     SCOPED_TRACE(name);
-    PlateJobOptions o;
-    o.slicing.thickness = 0.1;
+    PlateJobOptions o = hollowing_at_tenths(1);
     o.check_printability = true;
-    o.hollowing.wall_mm = 1;
-    o.hollowing.closing_mm = 0;
     const PlateJobStats sealed = export_plate({mesh}, o, display(800, 600), path(std::string(name) + "_sealed"));
     EXPECT_EQ(sealed.printability.count(FindingKind::ResinTrap), cavities);
     o.drain_hole_mm = 2;
@@ -1152,10 +1157,7 @@ TEST_F(PlateJobTest, DrainHolesOpenEveryCavityThroughTheBase) {
     EXPECT_NEAR(double(before - after), double(cavities) * M_PI / 0.01, double(cavities) * 40) << "pixels of 0.1 mm";
   }
   // A label on the twin's base keeps 1 mm from both holes.
-  PlateJobOptions o;
-  o.slicing.thickness = 0.1;
-  o.hollowing.wall_mm = 2;
-  o.hollowing.closing_mm = 0;
+  PlateJobOptions o = hollowing_at_tenths(2);
   o.drain_hole_mm = 2;
   o.labels = {"AB"};
   o.label.depth_mm = 1;
