@@ -103,6 +103,7 @@ void compensate_faded_layers(std::vector<SlicePart>& parts, size_t a, const std:
       out.emplace_back();
       layers_into(p.slices, cut[i] - p.first, p.slices.layers(), out.back().slices, true);
       out.back().first = cut[i];
+      out.back().support = p.support;
     }
   }
   parts = std::move(out);

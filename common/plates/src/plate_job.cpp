@@ -255,12 +255,12 @@ std::vector<SlicePart> plate_range(const std::vector<PlateMember>& members, cons
     const size_t ja = lo - p.offset, je = hi - p.offset;  // its own layers
     if (p.transfer) {
       TransferStats ts;
-      parts.push_back({p.transfer->layers(ja, je, &ts, mp), lo - a});
+      parts.push_back({p.transfer->layers(ja, je, &ts, mp), lo - a, p.support});
       st.transferred_layers += ts.transferred_layers;
       st.resliced_layers += ts.resliced_layers;
     } else {
-      parts.push_back(
-          {slice_planes(*p.mesh, {p.planes.begin() + long(ja), p.planes.begin() + long(je)}, mp, false), lo - a});
+      parts.push_back({slice_planes(*p.mesh, {p.planes.begin() + long(ja), p.planes.begin() + long(je)}, mp, false),
+                       lo - a, p.support});
       (p.support ? st.support_layers : st.resliced_layers) += je - ja;
     }
     Slices& made = parts.back().slices;
@@ -398,6 +398,7 @@ class MadeWhereDrawn {
       if (k < p.offset || k >= p.end()) continue;
       const size_t j = k - p.offset;  // its own layer
       if (parts.size() == used) parts.emplace_back();
+      parts[used].support = p.support;
       Slices& out = parts[used++].slices;
       supports += p.support;
       const DirectLayers* d = &p.direct;

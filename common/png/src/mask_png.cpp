@@ -275,6 +275,16 @@ void decode_mask_png(const uint8_t* data, size_t size, const std::string& name, 
   if (!done) decode_any(data, size, name, out);
 }
 
+void draw_mask_runs(const MaskRuns& runs, uint8_t* pixels) {
+  const size_t w = size_t(runs.width);
+  std::memset(pixels, 0, w * size_t(runs.height));
+  for (int r = 0; r < runs.height; ++r)
+    for (uint32_t i = runs.row_begin[size_t(r)]; i < runs.row_begin[size_t(r) + 1]; ++i) {
+      const uint16_t a = runs.columns[2 * size_t(i)], b = runs.columns[2 * size_t(i) + 1];
+      std::memset(pixels + size_t(r) * w + a, runs.levels[i], b - a);
+    }
+}
+
 MaskRuns mask_runs_of(const MaskImage& image) {
   MaskRuns r;
   r.width = image.width;

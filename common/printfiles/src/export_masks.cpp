@@ -29,6 +29,7 @@
 #include "slicereuse/png/mask_png.h"
 #include "slicereuse/printer/print_formats.h"
 #include "slicereuse/printability/check_layers.h"
+#include "slicereuse/printability/seal_support_pockets.h"
 #include "slicereuse/printer/printer_profile.h"
 #include "slicereuse/printfiles/check_print_file.h"
 #include "slicereuse/printfiles/export_masks.h"
@@ -189,7 +190,7 @@ class Stack {
     parts_.resize(part_begin_[n]);
     std::vector<size_t> at(part_begin_.begin(), part_begin_.end() - 1);
     for (const SlicePart& p : held_)
-      for (size_t j = p.first; j < p.first + p.slices.layers(); ++j) parts_[at[j]++] = {&p.slices, j - p.first};
+      for (size_t j = p.first; j < p.first + p.slices.layers(); ++j) parts_[at[j]++] = {&p.slices, j - p.first, p.support};
     return open;
   }
 
@@ -207,7 +208,7 @@ class Stack {
                            local, p.slices.layers(), p.first));
       check(p.slices);
       open += p.slices.open_contours();
-      made.view.push_back({&p.slices, 0});
+      made.view.push_back({&p.slices, 0, p.support});
     }
     made_open_ += open;
     return LayerView(made.view.data(), made.view.size());
@@ -233,29 +234,55 @@ class Stack {
   std::vector<size_t> part_begin_;
 };
 
+bool has_supports(const LayerView& layer) {
+  return std::any_of(layer.begin(), layer.end(), [](const LayerPart& part) { return part.support; });
+}
+
+// The layer's mask as runs (mask_png.h) into out, with the pockets of air its supports close
+// lit (seal_support_pockets.h; the supports' own binary mask tells what they touch).
+void layer_mask_runs(const LayerView& layer, const PrinterProfile& p, MaskRuns& out) {
+  if (p.antialiasing)
+    rasterize_layer_antialiased_runs(layer, p, out);
+  else
+    rasterize_layer_runs(layer, p, out);
+  if (!has_supports(layer)) return;
+  thread_local std::vector<LayerPart> supports;
+  supports.clear();
+  for (const LayerPart& part : layer)
+    if (part.support) supports.push_back(part);
+  PrinterProfile binary = p;
+  binary.antialiasing = false;
+  thread_local MaskRuns support_runs;
+  rasterize_layer_runs(LayerView(supports.data(), supports.size()), binary, support_runs);
+  const double pixel_mm2 = 1e-6 * p.pixel_size_x_um * p.pixel_size_y_um;
+  seal_support_pockets(out, support_runs, uint64_t(kSupportPocketMm2 / pixel_mm2));
+}
+
 // The layer, layer `k` of the stack, as a PNG of bits per pixel; mask, when not null (the
 // checks'), gets its mask as runs too (8 bits only: .sl1 archives).
 void encode_layer(const LayerView& layer, size_t k, const PrinterProfile& p, int bits, std::vector<uint8_t>& png,
                   StackSummary& summary, MaskRuns* mask = nullptr) {
   summary.add(k, summarize_layer(layer, k));
-  if (bits == 8 && p.antialiasing && !mask) {  // anti-aliased: straight into the PNG
+  if (bits == 8 && p.antialiasing && !mask && !has_supports(layer)) {  // anti-aliased: straight into the PNG
     rasterize_layer_antialiased_png(layer, p, png);
     return;
   }
+  thread_local MaskRuns runs;
   if (bits == 8) {  // 8-bit (.sl1): from the runs, the same PNG
-    thread_local MaskRuns runs;
     MaskRuns& out = mask ? *mask : runs;
-    if (p.antialiasing)
-      rasterize_layer_antialiased_runs(layer, p, out);
-    else
-      rasterize_layer_runs(layer, p, out);
+    layer_mask_runs(layer, p, out);
     encode_mask_png(out, png);
     return;
   }
   thread_local Buffer<uint8_t> image;
   const MaskImageLayout layout = mask_image_layout(p);
   image.resize(size_t(layout.width) * size_t(layout.height));
-  rasterize_layer(layer, p, image.data());
+  if (has_supports(layer)) {
+    layer_mask_runs(layer, p, runs);
+    draw_mask_runs(runs, image.data());
+  } else {
+    rasterize_layer(layer, p, image.data());
+  }
   encode_mask_png(image.data(), layout.width, layout.height, bits, png);
 }
 
@@ -406,10 +433,7 @@ const MaskRuns& layer_runs(const LayerView& layer, size_t k, const PrinterProfil
   summary.add(k, summarize_layer(layer, k));
   thread_local MaskRuns runs;
   MaskRuns& out = mask ? *mask : runs;
-  if (p.antialiasing)
-    rasterize_layer_antialiased_runs(layer, p, out);
-  else
-    rasterize_layer_runs(layer, p, out);
+  layer_mask_runs(layer, p, out);
   top_view.add(layer, k);
   return out;
 }

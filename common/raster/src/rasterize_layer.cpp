@@ -263,11 +263,7 @@ size_t rasterize_layer(const LayerView& layer, const PrinterProfile& profile, ui
   }
   thread_local MaskRuns runs;
   const size_t open = coverage_runs(layer, profile, runs);
-  for (int r = 0; r < H; ++r)
-    for (uint32_t i = runs.row_begin[size_t(r)]; i < runs.row_begin[size_t(r) + 1]; ++i) {
-      const uint16_t a = runs.columns[2 * size_t(i)], b = runs.columns[2 * size_t(i) + 1];
-      std::memset(out + size_t(r) * W + a, runs.levels[i], b - a);
-    }
+  draw_mask_runs(runs, out);
   return open;
 }
 

@@ -18,7 +18,8 @@
 // on_all_cores: the layers compensated at once (parallel_blocks; false on a thread that already
 // draws masks, LayerMaker). Output: parts, where the layers an owner's compensation reaches are
 // replaced by one part per layer of the compensated contours of that owner's parts together
-// (at the plane and bottom of its first part there), followed by the rest of its parts' layers
+// (at the plane and bottom of its first part there; not a support part, export_masks.h, even
+// where it holds supports), followed by the rest of its parts' layers
 // copied out; the layers above are kept as they are. Apart, each member's layers are those it has
 // printed alone, whatever else is on the plate: the compensation is local, yet compensated
 // together, a plate of 11 nested arches lit 0.24 % more of its first layer than its members alone

@@ -50,6 +50,10 @@ struct MaskRuns {
 // skips unlit pixels eight at a time.
 MaskRuns mask_runs_of(const MaskImage& image);
 
+// draw_mask_runs: runs -> their image in pixels (runs.width * runs.height bytes, row-major,
+// every pixel written: 0 outside the runs).
+void draw_mask_runs(const MaskRuns& runs, uint8_t* pixels);
+
 void encode_mask_png(const uint8_t* pixels, int width, int height, int bits,
                      std::vector<uint8_t>& out);
 void encode_mask_png(const MaskRuns& runs, std::vector<uint8_t>& out);

@@ -48,10 +48,12 @@ MaskExportStats export_masks(const Slices& s, const PrinterProfile& profile,
                              const std::string& output_path, const Progress& progress = {}, const MaskChecks* checks = nullptr);
 
 // Part of a range's layers: the range's layers [first, first + slices.layers()), counted from 0
-// within the range.
+// within the range. A layer with support parts has the pockets of air they close lit in its mask
+// (seal_support_pockets.h), whatever the file.
 struct SlicePart {
   Slices slices;
   size_t first = 0;
+  bool support = false;  // a support's layers: the pockets of air supports close are lit (seal_support_pockets.h)
 };
 
 // A stack too large to hold at once, made a range of layers at a time (layer_chunks.h):

@@ -12,6 +12,7 @@ namespace slicereuse {
 struct LayerPart {
   const Slices* slices;
   size_t layer;
+  bool support = false;  // the layer of a support (a print's masks treat supports' air apart)
 };
 
 class LayerView {
