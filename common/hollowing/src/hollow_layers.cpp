@@ -1,5 +1,7 @@
 #include "slicereuse/hollowing/hollow_layers.h"
 
+#include "region_clearance.h"
+#include "slicereuse/regions/clip_regions.h"
 #include "slicereuse/regions/layer_region.h"
 #include "slicereuse/slicing/layer_view.h"
 #include "slicereuse/util/error.h"
@@ -45,17 +47,24 @@ void subtract_cavity(Slices& s, size_t first, const std::vector<ClipperLib::Path
         out.contour_open.push_back(s.contour_open[c]);
       }
     } else {
-      ClipperLib::Clipper clipper;
-      clipper.AddPaths(layer_region(LayerView(s, i)), ClipperLib::ptSubject, true);
-      clipper.AddPaths(hole, ClipperLib::ptClip, true);
-      ClipperLib::Paths walls;
-      clipper.Execute(ClipperLib::ctDifference, walls, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-      for (const ClipperLib::Path& loop : walls) {
-        if (loop.size() < 3) continue;
-        for (const ClipperLib::IntPoint& q : loop)
+      const auto add_loop = [&](const ClipperLib::Path& loop, bool reversed) {
+        if (loop.size() < 3) return;
+        for (size_t j = 0; j < loop.size(); ++j) {
+          const ClipperLib::IntPoint& q = loop[reversed ? loop.size() - 1 - j : j];
           xyz.insert(xyz.end(), {double(q.X) / kRegionScale, double(q.Y) / kRegionScale, s.layer_z[i]});
+        }
         out.contour_begin.push_back(xyz.size() / 3);
         out.contour_open.push_back(0);
+      };
+      const ClipperLib::Paths region = layer_region(LayerView(s, i));
+      // A cavity strictly inside the region (every layer's but those a drain hole opens to the
+      // outside) is taken out by its loops reversed: the region's winding is 1 all over it, so
+      // the nonzero rule leaves the same point set as Clipper's difference, for a fraction of it.
+      if (clears(index_region(hole), index_region(region), 0)) {
+        for (const ClipperLib::Path& loop : region) add_loop(loop, false);
+        for (const ClipperLib::Path& loop : hole) add_loop(loop, true);
+      } else {
+        for (const ClipperLib::Path& loop : clip_regions(region, hole, ClipperLib::ctDifference)) add_loop(loop, false);
       }
     }
     out.layer_begin.push_back(out.contour_open.size());
