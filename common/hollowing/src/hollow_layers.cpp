@@ -6,7 +6,6 @@
 #include "slicereuse/slicing/layer_view.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
-#include "slicereuse/util/parallel_blocks.h"
 
 namespace slicereuse {
 
@@ -14,10 +13,8 @@ std::vector<ClipperLib::Paths> layers_cavity(const Slices& s, const HollowingOpt
                                              const Progress& progress) {
   check_hollowing(options);
   if (options.wall_mm == 0) return std::vector<ClipperLib::Paths>(s.layers());
-  std::vector<ClipperLib::Paths> regions(s.layers());
-  parallel_blocks(s.layers(), [&](size_t k) { regions[k] = layer_region(LayerView(s, k)); },
-                  sub_progress(progress, 0, 0.1), "hollowing");
-  return cavity_regions(regions, s.thickness, options, sub_progress(progress, 0.1, 1));
+  return cavity_regions(layer_regions(s, sub_progress(progress, 0, 0.1), "hollowing"), s.thickness, options,
+                        sub_progress(progress, 0.1, 1));
 }
 
 void subtract_cavity(Slices& s, size_t first, const std::vector<ClipperLib::Paths>& cavity) {
