@@ -212,10 +212,27 @@ std::vector<PlateMember> prepare_members(const std::vector<Mesh>& placed, const 
   return members;
 }
 
+// The cavity made before the job (o.made_cavities) of member p's very layers: of a mesh with its
+// vertices and faces, on its planes, with the job's hollowing; else null.
+const PlateJobOptions::MadeCavity* made_cavity(const PlateMember& p, const PlateJobOptions& o) {
+  for (const PlateJobOptions::MadeCavity& c : o.made_cavities) {
+    if (!c.mesh || c.hollowing.wall_mm != o.hollowing.wall_mm || c.hollowing.closing_mm != o.hollowing.closing_mm ||
+        c.planes.size() != p.layers() || c.cavity.size() != p.layers() || c.mesh->V != p.mesh->V ||
+        c.mesh->F != p.mesh->F)
+      continue;
+    bool same = true;
+    for (size_t k = 0; k < p.layers() && same; ++k)
+      same = c.planes[k] == (p.transfer ? p.transfer->plane(k) : p.planes[k]);
+    if (same) return &c;
+  }
+  return nullptr;
+}
+
 // With o.hollowing, each member's cavity from all its layers, made as its masks' are (by its
 // transfer or sliced directly on its planes), one member at a time on all cores; its volume, or
-// why there is none, into st. Supports stay solid. A member to be labelled on a side keeps its
-// layers' regions for the label (member_labels), which would make them again.
+// why there is none, into st, or the one made before the job of the same layers. Supports stay
+// solid. A member to be labelled on a side keeps its layers' regions for the label
+// (member_labels), which would make them again.
 void hollow_members(std::vector<PlateMember>& members, const PlateJobOptions& o, PlateJobStats& st,
                     const Progress& progress) {
   const size_t n = st.direct_reasons.size();
@@ -230,9 +247,12 @@ void hollow_members(std::vector<PlateMember>& members, const PlateJobOptions& o,
     Slices layers = p.transfer ? p.transfer->layers(0, p.layers(), nullptr, sub_progress(mp, 0, 0.2))
                                : slice_planes(*p.mesh, p.planes, sub_progress(mp, 0, 0.2), false);
     layers.thickness = st.thickness;
-    std::vector<ClipperLib::Paths> regions = layer_regions(layers, sub_progress(mp, 0.2, 0.3), "hollowing");
-    p.cavity = cavity_regions(regions, st.thickness, o.hollowing, sub_progress(mp, 0.3, 1));
-    if (m < o.labels.size() && !o.labels[m].empty() && o.label.side != LabelSide::Base) {
+    const bool side_label = m < o.labels.size() && !o.labels[m].empty() && o.label.side != LabelSide::Base;
+    const PlateJobOptions::MadeCavity* made = made_cavity(p, o);
+    std::vector<ClipperLib::Paths> regions;
+    if (!made || side_label) regions = layer_regions(layers, sub_progress(mp, 0.2, 0.3), "hollowing");
+    p.cavity = made ? made->cavity : cavity_regions(regions, st.thickness, o.hollowing, sub_progress(mp, 0.3, 1));
+    if (side_label) {
       p.regions = std::move(regions);
       p.region_z = layers.layer_z;
     }
