@@ -370,7 +370,8 @@ TEST(SubtractCavity, LeavesExactlyClippersDifference) {
   const std::vector<DrainHole> holes = add_drain_holes(drained, 2);
   ASSERT_EQ(holes.size(), 1u);
   std::vector<std::tuple<std::string, Slices, std::vector<Paths>>> cases{{"drained sphere", sphere, drained}};
-  for (const auto& [name, mesh] : {std::pair{"overlapping boxes", boxes}, {"a box twice", twice}, {"nested boxes", nested}}) {
+  for (const auto& [name, mesh] :
+       {std::pair{"overlapping boxes", boxes}, {"a box twice", twice}, {"nested boxes", nested}}) {
     const Slices shells = slice_layers(mesh, SliceOptions{0.1});
     cases.emplace_back(name, shells, layers_cavity(shells, o));
   }
