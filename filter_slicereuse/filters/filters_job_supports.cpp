@@ -88,12 +88,14 @@ namespace {
 
 // A hollowed, drained member's drain holes (drilled as the job drills them, from the same layers,
 // at thickness) as cylinders its support heads keep clear of; none when it is solid or undrained.
-// The job computes the cavity again from the same layers (the supports come first).
+// Its cavity, made first, goes to the job (o.made_cavities), which takes it for the same member
+// on the same planes (the supports come first).
 std::vector<KeepOutCylinder> drain_hole_keep_out(const Mesh& member, const Slices& layers, double z_start,
-                                                 double thickness, const std::string& name, const PlateJobOptions& o) {
+                                                 double thickness, const std::string& name, PlateJobOptions& o) {
   std::vector<KeepOutCylinder> out;
   if (o.hollowing.wall_mm == 0 || o.drain_hole_mm == 0) return out;
   std::vector<ClipperLib::Paths> cavity = layers_cavity(layers, o.hollowing);
+  o.made_cavities.push_back({&member, layers.layer_z, o.hollowing, cavity});
   if (cavity_volume_mm3(cavity, thickness) == 0) return out;
   for (const DrainHole& h : drill_member_drain_holes(member, layers, name, o, cavity)) {
     const auto ends = drain_hole_axis(h, z_start, thickness, drain_hole_depth_mm(o.hollowing));

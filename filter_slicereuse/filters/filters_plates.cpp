@@ -227,6 +227,8 @@ Result run_plate_job(const PlateJobParams& p, Host& host) {
     if (supports[m].kept_out > 0)
       host.log(format("Make Plate Job: %s: %zu support points dropped: their heads would reach into a drain hole",
                       names[m].c_str(), supports[m].kept_out));
+  // The supports' cavities are of the members as loaded; the plates hold them moved and turned.
+  jo.made_cavities.clear();
   arrange_members(plan, p, size_t(p.plate), supported.footprints, sub_progress(progress, 0.1, 0.15));
   const Arrangement& arrangement = plan.arrangement;
   const double arrange_seconds = plan.arrange_seconds;

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -339,6 +341,92 @@ TEST(DrainHoles, TheUsersRunAlongTheirNormalIntoTheCavity) {
             "drain hole 2 at (0.20, 0.20, 6.00) mm reaches no cavity: drilled 2 mm in along its normal (0.00, 0.00, "
             "1.00), it ends in the wall; place it over the cavity (Hollow Mesh shows it)");
   EXPECT_EQ(cavity, before);
+}
+
+// subtract_cavity leaves each layer's region less its cavity, exactly Clipper's difference (the
+// same point set up to the 1 nm grid: their xor on it is empty), whichever way it takes the cavity
+// out: by the layer's own contours where they wind once around it, by its region where the
+// cavity lies inside that, else by Clipper. A drained sphere, whose hole opens its two lowest
+// layers to the outside; shells whose contours wind twice over some of the cavity: two
+// overlapping boxes (across the middle), a box twice (all over), a box inside a box (inside the
+// cavity); a cavity given across a box's side but on one layer.
+TEST(SubtractCavity, LeavesExactlyClippersDifference) {
+  test::FamilyOptions fo;
+  fo.shape = "sphere";
+  fo.faces = 2500;
+  fo.height = 6;
+  Mesh boxes = test::make_box(0, 0, 0, 10, 8, 6), twice = boxes, nested = boxes;
+  test::append_mesh(boxes, test::make_box(4, 0, 0, 14, 8, 6));
+  test::append_mesh(twice, test::make_box(0, 0, 0, 10, 8, 6));
+  test::append_mesh(nested, test::make_box(3, 3, 0, 7, 5, 6));
+  const Slices box = slice_layers(test::make_box(0, 0, 0, 10, 8, 6), SliceOptions{0.1});
+  std::vector<Paths> across(box.layers(), rectangle(8, 2, 12, 6));  // reaches 2 mm out of the box
+  across[30] = rectangle(2, 2, 8, 6);                                // inside, as a cavity is
+  HollowingOptions o;
+  o.wall_mm = 1;
+  o.closing_mm = 0;
+  const Slices sphere = slice_layers(test::make_family_base(fo), SliceOptions{0.1});
+  std::vector<Paths> drained = layers_cavity(sphere, o);
+  const std::vector<DrainHole> holes = add_drain_holes(drained, 2);
+  ASSERT_EQ(holes.size(), 1u);
+  std::vector<std::tuple<std::string, Slices, std::vector<Paths>>> cases{{"drained sphere", sphere, drained}};
+  for (const auto& [name, mesh] :
+       {std::pair{"overlapping boxes", boxes}, {"a box twice", twice}, {"nested boxes", nested}}) {
+    const Slices shells = slice_layers(mesh, SliceOptions{0.1});
+    cases.emplace_back(name, shells, layers_cavity(shells, o));
+  }
+  cases.emplace_back("cavity across the side", box, across);
+  // A layer's contours from its first, as points.
+  const auto contours = [](const Slices& s, size_t k, size_t count) {
+    std::vector<std::vector<double>> out;
+    for (uint64_t c = s.layer_begin[k]; c < s.layer_begin[k + 1] && out.size() < count; ++c)
+      out.emplace_back(s.xyz.begin() + long(3 * s.contour_begin[c]), s.xyz.begin() + long(3 * s.contour_begin[c + 1]));
+    return out;
+  };
+  for (const auto& [name, part, cavity] : cases) {
+    SCOPED_TRACE(name);
+    Slices hollowed = part;
+    subtract_cavity(hollowed, 0, cavity);
+    ASSERT_EQ(hollowed.layers(), part.layers());
+    size_t cut = 0, by_loops = 0, by_contours = 0;
+    for (size_t k = 0; k < part.layers(); ++k) {
+      const Paths walls = layer_region(LayerView(hollowed, k));
+      const Paths expected = clip_regions(layer_region(LayerView(part, k)), cavity[k], ClipperLib::ctDifference);
+      EXPECT_TRUE(clip_regions(walls, expected, ClipperLib::ctXor).empty()) << "layer " << k;
+      EXPECT_NEAR(region_area_mm2(walls), region_area_mm2(expected), 1e-12) << "layer " << k;
+      if (cavity[k].empty()) continue;
+      ++cut;
+      // Taken out by its loops (the layer's last loops are the cavity's, reversed) ...
+      const Paths loops = layer_paths(LayerView(hollowed, k));
+      bool reversed = loops.size() >= cavity[k].size();
+      for (size_t c = 0; c < cavity[k].size() && reversed; ++c) {
+        ClipperLib::Path loop = cavity[k][c];
+        std::reverse(loop.begin(), loop.end());
+        reversed = loops[loops.size() - cavity[k].size() + c] == loop;
+      }
+      by_loops += reversed;
+      // ... exactly where it lies inside the region,
+      EXPECT_EQ(reversed, clip_regions(cavity[k], layer_region(LayerView(part, k)), ClipperLib::ctDifference).empty())
+          << "layer " << k;
+      // and with the layer's own contours before them, as they are, where those wind once.
+      const size_t own = part.layer_begin[k + 1] - part.layer_begin[k];
+      by_contours += reversed && loops.size() == own + cavity[k].size() &&
+                     contours(hollowed, k, own) == contours(part, k, own);
+    }
+    if (name == "drained sphere") {
+      EXPECT_EQ(cut, 50u);
+      EXPECT_EQ(by_loops, cut - 2);
+      EXPECT_EQ(by_contours, cut - 2);
+    } else if (name != "cavity across the side") {
+      EXPECT_EQ(cut, 40u);
+      EXPECT_EQ(by_loops, cut);
+      EXPECT_EQ(by_contours, 0u);
+    } else {
+      EXPECT_EQ(cut, part.layers());
+      EXPECT_EQ(by_loops, 1u);
+      EXPECT_EQ(by_contours, 1u);
+    }
+  }
 }
 
 TEST(Cavity, AWallThickerThanThePartLeavesNoCavity) {

@@ -20,6 +20,7 @@
 #include "mask_stack.h"
 #include "shapes.h"
 #include "wall_measure.h"
+#include "slicereuse/hollowing/hollow_layers.h"
 #include "slicereuse/plates/arrange_plates.h"
 #include "slicereuse/plates/footprint.h"
 #include "slicereuse/plates/placement.h"
@@ -1170,6 +1171,47 @@ TEST_F(PlateJobTest, DrainHolesOpenEveryCavityThroughTheBase) {
     const bool turned = std::fabs(st.label_places[0][2]) == 90;
     EXPECT_TRUE(dx > 0.5 * (turned ? box[1] : box[0]) + 1 || dy > 0.5 * (turned ? box[0] : box[1]) + 1)
         << "hole at " << h.x_mm << ", " << h.y_mm;
+  }
+}
+
+// A cavity made before the job (options.made_cavities: a supported member's, made for its drain
+// holes' keep-out) is the member's own when it is of the same mesh on the same planes with the
+// same hollowing: the masks are those the job makes alone. The job uses what it takes (an empty
+// one leaves the member solid), and takes none of other planes, another hollowing or a mesh with
+// a vertex moved by a micrometre.
+TEST_F(PlateJobTest, ACavityMadeBeforeTheJobIsTakenOnlyForTheSameLayers) {
+  const std::vector<Mesh> sphere{standing_sphere()};
+  const PrinterProfile profile = display(120, 120);
+  PlateJobOptions o = hollowing_at_tenths(1);
+  o.slicing.z_start = 0;
+  PlateJobOptions solid = o;
+  solid.hollowing.wall_mm = 0;
+  export_plate(sphere, solid, profile, path("solid"));
+  const PlateJobStats own = export_plate(sphere, o, profile, path("own"));
+  ASSERT_GT(own.cavity_mm3[0], 100);
+  const Slices layers = slice_layers(sphere[0], o.slicing);
+  const std::vector<ClipperLib::Paths> none(layers.layers());
+  Mesh moved = sphere[0];
+  moved.V[0] += 1e-3;
+  std::vector<double> shifted = layers.layer_z;
+  for (double& z : shifted) z += 0.05;
+  HollowingOptions thinner = o.hollowing;
+  thinner.wall_mm = 0.9;
+  const std::vector<std::tuple<std::string, PlateJobOptions::MadeCavity, std::string, double>> cases{
+      {"the same", {&sphere[0], layers.layer_z, o.hollowing, layers_cavity(layers, o.hollowing)}, "own",
+       own.cavity_mm3[0]},
+      {"an empty one", {&sphere[0], layers.layer_z, o.hollowing, none}, "solid", 0},
+      {"other planes", {&sphere[0], shifted, o.hollowing, none}, "own", own.cavity_mm3[0]},
+      {"another hollowing", {&sphere[0], layers.layer_z, thinner, none}, "own", own.cavity_mm3[0]},
+      {"a vertex moved", {&moved, layers.layer_z, o.hollowing, none}, "own", own.cavity_mm3[0]}};
+  for (const auto& [name, made, masks, volume] : cases) {
+    SCOPED_TRACE(name);
+    PlateJobOptions with = o;
+    with.made_cavities = {made};
+    const PlateJobStats st = export_plate(sphere, with, profile, path("made"));
+    EXPECT_EQ(st.cavity_mm3[0], volume);
+    EXPECT_EQ(compare_mask_stacks(path(masks), path("made"), "").differing_pixels, 0u);
+    std::filesystem::remove_all(path("made"));
   }
 }
 

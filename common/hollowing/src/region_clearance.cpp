@@ -98,11 +98,9 @@ IndexedRegion index_region(const ClipperLib::Paths& region) {
   return out;
 }
 
-bool clears(const IndexedRegion& inner, const IndexedRegion& outer, double distance) {
+bool boundaries_apart(const IndexedRegion& inner, const IndexedRegion& outer, double distance) {
   const ClipperLib::Paths& in = *inner.region;
   const ClipperLib::Paths& out = *outer.region;
-  if (in.empty()) return true;
-  if (out.empty()) return false;
   // Boxes or capsules this far apart or more hold nothing nearer than distance, nor any crossing.
   const auto apart = [distance](double gap) { return gap >= distance && gap > 0; };
   const auto box_gap = [](const auto& r, const auto& s) {
@@ -152,6 +150,15 @@ bool clears(const IndexedRegion& inner, const IndexedRegion& outer, double dista
               if (too_near(inner.runs[ri], outer.runs[si])) return false;
         }
     }
+  return true;
+}
+
+bool clears(const IndexedRegion& inner, const IndexedRegion& outer, double distance) {
+  const ClipperLib::Paths& in = *inner.region;
+  const ClipperLib::Paths& out = *outer.region;
+  if (in.empty()) return true;
+  if (out.empty()) return false;
+  if (!boundaries_apart(inner, outer, distance)) return false;
   // The boundaries do not meet, so each loop lies wholly inside or outside the other region:
   // inner lies in outer when every inner loop does and no outer loop lies in inner.
   for (const ClipperLib::Path& loop : in)
@@ -159,6 +166,21 @@ bool clears(const IndexedRegion& inner, const IndexedRegion& outer, double dista
   for (const ClipperLib::Path& loop : out)
     if (region_covers(in, loop[0])) return false;
   return true;
+}
+
+int winding_number(const ClipperLib::Paths& loops, const IntPoint& p) {
+  int w = 0;
+  for (const ClipperLib::Path& loop : loops)
+    for (size_t i = 0; i < loop.size(); ++i) {
+      const IntPoint& a = loop[i];
+      const IntPoint& b = loop[(i + 1) % loop.size()];
+      if (a.Y <= p.Y) {
+        if (b.Y > p.Y && orientation(a, b, p) > 0) ++w;  // upwards, p on its left
+      } else if (b.Y <= p.Y && orientation(a, b, p) < 0) {
+        --w;  // downwards, p on its right
+      }
+    }
+  return w;
 }
 
 }  // namespace slicereuse

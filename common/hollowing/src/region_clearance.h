@@ -2,18 +2,21 @@
 // region_clearance: how far a region lies inside another, for proving that a cavity already lies
 // within an offset it has not been clipped by (cavity.cpp), without computing that offset.
 //
-// IndexedRegion: a region (Clipper loops: outer counter-clockwise, holes clockwise, none crossing)
-// with its loops cut into runs of a few edges, each bounded by a box and a capsule (the chord from
-// its first to its last point and the farthest its points stray from that chord), and the runs
-// into groups and those into supergroups, bounded by boxes: far parts are told apart by their
-// boxes, near runs by their
-// capsules, and only runs nearer than the distance asked are compared edge by edge. The region
-// must outlive it.
+// IndexedRegion: a region (Clipper loops: outer counter-clockwise, holes clockwise, none crossing;
+// any loops for boundaries_apart) with its loops cut into runs of a few edges, each bounded by a
+// box and a capsule (the chord from its first to its last point and the farthest its points stray
+// from that chord), and the runs into groups and those into supergroups, bounded by boxes: far
+// parts are told apart by their boxes, near runs by their capsules, and only runs nearer than the
+// distance asked are compared edge by edge. The region must outlive it.
 // clears(inner, outer, distance): whether inner lies inside outer with at least distance between
 // their boundaries, i.e. inside outer offset inwards by distance (distance 0: inside, boundaries
 // not touching). An empty inner lies inside anything; a non-empty one inside no empty outer. In
 // Clipper units, exact up to the doubles' rounding of the distances (crossings are found in
 // exact integer arithmetic).
+// boundaries_apart(a, b, distance): whether no edge of a comes nearer than distance to an edge of
+// b, nor meets one (distance 0: none meets); a's and b's loops may be any, crossing or not.
+// winding_number(loops, p): how many times loops (any) wind counter-clockwise around p, a point
+// on none of their edges (exact).
 #include <clipper.hpp>
 
 #include <cstdint>
@@ -40,5 +43,7 @@ struct IndexedRegion {
 
 IndexedRegion index_region(const ClipperLib::Paths& region);
 bool clears(const IndexedRegion& inner, const IndexedRegion& outer, double distance);
+bool boundaries_apart(const IndexedRegion& a, const IndexedRegion& b, double distance);
+int winding_number(const ClipperLib::Paths& loops, const ClipperLib::IntPoint& p);
 
 }  // namespace slicereuse

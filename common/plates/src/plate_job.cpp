@@ -14,6 +14,7 @@
 #include "slicereuse/plates/base_label.h"
 #include "slicereuse/plates/faded_layers.h"
 #include "slicereuse/plates/side_label.h"
+#include "slicereuse/regions/layer_region.h"
 #include "slicereuse/slicing/layer_chunks.h"
 #include "slicereuse/slicing/layer_planes.h"
 #include "slicereuse/slicing/slice_layers.h"
@@ -66,6 +67,10 @@ struct PlateMember {
   DirectLayers direct;         // made where drawn: its layers sliced beforehand
   size_t offset = 0;           // the plate layer of its layer 0
   std::vector<ClipperLib::Paths> cavity;  // hollowed: each of its layers' cavity; else empty
+  // Hollowed, with a label for its side: its layers' regions and mid-planes, made for its cavity,
+  // kept for member_labels to place the label on (then freed).
+  std::vector<ClipperLib::Paths> regions;
+  std::vector<double> region_z;
   bool support = false;
   size_t owner = 0;            // the member it is, or whose support it is
 
@@ -207,9 +212,27 @@ std::vector<PlateMember> prepare_members(const std::vector<Mesh>& placed, const 
   return members;
 }
 
+// The cavity made before the job (o.made_cavities) of member p's very layers: of a mesh with its
+// vertices and faces, on its planes, with the job's hollowing; else null.
+const PlateJobOptions::MadeCavity* made_cavity(const PlateMember& p, const PlateJobOptions& o) {
+  for (const PlateJobOptions::MadeCavity& c : o.made_cavities) {
+    if (!c.mesh || c.hollowing.wall_mm != o.hollowing.wall_mm || c.hollowing.closing_mm != o.hollowing.closing_mm ||
+        c.planes.size() != p.layers() || c.cavity.size() != p.layers() || c.mesh->V != p.mesh->V ||
+        c.mesh->F != p.mesh->F)
+      continue;
+    bool same = true;
+    for (size_t k = 0; k < p.layers() && same; ++k)
+      same = c.planes[k] == (p.transfer ? p.transfer->plane(k) : p.planes[k]);
+    if (same) return &c;
+  }
+  return nullptr;
+}
+
 // With o.hollowing, each member's cavity from all its layers, made as its masks' are (by its
 // transfer or sliced directly on its planes), one member at a time on all cores; its volume, or
-// why there is none, into st. Supports stay solid.
+// why there is none, into st, or the one made before the job of the same layers. Supports stay
+// solid. A member to be labelled on a side keeps its layers' regions for the label
+// (member_labels), which would make them again.
 void hollow_members(std::vector<PlateMember>& members, const PlateJobOptions& o, PlateJobStats& st,
                     const Progress& progress) {
   const size_t n = st.direct_reasons.size();
@@ -224,7 +247,15 @@ void hollow_members(std::vector<PlateMember>& members, const PlateJobOptions& o,
     Slices layers = p.transfer ? p.transfer->layers(0, p.layers(), nullptr, sub_progress(mp, 0, 0.2))
                                : slice_planes(*p.mesh, p.planes, sub_progress(mp, 0, 0.2), false);
     layers.thickness = st.thickness;
-    p.cavity = layers_cavity(layers, o.hollowing, sub_progress(mp, 0.2, 1));
+    const bool side_label = m < o.labels.size() && !o.labels[m].empty() && o.label.side != LabelSide::Base;
+    const PlateJobOptions::MadeCavity* made = made_cavity(p, o);
+    std::vector<ClipperLib::Paths> regions;
+    if (!made || side_label) regions = layer_regions(layers, sub_progress(mp, 0.2, 0.3), "hollowing");
+    p.cavity = made ? made->cavity : cavity_regions(regions, st.thickness, o.hollowing, sub_progress(mp, 0.3, 1));
+    if (side_label) {
+      p.regions = std::move(regions);
+      p.region_z = layers.layer_z;
+    }
     st.cavity_mm3[m] = cavity_volume_mm3(p.cavity, st.thickness);
     if (o.drain_hole_mm > 0 && st.cavity_mm3[m] > 0)
       st.drain_holes[m] = drill_member_drain_holes(*p.mesh, layers, member_name(o, m), o, p.cavity);
@@ -298,7 +329,7 @@ constexpr double kLabelSkinMm = 1;  // of the part between a label's letters and
 // Each labelled member's label placed on its base (base_label.h) from its own first layers, or
 // on its side (side_label.h) from all its layers; a label that fits nowhere fails the job, or
 // with allow_unlabelled leaves the member unlabelled.
-std::vector<LabelCut> member_labels(const std::vector<PlateMember>& members, size_t count, const PlateJobOptions& o,
+std::vector<LabelCut> member_labels(std::vector<PlateMember>& members, size_t count, const PlateJobOptions& o,
                                     PlateJobStats& st) {
   std::vector<LabelCut> labels;
   if (o.labels.empty()) return labels;
@@ -314,17 +345,23 @@ std::vector<LabelCut> member_labels(const std::vector<PlateMember>& members, siz
   labels.resize(count);
   st.label_heights_mm.assign(count, 0);
   st.label_places.assign(count, {0, 0, 0});
-  for (const PlateMember& p : members) {
+  for (PlateMember& p : members) {
     const std::string& text = o.labels[p.owner];
     if (p.support || text.empty()) continue;
     const std::string name = p.owner < o.names.size() ? o.names[p.owner] : format("member %zu", p.owner + 1);
     if (o.label.side != LabelSide::Base) {
       // Placed on its solid layers: the letters take only what lies within their depth of the
       // outside (engrave_part), so they keep the wall less their depth from the cavity (above).
-      const Slices all = p.transfer ? p.transfer->layers(0, p.layers())
-                                    : slice_planes(*p.mesh, p.planes, {}, false);
       const double turn = p.owner < o.label_turns_deg.size() ? o.label_turns_deg[p.owner] : 0;
-      SideLabel s = place_side_label(all, st.thickness, turn, text, name, o.label);
+      SideLabel s;
+      if (!p.region_z.empty()) {
+        s = place_side_label(std::move(p.regions), p.region_z, st.thickness, turn, text, name, o.label);
+        p.regions = {};
+        p.region_z = {};
+      } else {
+        const Slices all = p.transfer ? p.transfer->layers(0, p.layers()) : slice_planes(*p.mesh, p.planes, {}, false);
+        s = place_side_label(all, st.thickness, turn, text, name, o.label);
+      }
       if (s.cuts.empty()) {
         if (o.allow_unlabelled) continue;
         throw Error(s.why);

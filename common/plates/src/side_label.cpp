@@ -167,14 +167,17 @@ const char* side_name(LabelSide side) {
 
 SideLabel place_side_label(const Slices& layers, double thickness_mm, double turn_deg, const std::string& text,
                            const std::string& name, const LabelOptions& o) {
+  return place_side_label(layer_regions(layers, {}, "labels"), layers.layer_z, thickness_mm, turn_deg, text, name, o);
+}
+
+SideLabel place_side_label(std::vector<Paths> regions, const std::vector<double>& layer_z, double thickness_mm,
+                           double turn_deg, const std::string& text, const std::string& name, const LabelOptions& o) {
   label_box_mm(text, o.height_mm);  // checks the text and the height
   SideLabel s;
   const Turn to_side = turn_of(side_deg(o.side) - turn_deg), to_plate = turn_of(turn_deg - side_deg(o.side));
-  const size_t L = layers.layers();
+  const size_t L = regions.size();
   // Every layer in the side's frame, and the member's extent in u.
-  std::vector<Paths> regions(L);
-  parallel_blocks(L, [&](size_t k) { regions[k] = turned(layer_region(LayerView(layers, k)), to_side); }, {},
-                  "labels");
+  parallel_blocks(L, [&](size_t k) { regions[k] = turned(regions[k], to_side); }, {}, "labels");
   cInt u_lo = std::numeric_limits<cInt>::max(), u_hi = std::numeric_limits<cInt>::min();
   for (size_t k = 0; k < L; ++k) {
     if (regions[k].empty()) continue;
@@ -210,7 +213,7 @@ SideLabel place_side_label(const Slices& layers, double thickness_mm, double tur
         r = inner.empty() ? Paths{} : over(r, u_centre - widest, u_centre + widest, bounds(inner).top + reach);
       },
       {}, "labels");
-  const double bottom = layers.layer_z[0] - 0.5 * thickness_mm;
+  const double bottom = layer_z[0] - 0.5 * thickness_mm;
   // Whether the box from layer j, `spanned` layers high, over the strip a <= u <= b has a face
   // (faces: the layers' faces over that strip, made as needed), and the face's plane.
   const auto face_of = [&](std::vector<std::optional<LayerFace>>& faces, cInt a, cInt b, size_t j, size_t spanned,
@@ -267,7 +270,7 @@ SideLabel place_side_label(const Slices& layers, double thickness_mm, double tur
       s.first = j;
       for (size_t k = j; k < j + spanned; ++k) {
         Paths bands;
-        for (const auto& [u0, u1] : section(letters, region_units(layers.layer_z[k]), a, b))
+        for (const auto& [u0, u1] : section(letters, region_units(layer_z[k]), a, b))
           bands.push_back(rect(u0, plane - region_units(kOutsideMm), u1, plane + tol + depth));
         s.cuts.push_back(turned(bands, to_plate));
       }

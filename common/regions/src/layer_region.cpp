@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "slicereuse/util/parallel_blocks.h"
+
 namespace slicereuse {
 
 ClipperLib::Paths layer_paths(const LayerView& layer) {
@@ -26,6 +28,12 @@ ClipperLib::Paths layer_region(const LayerView& layer) {
   clipper.AddPaths(layer_paths(layer), ClipperLib::ptSubject, true);
   clipper.Execute(ClipperLib::ctUnion, region, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
   return region;
+}
+
+std::vector<ClipperLib::Paths> layer_regions(const Slices& s, const Progress& progress, const char* phase) {
+  std::vector<ClipperLib::Paths> regions(s.layers());
+  parallel_blocks(s.layers(), [&](size_t k) { regions[k] = layer_region(LayerView(s, k)); }, progress, phase);
+  return regions;
 }
 
 void region_into_layer(const ClipperLib::Paths& region, double z, Slices& out) {

@@ -143,6 +143,18 @@ struct PlateJobOptions {
   // surface's normal (add_drain_holes_at, drain_holes.h); a hole that reaches no cavity of a
   // member fails the job, naming the member and the hole.
   SupportPoints drain_points;
+  // Cavities made before the job (a supported member's, whose support heads keep clear of its
+  // drain holes: filters_job_supports.cpp), before any hole: each with the mesh it was made of
+  // (which must outlive the job), its layers' planes and the hollowing. A member whose mesh has
+  // the same vertices and faces, on the same planes, with the same hollowing, takes it as its
+  // cavity (layers_cavity of the same layers: the same) rather than making it again.
+  struct MadeCavity {
+    const Mesh* mesh = nullptr;
+    std::vector<double> planes;
+    HollowingOptions hollowing;
+    std::vector<ClipperLib::Paths> cavity;
+  };
+  std::vector<MadeCavity> made_cavities;
 };
 
 // Where a finding of the plate's printability lies: the member (an index into placed) whose

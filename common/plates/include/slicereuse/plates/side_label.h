@@ -24,6 +24,8 @@
 // layer's outside. Not placed (cuts empty), with `why` saying so in words, when no height and
 // place fits. Deterministic: quarter turns are exact, and the same layers give the same bands.
 // Throws Error as label_region does (a text the font cannot print, heights that are not positive).
+// The second form takes the layers as their regions (layer_regions, layer_region.h) and their
+// mid-planes (Slices::layer_z), as a hollowed member's job has made them for its cavity.
 // side_name: "front", "back", "left" or "right" (and "base").
 #include <array>
 #include <clipper.hpp>
@@ -47,5 +49,8 @@ struct SideLabel {
 const char* side_name(LabelSide side);
 SideLabel place_side_label(const Slices& layers, double thickness_mm, double turn_deg, const std::string& text,
                            const std::string& name, const LabelOptions& o);
+SideLabel place_side_label(std::vector<ClipperLib::Paths> regions, const std::vector<double>& layer_z,
+                           double thickness_mm, double turn_deg, const std::string& text, const std::string& name,
+                           const LabelOptions& o);
 
 }  // namespace slicereuse

@@ -7,13 +7,17 @@
 // layer_region: the region those contours fill by the nonzero winding rule (the masks' rule,
 // rasterize_layer.h) as simple polygons: outer loops counter-clockwise, holes clockwise, none
 // crossing another. Overlapping members or supports merge into one region.
+// layer_regions: every layer of s as its region (layer_region), on all cores (phase names them
+// in the progress).
 // region_into_layer: polygons (any orientation convention Clipper gives, outer CCW) as layer 0 of
 // out (replaced): one closed contour per polygon at height z, xyz only, no encoding.
 #include <clipper.hpp>
 #include <cmath>
+#include <vector>
 
 #include "slicereuse/slicing/layer_view.h"
 #include "slicereuse/slicing/slices.h"
+#include "slicereuse/util/progress.h"
 
 namespace slicereuse {
 
@@ -23,6 +27,8 @@ inline ClipperLib::cInt region_units(double mm) { return ClipperLib::cInt(std::l
 
 ClipperLib::Paths layer_paths(const LayerView& layer);
 ClipperLib::Paths layer_region(const LayerView& layer);
+std::vector<ClipperLib::Paths> layer_regions(const Slices& s, const Progress& progress = {},
+                                             const char* phase = "regions");
 void region_into_layer(const ClipperLib::Paths& region, double z, Slices& out);
 
 // Area in mm^2 of a region (outer loops positive, holes negative).
