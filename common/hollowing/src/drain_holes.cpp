@@ -29,18 +29,6 @@ std::array<double, 2> centroid(const ClipperLib::Paths& piece) {
   return {cx / (3 * area), cy / (3 * area)};
 }
 
-// Whether p lies inside a region (loops not crossing) and on none of its loops: then every piece
-// with p as a corner overlaps it.
-bool strictly_inside(const ClipperLib::Paths& region, const ClipperLib::IntPoint& p) {
-  bool inside = false;
-  for (const ClipperLib::Path& loop : region) {
-    const int at = ClipperLib::PointInPolygon(p, loop);
-    if (at < 0) return false;
-    inside ^= at == 1;
-  }
-  return inside;
-}
-
 // The piece shrunk by r (Clipper units): where a hole's centre keeps the hole inside it.
 ClipperLib::Paths room_in(const ClipperLib::Paths& piece, double r) {
   ClipperLib::ClipperOffset offset;
@@ -161,8 +149,10 @@ std::vector<DrainHole> add_drain_holes(std::vector<ClipperLib::Paths>& cavity, d
                    return ClipperLib::Orientation(loop);
                  }) == 1) {
       bool overlaps = false;
-      for (const ClipperLib::Path& loop : cavity[k]) overlaps = overlaps || strictly_inside(cavity[k - 1], loop[0]);
-      for (const ClipperLib::Path& loop : cavity[k - 1]) overlaps = overlaps || strictly_inside(cavity[k], loop[0]);
+      for (const ClipperLib::Path& loop : cavity[k])
+        overlaps = overlaps || region_covers_strictly(cavity[k - 1], loop[0]);
+      for (const ClipperLib::Path& loop : cavity[k - 1])
+        overlaps = overlaps || region_covers_strictly(cavity[k], loop[0]);
       if (overlaps) continue;
     }
     for (const ClipperLib::Paths& piece : region_pieces(cavity[k])) {

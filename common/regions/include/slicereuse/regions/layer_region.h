@@ -36,9 +36,21 @@ double region_area_mm2(const ClipperLib::Paths& region);
 
 // Whether point p (Clipper units) lies in a region whose loops do not cross: inside an odd
 // number of them (on a loop counts as inside it).
+// region_covers_strictly: the same, p on none of the loops (then every piece with p as a corner
+// overlaps the region).
 inline bool region_covers(const ClipperLib::Paths& region, const ClipperLib::IntPoint& p) {
   bool in = false;
   for (const ClipperLib::Path& loop : region) in ^= ClipperLib::PointInPolygon(p, loop) != 0;
+  return in;
+}
+
+inline bool region_covers_strictly(const ClipperLib::Paths& region, const ClipperLib::IntPoint& p) {
+  bool in = false;
+  for (const ClipperLib::Path& loop : region) {
+    const int at = ClipperLib::PointInPolygon(p, loop);
+    if (at < 0) return false;
+    in ^= at == 1;
+  }
   return in;
 }
 
