@@ -1,7 +1,8 @@
 // Every print format presets.json lists (print_formats.h) is written as a file of its own, not a
 // folder, and reads back (MaskStack) as the masks of the profile with the grey levels it holds;
 // made from ranges of layers it is the same file byte for byte; a cancelled export leaves
-// nothing and keeps an old file; every preset's own format is one of them.
+// nothing and keeps an old file; every preset's own format is one of them. A supported stack's
+// resin traps are lit in every format, however its layers are made.
 #include <gtest/gtest.h>
 
 #include <stdlib.h>
@@ -10,10 +11,12 @@
 #include <string>
 #include <vector>
 
+#include "error_of.h"
 #include "mask_layers.h"
 #include "mask_stack.h"
 #include "print_file_tests.h"
 #include "slicereuse/printer/print_formats.h"
+#include "slicereuse/printability/printability_report.h"
 #include "slicereuse/printer/printer_presets.h"
 #include "slicereuse/printfiles/export_masks.h"
 #include "slicereuse/util/error.h"
@@ -82,6 +85,70 @@ TEST_F(PrintFormats, EveryFormatMadeFromRangesOfLayersIsTheSameFileByteForByte) 
           << f.extension << (aa ? ", anti-aliased" : ", binary");
     }
   ::unsetenv("SOURCE_DATE_EPOCH");
+}
+
+TEST_F(PrintFormats, ASupportedStacksResinTrapsAreLitInEveryFormatHoweverItsLayersAreMade) {
+  // A part's floor, three layers of a ring around a 3 x 3 mm pocket a pillar stands in, and a
+  // lid: the pocket is a resin trap. With the pillar a support's, every file, made from a range
+  // of layers or a layer at a time, reads back as five solid squares and its check finds no
+  // trap; with the pillar the part's, the pocket stays and the check finds it.
+  const test::Layer solid{test::rect(-3, -3, 3, 3)};
+  const test::Layer ring{test::rect(-3, -3, 3, 3), test::rect(-1.5, -1.5, 1.5, 1.5, true)};
+  const test::Loop pillar = test::rect(-0.5, -0.5, 0.5, 0.5);
+  const std::vector<test::Layer> part{solid, ring, ring, ring, solid};
+  const Slices lit = test::make_slices(std::vector<test::Layer>(5, solid));
+  const Slices unlit = test::make_slices({solid, {ring[0], ring[1], pillar}, {ring[0], ring[1], pillar},
+                                          {ring[0], ring[1], pillar}, solid});
+  const PrinterProfile p = test::small_display();
+  for (bool supports : {true, false}) {
+    SliceChunks chunks{{0, 5}, 0.1, [&](size_t, const Progress&) {
+                         std::vector<SlicePart> parts(2);
+                         parts[0].slices = test::make_slices(part);
+                         parts[1] = {test::make_slices(std::vector<test::Layer>(3, {pillar})), 1, supports};
+                         return parts;
+                       },
+                       supports};
+    LayerMaker maker{5, 0.1,
+                     [&](size_t k, std::vector<SlicePart>& parts) {
+                       parts.assign(k >= 1 && k <= 3 ? 2 : 1, SlicePart());
+                       parts[0].slices = test::make_slices({part[k]});
+                       if (parts.size() == 2) parts[1] = {test::make_slices({{pillar}}), 0, supports};
+                     },
+                     supports};
+    std::vector<std::string> outputs{path(supports ? "folder_supported" : "folder")};
+    for (const PrintFormat& f : print_formats()) outputs.push_back(path((supports ? "supported" : "job") + f.extension));
+    for (const std::string& out : outputs)
+      for (bool made_where_drawn : {false, true}) {
+        fs::remove_all(out);
+        size_t traps = 99;
+        const MaskChecks checks{[&](PrintabilityReport r) { traps = r.count(FindingKind::ResinTrap); }};
+        if (made_where_drawn)
+          export_masks(maker, p, out, {}, &checks);
+        else
+          export_masks(chunks, p, out, {}, &checks);
+        const std::string what = out + (made_where_drawn ? ", made where drawn" : ", a range");
+        EXPECT_EQ(traps, supports ? 0u : 1u) << what;
+        const PrinterProfile held = profile_for_format(p, print_format(fs::path(out).extension().string()));
+        MaskStack stack(out);
+        ASSERT_EQ(stack.layers(), 5u) << what;
+        std::vector<uint8_t> bytes;
+        MaskImage image;
+        for (size_t k = 0; k < 5; ++k) {
+          stack.read(k, bytes);
+          stack.decode(k, bytes, image);
+          EXPECT_EQ(image.pixels, test::raster(supports ? lit : unlit, k, held)) << what << ", layer " << k;
+        }
+      }
+    if (!supports) continue;
+    // Every mask is held until the traps are found: refused in words beforehand when they would
+    // not fit, and nothing written.
+    ::setenv("SLICEREUSE_MEMORY_LIMIT", "1K", 1);
+    EXPECT_ERROR(export_masks(chunks, p, path("refused.sl1")),
+                 "holding the masks of all 5 layers of a supported print to find the resin traps its supports close "
+                 "needs");
+    ::unsetenv("SLICEREUSE_MEMORY_LIMIT");
+    EXPECT_FALSE(fs::exists(path("refused.sl1")));
+  }
 }
 
 TEST_F(PrintFormats, ACancelledExportOfEveryFormatLeavesNothingAndKeepsAnOldFile) {

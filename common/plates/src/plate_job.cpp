@@ -622,6 +622,8 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
   const uint64_t budget = o.whole_stack ? 0 : range_budget(o);
   const PlateChecks checks(members, placed.size(), o, profile, st);
   const std::vector<LabelCut> labels = member_labels(members, placed.size(), o, st);
+  const bool supports =
+      std::any_of(members.begin(), members.end(), [](const PlateMember& p) { return p.support; });
 
   if (o.encoding && !o.whole_stack) {
     // Made where drawn when the layers to slice directly fit in the budget (else in ranges).
@@ -641,7 +643,8 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
                                            engrave_parts(parts, k, k + 1, members, labels);
                                            compensate_faded_layers(parts, k, part_owners(members, k, k + 1), objects,
                                                                    profile, false);
-                                         }},
+                                         },
+                                         supports},
                               profile, output_path, sub_progress(rest, share, 1), checks.get());
       made.stats(st);
       return st;
@@ -665,7 +668,8 @@ PlateJobStats export_plate(const std::vector<Mesh>& placed, const PlateJobOption
                        compensate_faded_layers(parts, first[i], part_owners(members, first[i], first[i + 1]),
                                                objects, profile, true);
                        return parts;
-                     }};
+                     },
+                     supports};
   st.masks = export_masks(chunks, profile, output_path, rest, checks.get());
   return st;
 }

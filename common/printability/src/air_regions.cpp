@@ -30,6 +30,8 @@ void AirRegions::merge(uint32_t a, uint32_t b) {
   to.border |= from.border;
   to.top |= from.top;
   to.plate |= from.plate;
+  to.marked |= from.marked;
+  if (track_pieces_) pieces_.join(from.piece, to.piece);
 }
 
 AirLayer air_layer_of(LevelRuns air) {
@@ -58,7 +60,7 @@ AirLayer air_layer_of(LevelRuns air) {
   return a;
 }
 
-void AirRegions::add_layer(AirLayer layer_air, size_t layer) {
+void AirRegions::add_layer(AirLayer layer_air, size_t layer, std::vector<uint32_t>* piece_of) {
   const LevelRuns& air = layer_air.runs;
   const RunLabels& labels = layer_air.labels;
   std::vector<AirRegion>& pieces = layer_air.regions;
@@ -71,8 +73,15 @@ void AirRegions::add_layer(AirLayer layer_air, size_t layer) {
     p.first_layer = p.last_layer = layer;
     p.plate = layer == 0;
     p.layer_pixels = p.pixels;
+    if (track_pieces_) p.piece = pieces_.add();
     node[c] = sets_.add();
     regions_.push_back(p);
+  }
+
+  if (piece_of) {
+    piece_of->assign(labels.count, kNoPiece);
+    for (uint32_t c = 0; c < labels.count; ++c)
+      if (node[c] != kSolid) (*piece_of)[c] = pieces[c].piece;
   }
 
   // Pixels shared with each region of the layer below, per (piece, region below) pair: the

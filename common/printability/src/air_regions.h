@@ -14,7 +14,12 @@
 // closed(): the regions that closed (no air in the next layer continues them), each with its
 //   pixels, box, layers, the most pixels it has in one layer, and whether it reached the image
 //   border (drains), the top (open upwards) or layer 0 (sealed by the plate).
-// Memory: the runs of one layer and the regions still open, whatever the number of layers.
+// With pieces tracked (AirRegions(true); support_traps.cpp), each region of a layer added is a
+//   piece, numbered across the stack in order (add_layer gives each region's, or kNoPiece for a
+//   region taken as solid), and piece_set(p) names the 3D region a piece ended in: a closed
+//   region's piece_set(piece) is that of each of its pieces.
+// Memory: the runs of one layer and the regions still open, whatever the number of layers (and,
+// tracking pieces, 4 bytes a piece).
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -31,7 +36,11 @@ struct AirRegion {
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
   size_t first_layer = 0, last_layer = 0;
   bool border = false, top = false, plate = false;
+  bool marked = false;  // set on a layer's region by the caller, kept by the 3D region it joins
+  uint32_t piece = 0;   // tracking pieces: one of its pieces
 };
+
+constexpr uint32_t kNoPiece = UINT32_MAX;
 
 // A layer's air: its runs, the region of each run, and the regions (pixels, box, border; their
 // layers are set as the layer is added); a region too small to count is solid.
@@ -46,7 +55,9 @@ AirLayer air_layer_of(LevelRuns air);
 
 class AirRegions {
  public:
-  void add_layer(AirLayer air, size_t layer);
+  explicit AirRegions(bool track_pieces = false) : track_pieces_(track_pieces) {}
+  void add_layer(AirLayer air, size_t layer, std::vector<uint32_t>* pieces = nullptr);
+  uint32_t piece_set(uint32_t piece) { return pieces_.find(piece); }
   void finish();
   // The regions closed since the last call (moved out).
   std::vector<AirRegion> take_closed();
@@ -62,6 +73,8 @@ class AirRegions {
   std::vector<uint64_t> previous_area_;  // per run: its layer region's pixels
   std::vector<uint8_t> previous_inner_rows_;  // per row: holds air not reaching the image border
   std::vector<AirRegion> closed_;
+  bool track_pieces_ = false;
+  UnionFind pieces_;  // tracking pieces: every piece of the stack
 };
 
 }  // namespace slicereuse

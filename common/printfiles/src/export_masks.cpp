@@ -29,7 +29,7 @@
 #include "slicereuse/png/mask_png.h"
 #include "slicereuse/printer/print_formats.h"
 #include "slicereuse/printability/check_layers.h"
-#include "slicereuse/printability/seal_support_pockets.h"
+#include "slicereuse/printability/support_traps.h"
 #include "slicereuse/printer/printer_profile.h"
 #include "slicereuse/printfiles/check_print_file.h"
 #include "slicereuse/printfiles/export_masks.h"
@@ -39,6 +39,7 @@
 #include "slicereuse/util/buffer.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
+#include "slicereuse/util/memory_budget.h"
 #include "slicereuse/util/ordered_parallel.h"
 #include "slicereuse/util/parallel_blocks.h"
 #include "slicereuse/util/seconds_since.h"
@@ -49,6 +50,7 @@ namespace {
 // Folder output names its images layer00000.png, layer00001.png, ...
 const char* const FOLDER_PREFIX = "layer";
 const char* const PHASE = "writing mask images";
+const char* const TRAPS_PHASE = "finding the resin traps supports close";
 
 // What export needs of a layer besides its image, found in the same visit to its points (hot in
 // cache for the rasterizer then), not in passes of their own over the whole stack: the closed
@@ -141,18 +143,21 @@ struct MadeLayer {
 class Stack {
  public:
   explicit Stack(const Slices& s) : whole_(&s), first_{0, s.layers()}, thickness_(s.thickness) {}
-  explicit Stack(const SliceChunks& c) : chunks_(&c), first_(c.first), thickness_(c.thickness) {
+  explicit Stack(const SliceChunks& c)
+      : chunks_(&c), first_(c.first), thickness_(c.thickness), supported_(c.supports) {
     if (first_.size() < 2 || first_.front() != 0 ||
         std::adjacent_find(first_.begin(), first_.end(), std::greater_equal<size_t>()) != first_.end())
       throw Error("mask export: the layer ranges must start at layer 0 and each hold at least one layer");
   }
-  explicit Stack(const LayerMaker& m) : maker_(&m), first_{0, m.layers}, thickness_(m.thickness) {}
+  explicit Stack(const LayerMaker& m)
+      : maker_(&m), first_{0, m.layers}, thickness_(m.thickness), supported_(m.supports) {}
 
   size_t layers() const { return first_.back(); }
   size_t ranges() const { return first_.size() - 1; }
   size_t begin(size_t i) const { return first_[i]; }
   size_t end(size_t i) const { return first_[i + 1]; }
   double thickness() const { return thickness_; }
+  bool supported() const { return supported_; }  // holds support parts (support_traps.h)
   // Where range i's share of the export begins and ends, and where its encoding begins within it:
   // a range made on demand spends the first half of its share being made.
   double share_begin(size_t i) const { return double(begin(i)) / double(layers()); }
@@ -229,60 +234,132 @@ class Stack {
   std::atomic<size_t> made_open_{0};
   std::vector<size_t> first_;
   double thickness_ = 0;
+  bool supported_ = false;
   std::vector<SlicePart> held_;
   std::vector<LayerPart> parts_;
   std::vector<size_t> part_begin_;
 };
 
-bool has_supports(const LayerView& layer) {
-  return std::any_of(layer.begin(), layer.end(), [](const LayerPart& part) { return part.support; });
-}
-
-// The layer's mask as runs (mask_png.h) into out, with the pockets of air its supports close
-// lit (seal_support_pockets.h; the supports' own binary mask tells what they touch).
+// The layer's mask as runs (mask_png.h) into out.
 void layer_mask_runs(const LayerView& layer, const PrinterProfile& p, MaskRuns& out) {
   if (p.antialiasing)
     rasterize_layer_antialiased_runs(layer, p, out);
   else
     rasterize_layer_runs(layer, p, out);
-  if (!has_supports(layer)) return;
-  thread_local std::vector<LayerPart> supports;
-  supports.clear();
-  for (const LayerPart& part : layer)
-    if (part.support) supports.push_back(part);
-  PrinterProfile binary = p;
-  binary.antialiasing = false;
-  thread_local MaskRuns support_runs;
-  rasterize_layer_runs(LayerView(supports.data(), supports.size()), binary, support_runs);
-  const double pixel_mm2 = 1e-6 * p.pixel_size_x_um * p.pixel_size_y_um;
-  seal_support_pockets(out, support_runs, uint64_t(kSupportPocketMm2 / pixel_mm2));
 }
 
-// The layer, layer `k` of the stack, as a PNG of bits per pixel; mask, when not null (the
-// checks'), gets its mask as runs too (8 bits only: .sl1 archives).
+// A supported stack's masks, every one made before any is written, so that the resin traps its
+// supports close are found over the whole stack and lit whole (support_traps.h); each is taken
+// once, lit, as its layer is encoded, and its layer is not made again: visit(layer, k) sees each
+// layer as it is made, for what an export takes from its contours (the resin, the extent, the
+// top view). Memory: every layer's mask, refused in words beforehand when they would not fit.
+class PremadeMasks {
+ public:
+  PremadeMasks(Stack& stack, const PrinterProfile& p, size_t& open_contours,
+               const std::function<void(const LayerView& layer, size_t k)>& visit, const Progress& progress)
+      : masks_(stack.layers()),
+        traps_(uint64_t(kSupportTrapMm3 / (1e-6 * p.pixel_size_x_um * p.pixel_size_y_um * stack.thickness()))) {
+    PrinterProfile binary = p;
+    binary.antialiasing = false;
+    const size_t window = size_t(16) * size_t(omp_get_max_threads());
+    std::vector<TrapLayer> prepared(window);
+    uint64_t bytes = 0;
+    bool checked = false;
+    for (size_t i = 0; i < stack.ranges(); ++i) {
+      open_contours += stack.open_range(i, progress);
+      const Progress range_progress = stack.encoding_progress(i, progress);
+      const size_t first = stack.begin(i), n = stack.end(i) - first;
+      for (size_t a = 0; a < n; a += window) {
+        const size_t count = std::min(window, n - a);
+        parallel_blocks(
+            count,
+            [&](size_t j) {
+              thread_local MadeLayer made;
+              thread_local std::vector<LayerPart> supports;
+              thread_local MaskRuns drawn, support_runs;
+              const size_t k = first + a + j;
+              const LayerView layer = stack.layer(a + j, made);
+              visit(layer, k);
+              layer_mask_runs(layer, p, drawn);
+              masks_[k] = drawn;  // a copy of its size: the drawing buffer stays the thread's
+              supports.clear();
+              for (const LayerPart& part : layer)
+                if (part.support) supports.push_back(part);
+              rasterize_layer_runs(LayerView(supports.data(), supports.size()), binary, support_runs);
+              prepared[j] = prepare_trap_layer(drawn, support_runs);
+            },
+            {}, TRAPS_PHASE);
+        for (size_t j = 0; j < count; ++j) {
+          traps_.add_layer(std::move(prepared[j]));
+          const MaskRuns& m = masks_[first + a + j];
+          bytes += m.row_begin.size() * 4 + m.columns.size() * 2 + m.levels.size();
+        }
+        if (!checked) {  // all of them as the first layers go
+          checked = true;
+          check_memory_for(bytes / (first + a + count) * stack.layers(),
+                           format("holding the masks of all %zu layers of a supported print to find the resin traps "
+                                  "its supports close",
+                                  stack.layers()),
+                           "print it in thicker layers, or fewer members per plate");
+        }
+        report_progress(range_progress, double(a + count) / double(n), TRAPS_PHASE);
+      }
+    }
+    traps_.finish();
+  }
+
+  // Layer k's mask, with its traps lit; once.
+  void take(size_t k, MaskRuns& out) {
+    out = std::move(masks_[k]);
+    masks_[k] = MaskRuns();
+    traps_.light(k, out);
+  }
+
+ private:
+  std::vector<MaskRuns> masks_;
+  SupportTraps traps_;
+};
+
+// Made for a supported stack (on the first half of the progress, the encoding then taking the
+// second, encoding_progress), else none.
+std::unique_ptr<PremadeMasks> premade_masks(Stack& stack, const PrinterProfile& p, size_t& open_contours,
+                                            const std::function<void(const LayerView& layer, size_t k)>& visit,
+                                            const Progress& progress) {
+  if (!stack.supported()) return nullptr;
+  return std::make_unique<PremadeMasks>(stack, p, open_contours, visit, sub_progress(progress, 0, 0.5));
+}
+
+Progress encoding_progress(const PremadeMasks* premade, const Progress& progress) {
+  return premade ? sub_progress(progress, 0.5, 1) : progress;
+}
+
+// The layer, layer `k` of the stack, as a PNG of bits per pixel: its mask premade (a supported
+// stack's, PremadeMasks, which took its summary; the view is then empty) or drawn from the layer;
+// mask, when not null (the checks'), gets its mask as runs too (8 bits only: .sl1 archives).
 void encode_layer(const LayerView& layer, size_t k, const PrinterProfile& p, int bits, std::vector<uint8_t>& png,
-                  StackSummary& summary, MaskRuns* mask = nullptr) {
-  summary.add(k, summarize_layer(layer, k));
-  if (bits == 8 && p.antialiasing && !mask && !has_supports(layer)) {  // anti-aliased: straight into the PNG
+                  StackSummary& summary, PremadeMasks* premade, MaskRuns* mask = nullptr) {
+  if (!premade) summary.add(k, summarize_layer(layer, k));
+  if (bits == 8 && p.antialiasing && !mask && !premade) {  // anti-aliased: straight into the PNG
     rasterize_layer_antialiased_png(layer, p, png);
     return;
   }
   thread_local MaskRuns runs;
-  if (bits == 8) {  // 8-bit (.sl1): from the runs, the same PNG
-    MaskRuns& out = mask ? *mask : runs;
+  MaskRuns& out = mask ? *mask : runs;
+  if (premade)
+    premade->take(k, out);
+  else if (bits == 8)
     layer_mask_runs(layer, p, out);
+  if (bits == 8) {  // 8-bit (.sl1): from the runs, the same PNG
     encode_mask_png(out, png);
     return;
   }
   thread_local Buffer<uint8_t> image;
   const MaskImageLayout layout = mask_image_layout(p);
   image.resize(size_t(layout.width) * size_t(layout.height));
-  if (has_supports(layer)) {
-    layer_mask_runs(layer, p, runs);
-    draw_mask_runs(runs, image.data());
-  } else {
+  if (premade)
+    draw_mask_runs(out, image.data());
+  else
     rasterize_layer(layer, p, image.data());
-  }
   encode_mask_png(image.data(), layout.width, layout.height, bits, png);
 }
 
@@ -310,19 +387,24 @@ void export_folder(Stack& stack, const PrinterProfile& p, const std::string& fol
                    size_t& open_contours, const MaskChecks* checks, const Progress& progress) {
   StagedOutputs outputs;
   const std::string staged = outputs.folder(folder);
+  const std::unique_ptr<PremadeMasks> premade = premade_masks(
+      stack, p, open_contours, [&](const LayerView& layer, size_t k) { summary.add(k, summarize_layer(layer, k)); },
+      progress);
+  const Progress encoding = encoding_progress(premade.get(), progress);
   for (size_t i = 0; i < stack.ranges(); ++i) {
-    open_contours += stack.open_range(i, progress);
+    if (!premade) open_contours += stack.open_range(i, encoding);
     const size_t first = stack.begin(i);
     parallel_blocks(
         stack.end(i) - first,
         [&](size_t local) {
           thread_local std::vector<uint8_t> png;
           thread_local MadeLayer made;
-          encode_layer(stack.layer(local, made), first + local, p, p.antialiasing ? 8 : 1, png, summary);
+          encode_layer(premade ? LayerView(nullptr, 0) : stack.layer(local, made), first + local, p,
+                       p.antialiasing ? 8 : 1, png, summary, premade.get());
           // Plain writes: the staged folder as a whole is what appears atomically.
           write_file(staged + "/" + mask_layer_file_name(FOLDER_PREFIX, first + local), png);
         },
-        stack.encoding_progress(i, progress), PHASE);
+        stack.encoding_progress(i, encoding), PHASE);
   }
   // Written out of order: checked as read back, before it is committed.
   if (checks) {
@@ -340,7 +422,7 @@ void export_folder(Stack& stack, const PrinterProfile& p, const std::string& fol
 
 // Encodes layers on all cores, a window ahead of the archive writer (write_sl1, write_goo, write_ctb), which
 // asks for them in order: range by range, the next one made when the writer first asks for one
-// of its layers. encode(layer, k, bytes, mask) makes the layer, layer k of the stack; with checks,
+// of its layers (with premade masks, PremadeMasks, no layer is made: the view is empty). encode(layer, k, bytes, mask) makes the layer, layer k of the stack; with checks,
 // mask is not null and receives its mask as runs, which the same worker prepares for the checks
 // (prepare_layer: most of their work, in parallel); the checker takes the prepared layers in order
 // as the writer takes each layer, and the report goes to checks->done once it takes the last,
@@ -350,8 +432,9 @@ class OrderedLayers {
   using Encode = std::function<void(const LayerView& layer, size_t k, std::vector<uint8_t>& bytes, MaskRuns* mask)>;
 
   OrderedLayers(Stack& stack, size_t& open_contours, const PrinterProfile& p, const MaskChecks* checks,
-                const Progress& progress, Encode encode)
-      : stack_(stack), open_contours_(open_contours), progress_(progress), encode_(std::move(encode)),
+                const PremadeMasks* premade, const Progress& progress, Encode encode)
+      : stack_(stack), open_contours_(open_contours), premade_(premade), progress_(encoding_progress(premade, progress)),
+        encode_(std::move(encode)),
         window_(size_t(16) * size_t(omp_get_max_threads())), checks_(checks) {
     if (!checks) return;
     const MaskImageLayout layout = mask_image_layout(p);
@@ -377,25 +460,28 @@ class OrderedLayers {
   void next_range() {
     if (items_) ++range_;
     items_.reset();  // all of the range's layers were taken: its workers are idle
-    open_contours_ += stack_.open_range(range_, progress_);
+    if (!premade_) open_contours_ += stack_.open_range(range_, progress_);
     range_progress_ = stack_.encoding_progress(range_, progress_);
     const size_t first = stack_.begin(range_);
     items_ = std::make_unique<OrderedParallel>(stack_.end(range_) - first, window_,
                                                [this, first](size_t local, std::vector<uint8_t>& bytes) {
                                                  thread_local MadeLayer made;
+                                                 const LayerView layer =
+                                                     premade_ ? LayerView(nullptr, 0) : stack_.layer(local, made);
                                                  if (!checker_) {
-                                                   encode_(stack_.layer(local, made), first + local, bytes, nullptr);
+                                                   encode_(layer, first + local, bytes, nullptr);
                                                    return;
                                                  }
                                                  MaskRuns mask;
-                                                 encode_(stack_.layer(local, made), first + local, bytes, &mask);
+                                                 encode_(layer, first + local, bytes, &mask);
                                                  prepared_[local % window_] = prepare_layer(std::move(mask));
                                                });
   }
 
   Stack& stack_;
   size_t& open_contours_;
-  const Progress& progress_;
+  const PremadeMasks* premade_;
+  const Progress progress_;
   const Encode encode_;
   const size_t window_;
   const MaskChecks* checks_;
@@ -407,16 +493,27 @@ class OrderedLayers {
   std::unique_ptr<OrderedParallel> items_;
 };
 
+// What a file with a top view takes from a layer's contours besides its mask: its summary, and
+// its drawing into the top view.
+std::function<void(const LayerView& layer, size_t k)> contours_taken(StackSummary& summary, TopView& top_view) {
+  return [&summary, &top_view](const LayerView& layer, size_t k) {
+    summary.add(k, summarize_layer(layer, k));
+    top_view.add(layer, k);
+  };
+}
+
 // An .sl1: always 8-bit PNGs, since PrusaSlicer's SL1 import decodes only 8-bit greyscale PNGs
 // (1-bit layers would import as empty). Each layer is also drawn into the top view the
 // thumbnails are made from.
 void export_sl1(Stack& stack, const PrinterProfile& p, const std::string& path, StackSummary& summary,
                 size_t& open_contours, const MaskChecks* checks, const Progress& progress) {
   TopView top_view(p, stack.layers());
-  OrderedLayers encoder(stack, open_contours, p, checks, progress,
+  const std::unique_ptr<PremadeMasks> premade =
+      premade_masks(stack, p, open_contours, contours_taken(summary, top_view), progress);
+  OrderedLayers encoder(stack, open_contours, p, checks, premade.get(), progress,
                         [&](const LayerView& layer, size_t k, std::vector<uint8_t>& png, MaskRuns* mask) {
-                          encode_layer(layer, k, p, 8, png, summary, mask);
-                          top_view.add(layer, k);
+                          encode_layer(layer, k, p, 8, png, summary, premade.get(), mask);
+                          if (!premade) top_view.add(layer, k);
                         });
   write_sl1(path,
             Sl1Job{p, stack.layers(), stack.thickness(), [&] { return summary.used_material_ml(stack.thickness()); },
@@ -427,14 +524,18 @@ void export_sl1(Stack& stack, const PrinterProfile& p, const std::string& path, 
 }
 
 // A layer of a file made from runs (.goo, .ctb): its mask as runs (into mask, the checks', or the
-// calling thread's), also drawn into the top view the previews are made from.
+// calling thread's), premade (PremadeMasks, which took its contours) or drawn from the layer,
+// then also drawn into the top view the previews are made from.
 const MaskRuns& layer_runs(const LayerView& layer, size_t k, const PrinterProfile& p, StackSummary& summary,
-                           TopView& top_view, MaskRuns* mask) {
-  summary.add(k, summarize_layer(layer, k));
+                           TopView& top_view, PremadeMasks* premade, MaskRuns* mask) {
   thread_local MaskRuns runs;
   MaskRuns& out = mask ? *mask : runs;
+  if (premade) {
+    premade->take(k, out);
+    return out;
+  }
+  contours_taken(summary, top_view)(layer, k);
   layer_mask_runs(layer, p, out);
-  top_view.add(layer, k);
   return out;
 }
 
@@ -443,9 +544,11 @@ void export_goo(Stack& stack, const PrinterProfile& p, const std::string& path, 
                 size_t& open_contours, const MaskChecks* checks, const Progress& progress) {
   const GooJob job{p, stack.layers(), stack.thickness()};
   TopView top_view(p, stack.layers());
-  OrderedLayers encoder(stack, open_contours, p, checks, progress,
+  const std::unique_ptr<PremadeMasks> premade =
+      premade_masks(stack, p, open_contours, contours_taken(summary, top_view), progress);
+  OrderedLayers encoder(stack, open_contours, p, checks, premade.get(), progress,
                         [&](const LayerView& layer, size_t k, std::vector<uint8_t>& record, MaskRuns* mask) {
-                          encode_goo_layer(job, k, layer_runs(layer, k, p, summary, top_view, mask), record);
+                          encode_goo_layer(job, k, layer_runs(layer, k, p, summary, top_view, premade.get(), mask), record);
                         });
   write_goo(path, job, std::ref(encoder), [&] {
     return GooSummary{summary.used_material_ml(stack.thickness()), rgb565_preview(top_view.finish(), kGooSmallPreview, kGooSmallPreview),
@@ -458,9 +561,11 @@ void export_ctb(Stack& stack, const PrinterProfile& p, const std::string& path, 
                 size_t& open_contours, const MaskChecks* checks, const Progress& progress) {
   const CtbJob job{p, stack.layers(), stack.thickness()};
   TopView top_view(p, stack.layers());
-  OrderedLayers encoder(stack, open_contours, p, checks, progress,
+  const std::unique_ptr<PremadeMasks> premade =
+      premade_masks(stack, p, open_contours, contours_taken(summary, top_view), progress);
+  OrderedLayers encoder(stack, open_contours, p, checks, premade.get(), progress,
                         [&](const LayerView& layer, size_t k, std::vector<uint8_t>& data, MaskRuns* mask) {
-                          encode_ctb_layer(job, k, layer_runs(layer, k, p, summary, top_view, mask), data);
+                          encode_ctb_layer(job, k, layer_runs(layer, k, p, summary, top_view, premade.get(), mask), data);
                         });
   write_ctb(path, job, std::ref(encoder), [&] {
     return CtbSummary{summary.used_material_ml(stack.thickness()),
@@ -475,9 +580,11 @@ void export_photon_workshop(Stack& stack, const PrinterProfile& p, const std::st
                             size_t& open_contours, const MaskChecks* checks, const Progress& progress) {
   const PhotonWorkshopJob job{p, stack.layers(), stack.thickness()};
   TopView top_view(p, stack.layers());
-  OrderedLayers encoder(stack, open_contours, p, checks, progress,
+  const std::unique_ptr<PremadeMasks> premade =
+      premade_masks(stack, p, open_contours, contours_taken(summary, top_view), progress);
+  OrderedLayers encoder(stack, open_contours, p, checks, premade.get(), progress,
                         [&](const LayerView& layer, size_t k, std::vector<uint8_t>& record, MaskRuns* mask) {
-                          encode_pw0_layer(job, k, layer_runs(layer, k, p, summary, top_view, mask), record);
+                          encode_pw0_layer(job, k, layer_runs(layer, k, p, summary, top_view, premade.get(), mask), record);
                         });
   write_photon_workshop(path, job, std::ref(encoder), [&] {
     MaskExportStats extent;  // the model's extent, moved onto the plate

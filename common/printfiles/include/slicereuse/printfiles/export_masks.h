@@ -48,13 +48,18 @@ MaskExportStats export_masks(const Slices& s, const PrinterProfile& profile,
                              const std::string& output_path, const Progress& progress = {}, const MaskChecks* checks = nullptr);
 
 // Part of a range's layers: the range's layers [first, first + slices.layers()), counted from 0
-// within the range. A layer with support parts has the pockets of air they close lit in its mask
-// (seal_support_pockets.h), whatever the file.
+// within the range.
 struct SlicePart {
   Slices slices;
   size_t first = 0;
-  bool support = false;  // a support's layers: the pockets of air supports close are lit (seal_support_pockets.h)
+  bool support = false;  // a support's layers: the resin traps supports close are lit (support_traps.h)
 };
+
+// A stack with supports (SliceChunks::supports, LayerMaker::supports: a part's support flag set
+// on some layer) has every layer's mask made before any is written: the resin traps its supports
+// close are found over the whole stack and lit whole in every file (support_traps.h). Memory then
+// holds every layer's mask (runs of levels: 13 kB a layer for an ear shell on the SL1S), refused
+// in words beforehand when it would not fit; each layer is made once.
 
 // A stack too large to hold at once, made a range of layers at a time (layer_chunks.h):
 // make(i, progress) returns the slices of layers [first[i], first[i + 1]) in parts, a layer's
@@ -66,6 +71,7 @@ struct SliceChunks {
   std::vector<size_t> first;  // range starts, then the layer count
   double thickness = 0;
   std::function<std::vector<SlicePart>(size_t i, const Progress& progress)> make;
+  bool supports = false;  // some part is a support's
 };
 
 // The same export of the stack the ranges make up, equal to exporting it whole.
@@ -82,6 +88,7 @@ struct LayerMaker {
   size_t layers = 0;
   double thickness = 0;
   std::function<void(size_t k, std::vector<SlicePart>& parts)> make;
+  bool supports = false;  // some part is a support's
 };
 
 // The same export of the stack the maker makes, equal to exporting it whole.
