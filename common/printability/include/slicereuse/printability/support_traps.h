@@ -23,9 +23,10 @@
 // Memory: the runs of the pockets of air (regions not reaching the border) of every layer, and
 // the air of one layer. Throws Error when a layer's masks differ in size from each other or from
 // layer 0's.
-// kSupportTrapMm3: the largest trap lit. A larger one is a cavity of the part a support happens
-// to touch: the check reports it. The sweep's traps left by lighting pockets a layer at a time
-// held up to 0.53 mm³.
+// kSupportTrapMm3: the largest trap lit. On the supports' sweep of 100 parts the largest the
+// supports close held 14.6 mm³ (a chimney between packed pillars, 10 mm tall, 6.6 mm³); a cavity
+// of a part, such as a hearing-aid shell's inside, holds hundreds: a larger trap is left, and the
+// check reports it.
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -34,7 +35,7 @@
 
 namespace slicereuse {
 
-constexpr double kSupportTrapMm3 = 5;
+constexpr double kSupportTrapMm3 = 20;
 
 struct TrapLayerAir;
 
