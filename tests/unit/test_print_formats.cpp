@@ -116,7 +116,8 @@ TEST_F(PrintFormats, ASupportedStacksResinTrapsAreLitInEveryFormatHoweverItsLaye
                      },
                      supports};
     std::vector<std::string> outputs{path(supports ? "folder_supported" : "folder")};
-    for (const PrintFormat& f : print_formats()) outputs.push_back(path((supports ? "supported" : "job") + f.extension));
+    for (const PrintFormat& f : print_formats())
+      outputs.push_back(path((supports ? "supported" : "job") + f.extension));
     for (const std::string& out : outputs)
       for (bool made_where_drawn : {false, true}) {
         fs::remove_all(out);

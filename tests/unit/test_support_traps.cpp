@@ -92,6 +92,18 @@ const Rows kSolid = {
     "..............",  //
 };
 
+// A pocket of air in a ring, split by a pillar (S) into two of 9 pixels.
+const Rows kPocket = {
+    "..............",  //
+    ".############.",  //
+    ".###...S...##.",  //
+    ".###...S...##.",  //
+    ".###...S...##.",  //
+    ".############.",  //
+    ".############.",  //
+    "..............",  //
+};
+
 }  // namespace
 
 TEST(SupportTraps, APocketSupportsCloseIsLitWholeHoweverItsSizeChanges) {
@@ -158,16 +170,6 @@ TEST(SupportTraps, APocketSupportsCloseIsLitWholeHoweverItsSizeChanges) {
 }
 
 TEST(SupportTraps, AirThatDrainsStays) {
-  const Rows pocket = {
-      "..............",  //
-      ".############.",  //
-      ".###...S...##.",  //
-      ".###...S...##.",  //
-      ".###...S...##.",  //
-      ".############.",  //
-      ".############.",  //
-      "..............",  //
-  };
   const Rows open = {
       "..............",  //
       ".############.",  //
@@ -178,10 +180,11 @@ TEST(SupportTraps, AirThatDrainsStays) {
       ".############.",  //
       "..............",  //
   };
-  // Open to the top layer's air; reaching layer 0 (the plate closes it); joined to air that
-  // reaches the image border through 10 pixels.
-  for (const std::vector<Rows>& stack : {std::vector<Rows>{kSolid, pocket, pocket}, std::vector<Rows>{pocket, pocket, kSolid},
-                                         std::vector<Rows>{kSolid, pocket, open, kSolid}}) {
+  // Open to the top layer's air; reaching layer 0 (the plate closes it); joined, through all
+  // of its 9 pixels a side, to air that reaches the image border.
+  const std::vector<std::vector<Rows>> stacks = {
+      {kSolid, kPocket, kPocket}, {kPocket, kPocket, kSolid}, {kSolid, kPocket, open, kSolid}};
+  for (const std::vector<Rows>& stack : stacks) {
     const Lit l = lit(stack);
     EXPECT_EQ(l.traps, 0u);
     for (size_t k = 0; k < stack.size(); ++k) EXPECT_EQ(l.layers[k], shown(stack[k])) << "layer " << k;
@@ -222,23 +225,13 @@ TEST(SupportTraps, APartsOwnHoleStaysAndHolesTooSmallToDrainAreLit) {
 }
 
 TEST(SupportTraps, ATrapLargerThanTheLimitStays) {
-  const Rows pocket = {
-      "..............",  //
-      ".############.",  //
-      ".###...S...##.",  //
-      ".###...S...##.",  //
-      ".###...S...##.",  //
-      ".############.",  //
-      ".############.",  //
-      "..............",  //
-  };
   // Two traps, one each side of the pillar, of 9 pixels a layer.
-  const std::vector<Rows> stack = {kSolid, pocket, pocket, kSolid};
+  const std::vector<Rows> stack = {kSolid, kPocket, kPocket, kSolid};
   EXPECT_EQ(lit(stack, 18).traps, 2u);
   const Lit l = lit(stack, 17);
   EXPECT_EQ(l.traps, 0u);
   EXPECT_EQ(l.found, 2u);
-  EXPECT_EQ(l.layers[1], shown(pocket));
+  EXPECT_EQ(l.layers[1], shown(kPocket));
 }
 
 TEST(SupportTraps, MasksOfAnotherSizeAreRefused) {

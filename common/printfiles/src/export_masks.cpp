@@ -422,7 +422,8 @@ void export_folder(Stack& stack, const PrinterProfile& p, const std::string& fol
 
 // Encodes layers on all cores, a window ahead of the archive writer (write_sl1, write_goo, write_ctb), which
 // asks for them in order: range by range, the next one made when the writer first asks for one
-// of its layers (with premade masks, PremadeMasks, no layer is made: the view is empty). encode(layer, k, bytes, mask) makes the layer, layer k of the stack; with checks,
+// of its layers (with premade masks, PremadeMasks, no layer is made: the view is empty).
+// encode(layer, k, bytes, mask) makes the layer, layer k of the stack; with checks,
 // mask is not null and receives its mask as runs, which the same worker prepares for the checks
 // (prepare_layer: most of their work, in parallel); the checker takes the prepared layers in order
 // as the writer takes each layer, and the report goes to checks->done once it takes the last,
@@ -433,7 +434,10 @@ class OrderedLayers {
 
   OrderedLayers(Stack& stack, size_t& open_contours, const PrinterProfile& p, const MaskChecks* checks,
                 const PremadeMasks* premade, const Progress& progress, Encode encode)
-      : stack_(stack), open_contours_(open_contours), premade_(premade), progress_(encoding_progress(premade, progress)),
+      : stack_(stack),
+        open_contours_(open_contours),
+        premade_(premade),
+        progress_(encoding_progress(premade, progress)),
         encode_(std::move(encode)),
         window_(size_t(16) * size_t(omp_get_max_threads())), checks_(checks) {
     if (!checks) return;
@@ -548,7 +552,8 @@ void export_goo(Stack& stack, const PrinterProfile& p, const std::string& path, 
       premade_masks(stack, p, open_contours, contours_taken(summary, top_view), progress);
   OrderedLayers encoder(stack, open_contours, p, checks, premade.get(), progress,
                         [&](const LayerView& layer, size_t k, std::vector<uint8_t>& record, MaskRuns* mask) {
-                          encode_goo_layer(job, k, layer_runs(layer, k, p, summary, top_view, premade.get(), mask), record);
+                          encode_goo_layer(job, k, layer_runs(layer, k, p, summary, top_view, premade.get(), mask),
+                                           record);
                         });
   write_goo(path, job, std::ref(encoder), [&] {
     return GooSummary{summary.used_material_ml(stack.thickness()), rgb565_preview(top_view.finish(), kGooSmallPreview, kGooSmallPreview),
@@ -565,7 +570,8 @@ void export_ctb(Stack& stack, const PrinterProfile& p, const std::string& path, 
       premade_masks(stack, p, open_contours, contours_taken(summary, top_view), progress);
   OrderedLayers encoder(stack, open_contours, p, checks, premade.get(), progress,
                         [&](const LayerView& layer, size_t k, std::vector<uint8_t>& data, MaskRuns* mask) {
-                          encode_ctb_layer(job, k, layer_runs(layer, k, p, summary, top_view, premade.get(), mask), data);
+                          encode_ctb_layer(job, k, layer_runs(layer, k, p, summary, top_view, premade.get(), mask),
+                                           data);
                         });
   write_ctb(path, job, std::ref(encoder), [&] {
     return CtbSummary{summary.used_material_ml(stack.thickness()),
@@ -584,7 +590,8 @@ void export_photon_workshop(Stack& stack, const PrinterProfile& p, const std::st
       premade_masks(stack, p, open_contours, contours_taken(summary, top_view), progress);
   OrderedLayers encoder(stack, open_contours, p, checks, premade.get(), progress,
                         [&](const LayerView& layer, size_t k, std::vector<uint8_t>& record, MaskRuns* mask) {
-                          encode_pw0_layer(job, k, layer_runs(layer, k, p, summary, top_view, premade.get(), mask), record);
+                          encode_pw0_layer(job, k, layer_runs(layer, k, p, summary, top_view, premade.get(), mask),
+                                           record);
                         });
   write_photon_workshop(path, job, std::ref(encoder), [&] {
     MaskExportStats extent;  // the model's extent, moved onto the plate

@@ -18,8 +18,9 @@
 // of it through prepare_trap_layer (thread-safe: on the threads that draw the layers) and then,
 // in order from layer 0, add_layer; finish() once; then light(k, mask), on the mask layer k was
 // prepared from, sets its traps' pixels to 255 (fully lit, which every print file's levels
-// hold), a row's runs still increasing and disjoint, runs of one level side by side joined. lit(k): whether light changes layer k. traps(): the traps lit; lit_pixels(): the pixels
-// lit, specks included, over all layers.
+// hold), a row's runs still increasing and disjoint, runs of one level side by side joined.
+// lit(k): whether light changes layer k. traps(): the traps lit; lit_pixels(): the pixels lit,
+// specks included, over all layers.
 // Memory: the runs of the pockets of air (regions not reaching the border) of every layer, and
 // the air of one layer. Throws Error when a layer's masks differ in size from each other or from
 // layer 0's.
