@@ -10,8 +10,9 @@ namespace slicereuse {
 namespace {
 
 // Short enough that a run of a smooth contour hugs its chord (its stray is what every bound
-// between runs loses); groups of runs, and groups of groups, so that few are compared pairwise.
-constexpr uint32_t kRunEdges = 2;
+// between runs loses), long enough that few runs are compared (bench/RESULTS.md, "Measurements
+// behind design choices"); groups of runs, and groups of groups, so that few are compared pairwise.
+constexpr uint32_t kRunEdges = 3;
 constexpr uint32_t kGroupSize = 4;
 
 using ClipperLib::IntPoint;
