@@ -7,16 +7,16 @@
 //   4-connectivity, each with its pixels, box and whether it touches the image border; a region
 //   under 4 pixels (RequiredAreaToProcessCheck) that does not touch the border is taken as solid.
 //   Depends on the layer alone (a job computes it in parallel).
-// add_layer(air, layer): the next layer's air regions. A region joins the air of the layer below that it
-//   overlaps by at least 10 pixels (RequiredBlackPixelsToDrain), or by all of the smaller one's
-//   pixels when either has fewer (a narrow vent still connects).
+// add_layer(air, layer, piece_of): the next layer's air regions. A region joins the air of the
+//   layer below that it overlaps by at least 10 pixels (RequiredBlackPixelsToDrain), or by all of
+//   the smaller one's pixels when either has fewer (a narrow vent still connects).
 // finish(): the air of the last layer opens to the air above the part; every region closes.
 // closed(): the regions that closed (no air in the next layer continues them), each with its
 //   pixels, box, layers, the most pixels it has in one layer, and whether it reached the image
 //   border (drains), the top (open upwards) or layer 0 (sealed by the plate).
 // With pieces tracked (AirRegions(true); support_traps.cpp), each region of a layer added is a
-//   piece, numbered across the stack in order (add_layer gives each region's, or kNoPiece for a
-//   region taken as solid), and piece_set(p) names the 3D region a piece ended in: a closed
+//   piece, numbered across the stack in order (add_layer puts each region's into piece_of, or
+//   kNoPiece for a region taken as solid), and piece_set(p) names the 3D region a piece ended in: a closed
 //   region's piece_set(piece) is that of each of its pieces.
 // Memory: the runs of one layer and the regions still open, whatever the number of layers (and,
 // tracking pieces, 4 bytes a piece).
@@ -56,7 +56,7 @@ AirLayer air_layer_of(LevelRuns air);
 class AirRegions {
  public:
   explicit AirRegions(bool track_pieces = false) : track_pieces_(track_pieces) {}
-  void add_layer(AirLayer air, size_t layer, std::vector<uint32_t>* pieces = nullptr);
+  void add_layer(AirLayer air, size_t layer, std::vector<uint32_t>* piece_of = nullptr);
   uint32_t piece_set(uint32_t piece) { return pieces_.find(piece); }
   void finish();
   // The regions closed since the last call (moved out).
