@@ -83,6 +83,9 @@ TreeSections check_tree_sections(const Mesh& part, const SupportTree& tree, doub
     if (k > 0) {
       // A piece of the union rests when a piece of its overlap with the layer below lies in it
       // (one clip for the layer: a clip per piece costs the pieces times the layer below). A
+      // piece of the overlap spans every piece of the union it touches: pieces that touch along
+      // an edge stay apart in the union but join in the overlap, so each point of the overlap
+      // credits the pieces it lies in or on (one that touches a piece resting is held by it). A
       // piece in another's hole is credited with what rests in it too.
       std::vector<const ClipperLib::Path*> outer;
       std::vector<ClipperLib::IntRect> box;
@@ -90,8 +93,9 @@ TreeSections check_tree_sections(const Mesh& part, const SupportTree& tree, doub
         if (ClipperLib::Orientation(piece)) outer.push_back(&piece), box.push_back(bounds(piece));
       std::vector<bool> rests(outer.size(), false);
       for (const ClipperLib::Path& r : clip_regions(s, below, ClipperLib::ctIntersection))
-        for (size_t i = 0; i < outer.size() && !r.empty(); ++i)
-          if (!rests[i] && near_or_in(r[0], *outer[i], box[i])) rests[i] = true;
+        for (const ClipperLib::IntPoint& q : r)
+          for (size_t i = 0; i < outer.size(); ++i)
+            if (!rests[i] && near_or_in(q, *outer[i], box[i])) rests[i] = true;
       for (size_t i = 0; i < outer.size(); ++i)
         if (!rests[i] && t.support_islands++ == 0) {
           t.first_support_island_layer = k;

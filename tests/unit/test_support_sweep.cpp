@@ -61,6 +61,19 @@ TEST_F(SupportSweepTest, EveryPartOfTheSmallSweepRestsOnItsSupports) {
   }
 }
 
+// A part of the large sweep where, in one layer, a head's section touches the section of the
+// supports beside it: the union of the layer's sections keeps the two apart, their overlap with
+// the layer below joins them, and the check once found the head's section resting on nothing
+// (support_tree_checks.h now credits every piece a piece of the overlap touches).
+TEST_F(SupportSweepTest, AHeadTouchingAPieceThatRestsIsHeld) {
+  const test::SweepPart part = test::sweep_part_from_text("handle 465 2 80.5 71.5 2.35 9 6000");
+  const test::SweepFindings f = test::check_sweep_part(part, 0.05, dir, false);
+  EXPECT_EQ(f.error, "");
+  EXPECT_EQ(f.support_islands, 0u) << "the first in layer " << f.support_island_layer;
+  EXPECT_EQ(f.islands, 0u);
+  EXPECT_EQ(f.feet_in_air, 0u);
+}
+
 TEST(SupportSweep, RandomPartsSpanTheRangesAndReadBackFromTheirText) {
   double lo[3] = {1e9, 1e9, 1e9}, hi[3] = {0, 0, 0};
   for (size_t i = 0; i < 200; ++i) {

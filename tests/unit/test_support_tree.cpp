@@ -428,6 +428,20 @@ TEST(SupportTree, SphereAndHandleEnterThePartOnlyAtHeads) {
 
 // Heads joined to their neighbours' pillars by bridges, and tall pillars linked by zig-zags:
 // every bridge's section rests on the layer below and stays out of the part.
+// The shared sections check fails where a piece of the supports rests on nothing: a block
+// floating 1 mm above the ground beside a pillar is found in the layer where it begins.
+TEST(SupportTree, SectionsCheckFindsAPieceRestingOnNothing) {
+  SupportTree tree;
+  tree.mesh = test::make_box(0, 0, 0, 1, 1, 3);
+  test::append_mesh(tree.mesh, test::make_box(3, 0, 1, 4, 1, 2));
+  const Mesh part = test::make_box(0, 0, 3, 4, 1, 4);
+  const test::TreeSections t = test::check_tree_sections(part, tree, kLayer);
+  EXPECT_EQ(t.support_islands, 1u);
+  EXPECT_EQ(t.first_support_island_layer, 20u);  // the plane at 1.025 mm
+  EXPECT_NEAR(t.first_support_island_xy[0], 3.5, 1e-9);
+  EXPECT_NEAR(t.first_support_island_xy[1], 0.5, 1e-9);
+}
+
 TEST(SupportTree, BridgesAndLinksLeaveNoIslands) {
   for (const double z : {5.0, 20.0}) {
     SCOPED_TRACE(z);
