@@ -16,8 +16,10 @@ ParamList<SupportPointParams> support_point_params() {
   ParamList<SupportPointParams> l;
   l.number(&SupportPointParams::critical_angle_deg, "critical_angle", "Critical angle (degrees)",
            d.critical_angle_deg, Range::between(0, 90, "degrees"),
-           "PrusaSlicer's support_critical_angle: a surface flatter than this, from the horizontal, overhangs and "
-           "gets support points.")
+           "A surface flatter than this, from the horizontal, overhangs: flatter than 15 degrees too, it is covered "
+           "with support points; between the two, its slopes get points only while the part is held by too few (its "
+           "support force, as PrusaSlicer's slopes do). PrusaSlicer's own support_critical_angle is the angle of its "
+           "support sticks.")
       .number(&SupportPointParams::density_percent, "density", "Support points density (%)",
               100 * d.density_relative, Range::above(0, "%"),
               "PrusaSlicer's support_points_density_relative: at 100 (the default) one point holds 10 mm2 of "

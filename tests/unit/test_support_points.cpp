@@ -50,9 +50,10 @@ Slices slice(const Mesh& m) {
   return slice_layers(m, o);
 }
 
-// The parts of layer k's region (outer loop with holes) that overlap nothing of layer k-1, and
-// the region minus layer k-1's grown by the self-supporting distance (overhang) and by the far
-// reach (far): written here from the header's words, not from the library's code.
+// The parts of layer k's region (outer loop with holes) that rest on layer k-1 with less than
+// half their area, and the region minus layer k-1's grown by the larger of the self-supporting
+// and the flat distance (overhang) and by the far reach (far): written here from the header's
+// words, not from the library's code.
 struct Needs {
   std::vector<ClipperLib::Paths> islands;
   ClipperLib::Paths overhang, far;
@@ -93,10 +94,13 @@ Needs needs_of(const Slices& s, size_t k, const SupportPointOptions& o) {
     i.AddPaths(below, ClipperLib::ptClip, true);
     ClipperLib::Paths common;
     i.Execute(ClipperLib::ctIntersection, common, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-    if (common.empty()) n.islands.push_back(part);
+    if (region_area_mm2(common) < 0.5 * region_area_mm2(part)) n.islands.push_back(part);
   }
   if (k) {
-    n.overhang = minus_grown(region, below, o.self_supporting_mm(s.thickness));
+    // Flatter than 15 degrees (or than the critical angle): the slopes between are held by
+    // force, not covered.
+    const double flat = s.thickness * std::tan(75 * M_PI / 180);
+    n.overhang = minus_grown(region, below, std::max(o.self_supporting_mm(s.thickness), flat));
     n.far = minus_grown(region, below, o.far_reach_mm);
   }
   return n;
@@ -365,6 +369,54 @@ TEST(SupportPoints, WideLedgeGetsPointsAtEveryCriticalAngle) {
     EXPECT_GT(on_ledge, 0u);
     expect_covered(s, pts, o, "ledge");
   }
+}
+
+// A column raised off the plate and leaning 30 degrees from the vertical, at a critical angle
+// of 70 degrees: every layer above the first overhangs on a slope (0.029 mm a layer, beyond
+// the 0.018 mm it holds itself, short of the flat 0.187 mm), and its base's points hold its 16
+// mm2 many times over, so the slope gets none.
+TEST(SupportPoints, ALeaningColumnHeldAtItsBaseGetsNoPointsOnItsSlope) {
+  Mesh column = test::make_box(0, 0, 0, 4, 4, 5, 4);
+  for (size_t v = 0; v < column.vertices(); ++v) column.V[3 * v] += column.V[3 * v + 2] * std::tan(M_PI / 6);
+  const Slices s = slice(column);
+  SupportPointOptions o = options();
+  o.critical_angle_deg = 70;
+  const SupportPoints pts = generate_support_points(column, s, o);
+  size_t above = 0;
+  for (size_t i = 0; i < pts.size(); ++i) above += pts.layer[i] > 0;
+  std::cout << "[ support  ] leaning column: " << pts.size() << " points, " << above << " above its base\n";
+  EXPECT_GT(pts.size(), 2u);
+  EXPECT_EQ(above, 0u);
+  expect_covered(s, pts, o, "leaning column");
+}
+
+// A cone widening 45 degrees from a 0.5 mm foot to 5 mm at 4.5 mm, at a critical angle of 60
+// degrees: its foot's point holds 10 mm2, so as its sections outgrow what its points hold the
+// slope gets one more, up to its 78.5 mm2 top: 8 points (the foot's, then one on each of 7
+// layers), or 9 or 10 should a layer's shortfall ask for two.
+TEST(SupportPoints, AWideningConeGetsPointsAsItsAreaOutgrowsThem) {
+  const int segments = 96;
+  Mesh cone;
+  cone.V = {0, 0, 0};
+  for (const double r : {0.5, 5.0})
+    for (int i = 0; i < segments; ++i) {
+      const double a = 2 * M_PI * i / segments, z = r == 0.5 ? 0 : 4.5;
+      cone.V.insert(cone.V.end(), {r * std::cos(a), r * std::sin(a), z});
+    }
+  cone.V.insert(cone.V.end(), {0, 0, 4.5});
+  cone.F = test::pole_grid_faces(3, segments);
+  test::orient_outward(cone);
+  const Slices s = slice(cone);
+  SupportPointOptions o = options();
+  o.critical_angle_deg = 60;
+  const SupportPoints pts = generate_support_points(cone, s, o);
+  std::map<uint32_t, size_t> layers;
+  for (size_t i = 0; i < pts.size(); ++i) ++layers[pts.layer[i]];
+  std::cout << "[ support  ] widening cone: " << pts.size() << " points on " << layers.size() << " layers\n";
+  EXPECT_GE(pts.size(), 8u);
+  EXPECT_LE(pts.size(), 10u);
+  EXPECT_GE(layers.size(), 7u);
+  expect_covered(s, pts, o, "widening cone");
 }
 
 // Densities past 1840 %, where the support radius (0.42 mm there) falls below the lattice's

@@ -241,11 +241,16 @@ Mesh tilted(const char* shape, double tilt) {
   return part;
 }
 
+// The points at 300 % density and a critical angle of 60 degrees: enough of them, close enough,
+// that heads join their neighbours' pillars.
 SupportPoints generated(const Mesh& part) {
   SliceOptions so;
   so.thickness = kLayer;
   so.z_start = 0;
-  return generate_support_points(part, slice_layers(part, so), SupportPointOptions{});
+  SupportPointOptions o;
+  o.density_relative = 3;
+  o.critical_angle_deg = 60;
+  return generate_support_points(part, slice_layers(part, so), o);
 }
 
 // The volume of a loft between two outlines (corners paired): the prismatoid's, exact for it.

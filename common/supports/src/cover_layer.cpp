@@ -84,6 +84,54 @@ bool HeldSurface::holds(double x, double y, double z, double reach) const {
   return false;
 }
 
+double HeldSurface::distance(double x, double y, double z) const {
+  double best = INFINITY;
+  const long long cx = cell(x), cy = cell(y);
+  for (long long i = cx - 1; i <= cx + 1; ++i)
+    for (long long j = cy - 1; j <= cy + 1; ++j) {
+      const auto it = cells_.find(cell_key(i, j));
+      if (it == cells_.end()) continue;
+      for (const std::array<double, 3>& p : it->second) {
+        const double dz = z - p[2];
+        if (dz >= 0) best = std::min(best, std::sqrt((p[0] - x) * (p[0] - x) + (p[1] - y) * (p[1] - y) + dz * dz));
+      }
+    }
+  return best <= radius_ ? best : INFINITY;
+}
+
+std::vector<PlanePoint> hold_slopes(const std::vector<const ClipperLib::Paths*>& slopes,
+                                    const std::vector<std::array<double, 2>>& layer, const HeldSurface& held, double z,
+                                    const CoverReach& reach, size_t count) {
+  const double g = std::min(reach.head, reach.support) / 2;
+  const double support_reach = reach.support - (g * std::sqrt(0.5) + g / 8);
+  // Each candidate with its distance to the nearest point held or of this layer.
+  std::vector<std::array<double, 2>> candidates;
+  for (const ClipperLib::Paths* slope : slopes) {
+    const Candidates c = candidates_of(*slope, g);
+    candidates.insert(candidates.end(), c.lattice.begin(), c.lattice.end());
+    candidates.insert(candidates.end(), c.boundary.begin(), c.boundary.end());
+  }
+  std::vector<double> nearest(candidates.size());
+  for (size_t i = 0; i < candidates.size(); ++i) {
+    const std::array<double, 2>& q = candidates[i];
+    nearest[i] = held.distance(q[0], q[1], z);
+    for (const std::array<double, 2>& p : layer) nearest[i] = std::min(nearest[i], std::hypot(p[0] - q[0], p[1] - q[1]));
+  }
+  std::vector<PlanePoint> out;
+  while (out.size() < count) {
+    // The first of the farthest, so that the result is fixed.
+    size_t best = candidates.size();
+    for (size_t i = 0; i < candidates.size(); ++i)
+      if (nearest[i] > support_reach && (best == candidates.size() || nearest[i] > nearest[best])) best = i;
+    if (best == candidates.size()) break;
+    const std::array<double, 2> p = candidates[best];
+    out.push_back({p[0], p[1], uint8_t(SupportKind::Overhang)});
+    for (size_t i = 0; i < candidates.size(); ++i)
+      nearest[i] = std::min(nearest[i], std::hypot(candidates[i][0] - p[0], candidates[i][1] - p[1]));
+  }
+  return out;
+}
+
 std::vector<PlanePoint> cover_layer(const LayerAreas& areas, const std::vector<std::array<double, 2>>& existing,
                                     const HeldSurface& held, double z, const CoverReach& reach) {
   // The lattice is fine enough for the smaller reach: every reach less the margin stays

@@ -15,6 +15,11 @@
 // An island that holds no existing point first gets the lattice point nearest its centroid (or
 // its first vertex), so every island has a point of its own. Islands come first, then far
 // areas, then overhangs; the order is fixed, so the result is too.
+//
+// hold_slopes: up to count points on the slopes given (of one part; support_force.h says how
+// many), each the candidate (as above) farthest from the points held in space and this layer's
+// (layer), among those neither holds within the support reach less the margin: spread over the
+// slopes, and none where the surface is already held.
 #include <array>
 #include <cstdint>
 #include <unordered_map>
@@ -36,6 +41,8 @@ class HeldSurface {
  public:
   explicit HeldSurface(double radius) : radius_(radius) {}
   bool holds(double x, double y, double z, double reach) const;
+  // The distance to the nearest point at or below z, if within the radius; else infinity.
+  double distance(double x, double y, double z) const;
   void add(double x, double y, double z);
 
  private:
@@ -48,6 +55,10 @@ struct CoverReach {
   double head = 1;     // islands and far areas, by points of the layer
   double support = 1;  // overhangs, in space
 };
+
+std::vector<PlanePoint> hold_slopes(const std::vector<const ClipperLib::Paths*>& slopes,
+                                    const std::vector<std::array<double, 2>>& layer, const HeldSurface& held, double z,
+                                    const CoverReach& reach, size_t count);
 
 std::vector<PlanePoint> cover_layer(const LayerAreas& areas, const std::vector<std::array<double, 2>>& existing,
                                     const HeldSurface& held, double z, const CoverReach& reach);

@@ -7,10 +7,9 @@
 
 namespace slicereuse {
 
-// PrusaSlicer's support force: a point holds 10 mm^2 of overhang at 100 % density.
-constexpr double kHeldAreaMm2 = 10;
+double SupportPointOptions::held_area_mm2() const { return 10 / density_relative; }
 
-double SupportPointOptions::support_radius_mm() const { return std::sqrt(kHeldAreaMm2 / (M_PI * density_relative)); }
+double SupportPointOptions::support_radius_mm() const { return std::sqrt(held_area_mm2() / M_PI); }
 
 double SupportPointOptions::self_supporting_mm(double thickness) const {
   return thickness / std::tan(critical_angle_deg * M_PI / 180);

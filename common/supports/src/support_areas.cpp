@@ -19,6 +19,11 @@ namespace {
 // head's or a pixel's size, and it divides the polygon work several times.
 constexpr double kAreaToleranceMm = 0.005;
 
+// A part resting on less than this share of its area is an island: UVtools' check counts a
+// region an island unless a quarter of its pixels rest on lit ones below, and anti-aliased
+// edges light less than their area.
+constexpr double kRestingShare = 0.5;
+
 // The outer loops of a PolyTree, each with its holes, at every depth (an outer loop inside a
 // hole is a part of its own).
 void collect_parts(const ClipperLib::PolyNode& node, std::vector<ClipperLib::Paths>& parts) {
@@ -57,15 +62,27 @@ ClipperLib::IntRect bounds(const ClipperLib::Paths& paths) {
   return clipper.GetBounds();
 }
 
-bool overlaps(const ClipperLib::Paths& part, const ClipperLib::Paths& region, const ClipperLib::IntRect& b) {
-  const ClipperLib::IntRect a = bounds(part);
-  if (a.right < b.left || b.right < a.left || a.bottom < b.top || b.bottom < a.top) return false;
+// A Clipper coordinate in mm.
+double mm_of(ClipperLib::cInt v) { return double(v) / kRegionScale; }
+
+bool boxes_meet(const ClipperLib::IntRect& a, const ClipperLib::IntRect& b) {
+  return !(a.right < b.left || b.right < a.left || a.bottom < b.top || b.bottom < a.top);
+}
+
+// The area (mm2) where part and other overlap; 0 when they do not.
+double overlap_mm2(const ClipperLib::Paths& part, const ClipperLib::Paths& other) {
   ClipperLib::Clipper clipper;
   clipper.AddPaths(part, ClipperLib::ptSubject, true);
-  clipper.AddPaths(region, ClipperLib::ptClip, true);
+  clipper.AddPaths(other, ClipperLib::ptClip, true);
   ClipperLib::Paths common;
   clipper.Execute(ClipperLib::ctIntersection, common, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-  return !common.empty();
+  return common.empty() ? 0 : std::max(region_area_mm2(common), std::numeric_limits<double>::min());
+}
+
+ClipperLib::Paths loops_of(const std::vector<ClipperLib::Paths>& parts) {
+  ClipperLib::Paths loops;
+  for (const ClipperLib::Paths& part : parts) loops.insert(loops.end(), part.begin(), part.end());
+  return loops;
 }
 
 // The parts of region minus below grown by distance (round joins).
@@ -89,24 +106,50 @@ std::vector<ClipperLib::Paths> beyond(const ClipperLib::Paths& region, const Cli
 LayerAreas areas_of(const LayerRegion* below, const LayerRegion& region, double thickness,
                     const SupportPointOptions& o) {
   LayerAreas out;
+  out.parts = region.parts;
+  for (const ClipperLib::Paths& part : region.parts) out.part_mm2.push_back(region_area_mm2(part));
   if (!below) {
     if (o.raised) out.islands = region.parts;
     return out;
   }
-  const ClipperLib::IntRect below_bounds = bounds(below->loops);
-  for (const ClipperLib::Paths& part : region.parts)
-    if (!overlaps(part, below->loops, below_bounds)) out.islands.push_back(part);
-  const double self_supporting = o.self_supporting_mm(thickness);
-  out.overhangs = beyond(region.loops, below->loops, self_supporting);
-  // Far areas lie within the overhangs only when they reach no farther; at small critical
+  std::vector<ClipperLib::IntRect> below_bounds;
+  for (const ClipperLib::Paths& part : below->parts) below_bounds.push_back(bounds(part));
+  std::vector<double> below_mm2(below->parts.size(), -1);  // found when first linked
+  for (size_t i = 0; i < region.parts.size(); ++i) {
+    const ClipperLib::IntRect b = bounds(region.parts[i]);
+    double resting = 0;
+    for (size_t j = 0; j < below->parts.size(); ++j) {
+      if (!boxes_meet(b, below_bounds[j])) continue;
+      const double common = overlap_mm2(region.parts[i], below->parts[j]);
+      if (!(common > 0)) continue;
+      if (below_mm2[j] < 0) below_mm2[j] = region_area_mm2(below->parts[j]);
+      out.links.push_back({i, j, common, below_mm2[j]});
+      resting += common;
+    }
+    if (!(resting >= kRestingShare * out.part_mm2[i])) out.islands.push_back(region.parts[i]);
+  }
+  const double self_supporting = o.self_supporting_mm(thickness), flat = flat_reach_mm(thickness);
+  const std::vector<ClipperLib::Paths> overhanging = beyond(region.loops, below->loops, self_supporting);
+  if (flat > self_supporting && !overhanging.empty()) {
+    // The slopes: what overhangs, less what reaches beyond the flat distance.
+    out.overhangs = beyond(region.loops, below->loops, flat);
+    ClipperLib::Clipper clipper;
+    clipper.AddPaths(loops_of(overhanging), ClipperLib::ptSubject, true);
+    clipper.AddPaths(loops_of(out.overhangs), ClipperLib::ptClip, true);
+    ClipperLib::PolyTree tree;
+    clipper.Execute(ClipperLib::ctDifference, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    collect_parts(tree, out.slopes);
+    for (const ClipperLib::Paths& slope : out.slopes)
+      out.slope_part.push_back(part_at(region.parts, mm_of(slope[0][0].X), mm_of(slope[0][0].Y)));
+  } else {
+    out.overhangs = overhanging;
+  }
+  // Far areas lie within what overhangs only when they reach no farther; at small critical
   // angles a ledge wider than the far reach may not overhang at all.
-  if (!out.overhangs.empty() || o.far_reach_mm < self_supporting)
+  if (!overhanging.empty() || o.far_reach_mm < self_supporting)
     out.far = beyond(region.loops, below->loops, o.far_reach_mm);
   return out;
 }
-
-// A Clipper coordinate in mm.
-double mm_of(ClipperLib::cInt v) { return double(v) / kRegionScale; }
 
 double distance_to_parts(const std::vector<ClipperLib::Paths>& parts, double x, double y) {
   double best = std::numeric_limits<double>::infinity();
@@ -160,10 +203,18 @@ bool part_contains(const ClipperLib::Paths& part, double x, double y) {
   return true;
 }
 
+size_t part_at(const std::vector<ClipperLib::Paths>& parts, double x, double y) {
+  for (size_t i = 0; i < parts.size(); ++i)
+    if (part_contains(parts[i], x, y)) return i;
+  return parts.size();
+}
+
 double distance_to_areas(const LayerAreas& areas, double x, double y) {
   return std::min({distance_to_parts(areas.islands, x, y), distance_to_parts(areas.overhangs, x, y),
-                   distance_to_parts(areas.far, x, y)});
+                   distance_to_parts(areas.slopes, x, y), distance_to_parts(areas.far, x, y)});
 }
+
+double flat_reach_mm(double thickness) { return thickness * std::tan(75 * M_PI / 180); }
 
 LayerSpan layer_span(const Slices& s, size_t k) {
   const double h = s.thickness;

@@ -1,10 +1,17 @@
 #pragma once
 // support_areas: where each layer of a part's slicing needs support (generate_support_points.h):
-//   islands:   each connected part of layer k's region (outer loop with its holes) that does not
-//              overlap layer k-1's region; on layer 0 every part when options.raised, else none;
-//   overhangs: each connected part of region_k minus region_{k-1} grown by
-//              options.self_supporting_mm(thickness) (round joins), k > 0;
-//   far:       the same with region_{k-1} grown by options.far_reach_mm.
+//   islands:   each connected part of layer k's region (outer loop with its holes) that rests
+//              on layer k-1's region with less than half its area (UVtools' island check asks a
+//              quarter of its pixels); on layer 0 every part when options.raised, else none;
+//   overhangs: each connected part of region_k minus region_{k-1} grown by the larger of
+//              options.self_supporting_mm(thickness) and flat_reach_mm(thickness) (round joins),
+//              k > 0: the surface flatter than 15 degrees, or than the critical angle if less;
+//   slopes:    the rest of region_k beyond region_{k-1} grown by the self-supporting distance:
+//              the surface between the critical angle and 15 degrees, each with its part;
+//   far:       the part of region_k beyond region_{k-1} grown by options.far_reach_mm;
+//   parts:     the region's parts (its structures, support_force.h), their areas, and how each
+//              overlaps the parts of layer k-1 (links, with the overlap's area): a part with no
+//              link is an island.
 // Polygons in kRegionScale units (layer_region.h), outer loop first, then its holes, found on the
 // layers' contours simplified to within 5 um (simplify_paths.h).
 // Also the checks both generation and transfer make on a slicing, and the heights that tie a
@@ -21,10 +28,26 @@
 
 namespace slicereuse {
 
+// How far a layer reaches beyond the one below before its surface is flatter than 15 degrees
+// (PrusaSlicer's SupportPointGenerator covers its overhangs beyond thickness x tan 75 degrees in
+// full, and the slopes short of that only as their support force asks).
+double flat_reach_mm(double thickness);
+
+struct PartLink {
+  size_t part, below;  // a part of this layer, one of the layer below
+  double overlap_mm2;
+  double below_mm2;    // the area of the part below
+};
+
 struct LayerAreas {
   std::vector<ClipperLib::Paths> islands;
   std::vector<ClipperLib::Paths> overhangs;
+  std::vector<ClipperLib::Paths> slopes;
+  std::vector<size_t> slope_part;  // the part of parts each slope lies in
   std::vector<ClipperLib::Paths> far;
+  std::vector<ClipperLib::Paths> parts;
+  std::vector<double> part_mm2;
+  std::vector<PartLink> links;
 };
 
 // Throws Error when the slicing has no points or no encoding, or is not a slicing of mesh, or
@@ -37,9 +60,11 @@ std::vector<LayerAreas> support_areas(const Slices& slicing, const SupportPointO
 
 // Whether (x, y) (mm) lies in a part (outer loop, then holes), its boundary included.
 bool part_contains(const ClipperLib::Paths& part, double x, double y);
+// The part of parts (x, y) (mm) lies in, parts.size() when none.
+size_t part_at(const std::vector<ClipperLib::Paths>& parts, double x, double y);
 
-// Distance in mm from (x, y) (mm) to the layer's islands, overhangs and far areas (at small
-// critical angles a far area need not lie in an overhang): 0 inside one.
+// Distance in mm from (x, y) (mm) to the layer's islands, overhangs, slopes and far areas (at
+// small critical angles a far area need not lie in an overhang): 0 inside one.
 double distance_to_areas(const LayerAreas& areas, double x, double y);
 
 // The z range in which a point supports layer k: from plane_{k-1} - h to plane_k + h (plane_{-1}

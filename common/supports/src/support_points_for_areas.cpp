@@ -5,6 +5,8 @@
 
 #include "cover_layer.h"
 #include "part_columns.h"
+#include "slicereuse/regions/layer_region.h"
+#include "support_force.h"
 #include "slicereuse/mesh/fingerprint.h"
 #include "slicereuse/mesh/vec3.h"
 #include "slicereuse/util/error.h"
@@ -84,11 +86,33 @@ SupportPoints support_points_for_areas(const Mesh& mesh, const Slices& slicing, 
   const CoverReach reach{options.head_reach_mm, options.support_radius_mm()};
   HeldSurface held(std::max(reach.head, reach.support));
   const Progress cover_progress = sub_progress(progress, 0, 0.5);
+  // Each part's support force (support_force.h), layer on layer: its points' and what it inherits.
+  const double point_force = options.held_area_mm2();
+  std::vector<double> force_below;
   for (size_t k = 0; k < n; ++k) {
     const double z = slicing.layer_z[k];
-    plane[k] = cover_layer(areas[k], taken[k], held, z, reach);
-    for (const std::array<double, 2>& p : taken[k]) held.add(p[0], p[1], z);
-    for (const PlanePoint& p : plane[k]) held.add(p.x, p.y, z);
+    const LayerAreas& a = areas[k];
+    plane[k] = cover_layer(a, taken[k], held, z, reach);
+    std::vector<double> force = inherited_force(a, force_below);
+    std::vector<std::array<double, 2>> layer = taken[k];
+    for (const PlanePoint& p : plane[k]) layer.push_back({p.x, p.y});
+    for (const std::array<double, 2>& p : layer) {
+      const size_t i = part_at(a.parts, p[0], p[1]);
+      if (i < force.size()) force[i] += point_force;
+    }
+    for (size_t i = 0; i < a.parts.size(); ++i) {
+      std::vector<const ClipperLib::Paths*> slopes;
+      double slope_mm2 = 0;
+      for (size_t j = 0; j < a.slopes.size(); ++j)
+        if (a.slope_part[j] == i) slopes.push_back(&a.slopes[j]), slope_mm2 += region_area_mm2(a.slopes[j]);
+      const size_t needed = slope_points_needed(slope_mm2, a.part_mm2[i], force[i], point_force);
+      if (needed == 0) continue;
+      const std::vector<PlanePoint> added = hold_slopes(slopes, layer, held, z, reach, needed);
+      for (const PlanePoint& p : added) layer.push_back({p.x, p.y}), plane[k].push_back(p);
+      force[i] += double(added.size()) * point_force;
+    }
+    force_below = std::move(force);
+    for (const std::array<double, 2>& p : layer) held.add(p[0], p[1], z);
     if (k % 64 == 0 || k + 1 == n) report_progress(cover_progress, double(k + 1) / double(n), "support points");
   }
   // The rays meet faces below the highest layer with points only (none without points).

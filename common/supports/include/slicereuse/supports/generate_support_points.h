@@ -2,10 +2,14 @@
 // generate_support_points: the points a part needs so that every layer rests on the one below,
 // found from its slicing, in the manner of PrusaSlicer's SLA SupportPointGenerator (our own
 // code): each layer's region (layer_region.h) is compared with the layer below's:
-//   islands:   a connected region of layer k (k > 0, or k = 0 when the part is raised off the
-//              plate) that does not overlap layer k-1;
-//   overhangs: the part of layer k reaching farther than thickness / tan(critical_angle_deg)
-//              beyond layer k-1's region (PrusaSlicer's support_critical_angle);
+//   islands:   a connected part of layer k that rests on layer k-1 with less than half its area
+//              (k > 0; UVtools' island check asks a quarter of its pixels), or every part of
+//              layer 0 when the part is raised off the plate;
+//   overhangs: the part of layer k reaching farther than the larger of thickness /
+//              tan(critical_angle_deg) and thickness x tan(75 degrees) beyond layer k-1's region:
+//              the surface flatter than the critical angle and than 15 degrees;
+//   slopes:    the surface between: reaching beyond thickness / tan(critical_angle_deg), short
+//              of thickness x tan(75 degrees);
 //   far:       the part of layer k farther than far_reach_mm from layer k-1's region.
 // Points are placed on those areas (greedy cover of a lattice of candidates, then the area's
 // boundary for slivers thinner than the lattice; cover_layer.h), layer by layer from the bottom:
@@ -16,6 +20,10 @@
 //   of its own layer or, in space, within support_radius_mm() of a point of a layer below (the
 //   surface between them is held by it), as PrusaSlicer's support force spreads over the
 //   surface around a point, at any density;
+//   slopes get points only while their part is short of its support force, as PrusaSlicer's
+//   slopes do (support_force.h): a point holds held_area_mm2() of its layer's area, and a part
+//   inherits what the parts it rests on hold; each then goes where the slopes are farthest from
+//   the points held;
 // every island has a point of its own, and points of a layer stand more than about half the
 // radius apart (minimal_distance_mm yields to the cover). Each 2-D point becomes a point on
 // the mesh: the downward-facing face above it between the two layers' planes (a vertical ray),
@@ -38,8 +46,9 @@
 namespace slicereuse {
 
 struct SupportPointOptions {
-  // PrusaSlicer's support_critical_angle, from the horizontal: a surface flatter than this
-  // overhangs.
+  // From the horizontal: a surface flatter than this overhangs and may need points (on the
+  // slopes, as their support force asks; flatter than 15 degrees, covered). Not PrusaSlicer's
+  // support_critical_angle, the angle of its support sticks: its points take a fixed 55 degrees.
   double critical_angle_deg = 45;
   // PrusaSlicer's support_points_density_relative / 100: at 1, one point holds 10 mm^2 of
   // overhanging surface (PrusaSlicer's support force), support_radius_mm() = sqrt(10 / (pi d)).
@@ -53,7 +62,10 @@ struct SupportPointOptions {
   // Raised off the plate (support_object_elevation > 0): layer 0 is an island to support.
   bool raised = true;
   size_t max_points = 1000000;
-  // How far a point holds the overhanging surface around it: sqrt(10 / (pi density_relative)).
+  // How much of a layer's area a point holds (its support force, support_force.h): 10 mm2 /
+  // density_relative (PrusaSlicer 2.5's is 11.1: ours is a little denser).
+  double held_area_mm2() const;
+  // How far a point holds the overhanging surface around it: sqrt(held_area_mm2() / pi).
   double support_radius_mm() const;
   // How far a layer may reach beyond the one below without overhanging.
   double self_supporting_mm(double thickness) const;
