@@ -70,21 +70,7 @@ long long HeldSurface::cell(double v) const { return (long long)std::floor(v / r
 
 void HeldSurface::add(double x, double y, double z) { cells_[cell_key(cell(x), cell(y))].push_back({x, y, z}); }
 
-bool HeldSurface::holds(double x, double y, double z, double reach) const {
-  const long long cx = cell(x), cy = cell(y);
-  for (long long i = cx - 1; i <= cx + 1; ++i)
-    for (long long j = cy - 1; j <= cy + 1; ++j) {
-      const auto it = cells_.find(cell_key(i, j));
-      if (it == cells_.end()) continue;
-      for (const std::array<double, 3>& p : it->second) {
-        const double dx = p[0] - x, dy = p[1] - y, dz = z - p[2];
-        if (dz >= 0 && dx * dx + dy * dy + dz * dz <= reach * reach) return true;
-      }
-    }
-  return false;
-}
-
-double HeldSurface::distance(double x, double y, double z) const {
+double HeldSurface::nearest2(double x, double y, double z) const {
   double best = INFINITY;
   const long long cx = cell(x), cy = cell(y);
   for (long long i = cx - 1; i <= cx + 1; ++i)
@@ -92,11 +78,18 @@ double HeldSurface::distance(double x, double y, double z) const {
       const auto it = cells_.find(cell_key(i, j));
       if (it == cells_.end()) continue;
       for (const std::array<double, 3>& p : it->second) {
-        const double dz = z - p[2];
-        if (dz >= 0) best = std::min(best, std::sqrt((p[0] - x) * (p[0] - x) + (p[1] - y) * (p[1] - y) + dz * dz));
+        const double dx = p[0] - x, dy = p[1] - y, dz = z - p[2];
+        if (dz >= 0) best = std::min(best, dx * dx + dy * dy + dz * dz);
       }
     }
-  return best <= radius_ ? best : INFINITY;
+  return best;
+}
+
+bool HeldSurface::holds(double x, double y, double z, double reach) const { return nearest2(x, y, z) <= reach * reach; }
+
+double HeldSurface::distance(double x, double y, double z) const {
+  const double d = std::sqrt(nearest2(x, y, z));
+  return d <= radius_ ? d : INFINITY;
 }
 
 std::vector<PlanePoint> hold_slopes(const std::vector<const ClipperLib::Paths*>& slopes,

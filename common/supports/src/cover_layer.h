@@ -47,6 +47,8 @@ class HeldSurface {
 
  private:
   long long cell(double v) const;
+  // The squared distance to the nearest point at or below z in the cells around (x, y).
+  double nearest2(double x, double y, double z) const;
   double radius_;
   std::unordered_map<long long, std::vector<std::array<double, 3>>> cells_;
 };
