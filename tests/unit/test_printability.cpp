@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -109,6 +110,36 @@ TEST(LevelRuns, SetOperationsAndLabels) {
   // Row 1's [5, 8) touches row 0's runs only at corners: one region with diagonals, three without.
   EXPECT_EQ(label_runs(nonzero, false).count, 3u);
   EXPECT_EQ(label_runs(nonzero, true).count, 1u);
+}
+
+// Every level's runs are exactly the pixels at or above it, on random grey images (runs of every
+// level side by side, gaps, rows empty and full), the levels given in no order, the image's
+// edges included.
+TEST(LevelRuns, AtLevelsAreThePixelsAtOrAboveEachLevel) {
+  std::mt19937 rng(11);
+  const std::vector<uint8_t> levels{150, 2, 101, 10, 128, 255, 1};
+  for (int trial = 0; trial < 40; ++trial) {
+    const int width = 1 + int(rng() % 90), height = 1 + int(rng() % 6);
+    MaskImage image;
+    image.width = width, image.height = height;
+    image.pixels.assign(size_t(width) * size_t(height), 0);
+    for (uint8_t& p : image.pixels) {
+      const uint32_t r = rng() % 8;
+      p = r < 3 ? 0 : r < 5 ? 255 : uint8_t(rng() % 256);
+    }
+    const std::vector<LevelRuns> at = runs_at_levels(mask_runs_of(image), levels);
+    ASSERT_EQ(at.size(), levels.size());
+    for (size_t j = 0; j < levels.size(); ++j) {
+      std::vector<uint8_t> drawn(image.pixels.size(), 0);
+      for (int y = 0; y < height; ++y)
+        for (uint32_t i = at[j].row_begin[size_t(y)]; i < at[j].row_begin[size_t(y) + 1]; ++i) {
+          if (i > at[j].row_begin[size_t(y)]) EXPECT_LT(at[j].hi[i - 1], at[j].lo[i]) << "runs apart";
+          for (int x = at[j].lo[i]; x < at[j].hi[i]; ++x) drawn[size_t(y) * size_t(width) + size_t(x)] = 1;
+        }
+      for (size_t k = 0; k < drawn.size(); ++k)
+        ASSERT_EQ(drawn[k], image.pixels[k] >= levels[j] && image.pixels[k] > 0) << trial << " level " << int(levels[j]) << " pixel " << k;
+    }
+  }
 }
 
 TEST(Printability, SolidBoxHasNothing) {

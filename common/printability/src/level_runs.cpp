@@ -1,7 +1,8 @@
 #include "level_runs.h"
 
-#include <cstring>
 
+#include "slicereuse/util/error.h"
+#include "slicereuse/util/format.h"
 #include "slicereuse/util/union_find.h"
 
 namespace slicereuse {
@@ -31,17 +32,20 @@ uint64_t LevelRuns::pixels() const {
 
 std::vector<LevelRuns> runs_at_levels(const MaskRuns& mask, const std::vector<uint8_t>& levels) {
   // All levels in one pass over the mask's runs (each read once) into arrays sized for every run.
+  // A run's level passes a set of the levels (a bit each); along a row only the levels whose
+  // state changes from one run to the next open or close a run, so a run costs a few bit
+  // operations however many levels there are.
   const size_t n = mask.levels.size(), count_of_levels = levels.size();
-  const uint16_t* columns = mask.columns.data();
-  const uint8_t* run_level = mask.levels.data();
+  if (count_of_levels > 32) throw Error(format("runs at %zu levels asked, more than the 32 one pass gives", count_of_levels));
+  uint32_t passes[256];
+  for (int v = 0; v < 256; ++v) {
+    passes[v] = 0;
+    for (size_t j = 0; j < count_of_levels; ++j)
+      if (v >= levels[j]) passes[v] |= 1u << j;
+  }
   std::vector<LevelRuns> out(count_of_levels);
-  struct Out {
-    uint16_t *lo, *hi;
-    uint32_t count;
-    int open_end;  // the end of the row's open run, -1 when the row's last run was below the level
-    uint8_t level;
-  };
-  std::vector<Out> o(count_of_levels);
+  std::vector<uint16_t*> lo(count_of_levels), hi(count_of_levels);
+  std::vector<uint32_t> count(count_of_levels, 0);
   for (size_t j = 0; j < count_of_levels; ++j) {
     LevelRuns& r = out[j];
     r.width = mask.width;
@@ -49,36 +53,39 @@ std::vector<LevelRuns> runs_at_levels(const MaskRuns& mask, const std::vector<ui
     r.row_begin.resize(size_t(mask.height) + 1);
     r.lo.resize(n);
     r.hi.resize(n);
-    o[j] = {r.lo.data(), r.hi.data(), 0, -1, levels[j]};
+    lo[j] = r.lo.data(), hi[j] = r.hi.data();
   }
-  for (int y = 0; y < mask.height; ++y) {
-    for (size_t j = 0; j < count_of_levels; ++j) {
-      out[j].row_begin[size_t(y)] = o[j].count;
-      o[j].open_end = -1;
+  const uint16_t* columns = mask.columns.data();
+  const uint8_t* run_level = mask.levels.data();
+  // Closes the runs of the levels in bits at column end.
+  const auto close = [&](uint32_t bits, uint16_t end) {
+    for (; bits; bits &= bits - 1) {
+      const int j = __builtin_ctz(bits);
+      hi[size_t(j)][count[size_t(j)] - 1] = end;
     }
+  };
+  for (int y = 0; y < mask.height; ++y) {
+    for (size_t j = 0; j < count_of_levels; ++j) out[j].row_begin[size_t(y)] = count[j];
+    uint32_t open = 0;  // the levels whose run is still open, up to open_end
+    uint16_t open_end = 0;
     for (uint32_t i = mask.row_begin[size_t(y)]; i < mask.row_begin[size_t(y) + 1]; ++i) {
       const uint16_t a = columns[2 * size_t(i)], b = columns[2 * size_t(i) + 1];
-      const uint8_t v = run_level[i];
-      for (Out& q : o) {
-        if (v < q.level) {
-          q.open_end = -1;
-          continue;
-        }
-        if (q.open_end == a) {
-          q.hi[q.count - 1] = b;  // runs of different levels side by side: one run here
-        } else {
-          q.lo[q.count] = a;
-          q.hi[q.count++] = b;
-        }
-        q.open_end = b;
+      const uint32_t pass = passes[run_level[i]];
+      if (a != open_end) close(open, open_end), open = 0;  // a gap closes every open run
+      close(open & ~pass, a);
+      for (uint32_t bits = pass & ~open; bits; bits &= bits - 1) {
+        const size_t j = size_t(__builtin_ctz(bits));
+        lo[j][count[j]++] = a;
       }
+      open = pass, open_end = b;
     }
+    close(open, open_end);
   }
   for (size_t j = 0; j < count_of_levels; ++j) {
     LevelRuns& r = out[j];
-    r.row_begin[size_t(mask.height)] = o[j].count;
-    r.lo.resize(o[j].count);
-    r.hi.resize(o[j].count);
+    r.row_begin[size_t(mask.height)] = count[j];
+    r.lo.resize(count[j]);
+    r.hi.resize(count[j]);
   }
   return out;
 }

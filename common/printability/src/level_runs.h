@@ -5,8 +5,9 @@
 //
 // PixelBox: the box [x0, x1) x [y0, y1) of the pixels added to it (runs of a row, other boxes);
 //   empty until the first.
-// runs_at_levels: a mask's runs -> for each of levels, the runs of its pixels >= that level
-//   (runs of different levels side by side join), all levels in one pass over the mask's runs.
+// runs_at_levels: a mask's runs -> for each of levels (at most 32, in any order), the runs of its
+//   pixels >= that level (runs of different levels side by side join), all levels in one pass
+//   over the mask's runs.
 // box_of: the box of the runs' pixels.
 // complement_runs: the runs of the pixels in no run of runs (same width and height).
 // subtract_runs: the pixels of a not in b; intersect_runs: the pixels in both.
