@@ -1,6 +1,5 @@
 #include "level_runs.h"
 
-
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
 #include "slicereuse/util/union_find.h"

@@ -10,8 +10,7 @@
 //              the surface between the critical angle and 15 degrees, each with its part;
 //   far:       the part of region_k beyond region_{k-1} grown by options.far_reach_mm;
 //   parts:     the region's parts (its structures, support_force.h), their areas, and how each
-//              overlaps the parts of layer k-1 (links, with the overlap's area): a part with no
-//              link is an island.
+//              overlaps the parts of layer k-1 (links, with the overlap's area).
 // Polygons in kRegionScale units (layer_region.h), outer loop first, then its holes, found on the
 // layers' contours simplified to within 5 um (simplify_paths.h).
 // Also the checks both generation and transfer make on a slicing, and the heights that tie a

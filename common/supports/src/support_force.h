@@ -1,8 +1,9 @@
 #pragma once
 // support_force: how much of each part of a layer (its structures, support_areas.h) the support
 // points hold, in mm2 of its area, after PrusaSlicer's SupportPointGenerator (our own code): the
-// peel pulls on a layer's whole area, a point holds point_force of it (SupportPointOptions::held_area_mm2),
-// and a part holds what its own points hold plus what it inherits from the parts below it.
+// peel pulls on a layer's whole area, a point holds point_force of it
+// (SupportPointOptions::held_area_mm2), and a part holds what its own points hold plus what it
+// inherits from the parts below it.
 //
 // inherited_force: areas (one layer's), force_below (per part of the layer below, the force each
 //   ended with) -> per part of this layer, what it inherits: each part below shares its force

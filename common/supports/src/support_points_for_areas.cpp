@@ -5,13 +5,13 @@
 
 #include "cover_layer.h"
 #include "part_columns.h"
-#include "slicereuse/regions/layer_region.h"
-#include "support_force.h"
 #include "slicereuse/mesh/fingerprint.h"
 #include "slicereuse/mesh/vec3.h"
+#include "slicereuse/regions/layer_region.h"
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
 #include "slicereuse/util/parallel_blocks.h"
+#include "support_force.h"
 
 namespace slicereuse {
 namespace {
@@ -100,14 +100,17 @@ SupportPoints support_points_for_areas(const Mesh& mesh, const Slices& slicing, 
       const size_t i = part_at(a.parts, p[0], p[1]);
       if (i < force.size()) force[i] += point_force;
     }
+    // Each part's slopes and their area.
+    std::vector<std::vector<const ClipperLib::Paths*>> slopes(a.parts.size());
+    std::vector<double> slope_mm2(a.parts.size(), 0);
+    for (size_t j = 0; j < a.slopes.size(); ++j) {
+      const size_t i = a.slope_part[j];
+      if (i < a.parts.size()) slopes[i].push_back(&a.slopes[j]), slope_mm2[i] += region_area_mm2(a.slopes[j]);
+    }
     for (size_t i = 0; i < a.parts.size(); ++i) {
-      std::vector<const ClipperLib::Paths*> slopes;
-      double slope_mm2 = 0;
-      for (size_t j = 0; j < a.slopes.size(); ++j)
-        if (a.slope_part[j] == i) slopes.push_back(&a.slopes[j]), slope_mm2 += region_area_mm2(a.slopes[j]);
-      const size_t needed = slope_points_needed(slope_mm2, a.part_mm2[i], force[i], point_force);
+      const size_t needed = slope_points_needed(slope_mm2[i], a.part_mm2[i], force[i], point_force);
       if (needed == 0) continue;
-      const std::vector<PlanePoint> added = hold_slopes(slopes, layer, held, z, reach, needed);
+      const std::vector<PlanePoint> added = hold_slopes(slopes[i], layer, held, z, reach, needed);
       for (const PlanePoint& p : added) layer.push_back({p.x, p.y}), plane[k].push_back(p);
       force[i] += double(added.size()) * point_force;
     }

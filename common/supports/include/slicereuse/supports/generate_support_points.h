@@ -50,8 +50,8 @@ struct SupportPointOptions {
   // slopes, as their support force asks; flatter than 15 degrees, covered). Not PrusaSlicer's
   // support_critical_angle, the angle of its support sticks: its points take a fixed 55 degrees.
   double critical_angle_deg = 45;
-  // PrusaSlicer's support_points_density_relative / 100: at 1, one point holds 10 mm^2 of
-  // overhanging surface (PrusaSlicer's support force), support_radius_mm() = sqrt(10 / (pi d)).
+  // PrusaSlicer's support_points_density_relative / 100: at 1, one point holds 10 mm^2
+  // (held_area_mm2), support_radius_mm() = sqrt(10 / (pi d)).
   double density_relative = 1.0;
   // PrusaSlicer's support_points_minimal_distance: how near a point added on a member may be
   // to a dropped one to count as that point moved (transfer_support_points.h).
