@@ -106,7 +106,6 @@ std::vector<ClipperLib::Paths> beyond(const ClipperLib::Paths& region, const Cli
 LayerAreas areas_of(const LayerRegion* below, const LayerRegion& region, double thickness,
                     const SupportPointOptions& o) {
   LayerAreas out;
-  out.parts = region.parts;
   for (const ClipperLib::Paths& part : region.parts) out.part_mm2.push_back(region_area_mm2(part));
   if (!below) {
     if (o.raised) out.islands = region.parts;
@@ -192,6 +191,8 @@ std::vector<LayerAreas> support_areas(const Slices& slicing, const SupportPointO
   std::vector<LayerAreas> areas(n);
   parallel_blocks(n, [&](size_t k) { areas[k] = areas_of(k ? &regions[k - 1] : nullptr, regions[k], slicing.thickness, options); },
                   sub_progress(progress, 0.5, 1), "support areas");
+  // Each region, no longer needed as the layer below, gives its parts to its areas.
+  for (size_t k = 0; k < n; ++k) areas[k].parts = std::move(regions[k].parts);
   return areas;
 }
 
