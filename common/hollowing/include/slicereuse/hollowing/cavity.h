@@ -19,8 +19,10 @@
 // and one of D at the same heights). D = 0 gives erode(t) itself.
 // Offsets are ClipperOffset's (round joins within kCavityArcToleranceMm, on Clipper's 1 nm grid).
 // The layers are first simplified to within kCavitySimplifyMm and eroded by as much more as they
-// strayed: the cavity lies inside the exact one (walls at least t), within that distance of it
-// (0 when only collinear vertices go, as on a box), for a fraction of the points.
+// strayed, and a term that comes within kCavityProofSlackMm of binding is left out of the
+// dilation, or taken that much deeper into the erosion (but for the layer's own): the cavity lies
+// inside the exact one (walls at least t), within the two distances of it (0 on a prism, whose
+// cavity is its layers offset by the wall), for a fraction of the points and the time.
 // Cost: per layer, the offsets of the few layers that bound its cavity, and proofs that the
 // others do not (cavity.cpp); a prism costs one offset a layer whatever t.
 // Throws Error for a wall or closing distance negative or not finite, or a thickness not
@@ -37,11 +39,15 @@ namespace slicereuse {
 // 2 mm; hollowing itself is off by default, as here.
 constexpr double kPrusaHollowingWallMm = 3;
 constexpr double kPrusaHollowingClosingMm = 2;
-// How far a round offset's chords may stray from the true arc (0.1 um, a 500th of a 50 um pixel).
-constexpr double kCavityArcToleranceMm = 1e-4;
+// How far a round offset's chords may stray from the true arc (1 um, a 50th of a 50 um pixel;
+// 0.1 um gave 1.4 times the points and cost 8 % more, bench/RESULTS.md).
+constexpr double kCavityArcToleranceMm = 1e-3;
 // How far the layers' simplified contours may stray before eroding (5 um, a tenth of a 50 um
 // pixel): a dense mesh's contours then cost what a coarse one's do.
 constexpr double kCavitySimplifyMm = 5e-3;
+// How near a term of the erosion or dilation may come to binding and still be left out (10 um, a
+// fifth of a 50 um pixel; see above): on a sphere, 1.4x to 2.3x faster (bench/RESULTS.md).
+constexpr double kCavityProofSlackMm = 1e-2;
 
 struct HollowingOptions {
   double wall_mm = 0;                              // 0: solid, no cavity
