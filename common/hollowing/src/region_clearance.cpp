@@ -9,10 +9,10 @@
 namespace slicereuse {
 namespace {
 
-// Short enough that a run of a smooth contour hugs its chord (its stray is what every bound
+// Runs short enough that a run of a smooth contour hugs its chord (its stray is what every bound
 // between runs loses), long enough that few runs are compared (bench/RESULTS.md, "Measurements
 // behind design choices"); groups of runs, and groups of groups, so that few are compared pairwise.
-constexpr uint32_t kRunEdges = 3;
+constexpr uint32_t kRunEdges = IndexedRegion::kRunEdges;
 constexpr uint32_t kGroupSize = 4;
 
 using ClipperLib::IntPoint;
@@ -55,6 +55,21 @@ bool chords_cross(const IndexedRegion::Run& r, const IndexedRegion::Run& s) {
   return ((o1 > 0) != (o2 > 0)) && ((o3 > 0) != (o4 > 0));
 }
 
+// The least squared distance from a point of run r to an edge of run s (RunPoints'
+// padding repeats points and adds edges of no length: nothing nearer than the run's own).
+double nearest2(const IndexedRegion::RunPoints& r, const IndexedRegion::RunPoints& s) {
+  double least = INFINITY;
+  for (uint32_t i = 0; i <= kRunEdges; ++i)
+    for (uint32_t j = 0; j < kRunEdges; ++j) {
+      const double qx = r.px[i] - s.px[j], qy = r.py[i] - s.py[j];
+      double t = qx * s.ux[j] + qy * s.uy[j];
+      t = t < 0 ? 0 : (t > 1 ? 1 : t);
+      const double ex = qx - t * (s.px[j + 1] - s.px[j]), ey = qy - t * (s.py[j + 1] - s.py[j]);
+      least = std::min(least, ex * ex + ey * ey);
+    }
+  return least;
+}
+
 // Consecutive items (runs or groups) kGroupSize at a time, with their boxes.
 template <class Item>
 std::vector<IndexedRegion::Group> grouped(const std::vector<Item>& items) {
@@ -92,6 +107,16 @@ IndexedRegion index_region(const ClipperLib::Paths& region) {
       }
       out.runs.push_back({l, first, edges, double(a.X), double(a.Y), double(b.X), double(b.Y), std::sqrt(stray2),
                           double(x0), double(y0), double(x1), double(y1)});
+      IndexedRegion::RunPoints run;
+      for (uint32_t i = 0; i <= kRunEdges; ++i) {
+        const IntPoint& p = loop[(first + std::min(i, edges)) % n];
+        run.px[i] = double(p.X), run.py[i] = double(p.Y);
+      }
+      for (uint32_t i = 0; i < kRunEdges; ++i) {
+        const double dx = run.px[i + 1] - run.px[i], dy = run.py[i + 1] - run.py[i], len2 = dx * dx + dy * dy;
+        run.ux[i] = len2 > 0 ? dx / len2 : 0, run.uy[i] = len2 > 0 ? dy / len2 : 0;
+      }
+      out.points.push_back(run);
     }
   }
   out.groups = grouped(out.runs);
@@ -103,52 +128,48 @@ bool boundaries_apart(const IndexedRegion& inner, const IndexedRegion& outer, do
   const ClipperLib::Paths& in = *inner.region;
   const ClipperLib::Paths& out = *outer.region;
   // Boxes or capsules this far apart or more hold nothing nearer than distance, nor any crossing.
-  const auto apart = [distance](double gap) { return gap >= distance && gap > 0; };
-  const auto box_gap = [](const auto& r, const auto& s) {
-    const double gx = std::max({0.0, r.x0 - s.x1, s.x0 - r.x1}), gy = std::max({0.0, r.y0 - s.y1, s.y0 - r.y1});
-    return std::sqrt(gx * gx + gy * gy);
-  };
   const double distance2 = distance * distance;
+  const auto apart = [distance](double gap) { return gap >= distance && gap > 0; };
+  const auto boxes_apart = [distance2](const auto& r, const auto& s) {
+    const double gx = std::max({0.0, r.x0 - s.x1, s.x0 - r.x1}), gy = std::max({0.0, r.y0 - s.y1, s.y0 - r.y1});
+    const double gap2 = gx * gx + gy * gy;
+    return gap2 >= distance2 && gap2 > 0;
+  };
   // Whether two runs come nearer than distance, or meet.
-  const auto too_near = [&](const IndexedRegion::Run& r, const IndexedRegion::Run& s) {
-    if (apart(box_gap(r, s))) return false;
+  const auto too_near = [&](uint32_t ri, uint32_t si) {
+    const IndexedRegion::Run& r = inner.runs[ri];
+    const IndexedRegion::Run& s = outer.runs[si];
+    if (boxes_apart(r, s)) return false;
     const double chords =
         chords_cross(r, s) ? 0 : std::sqrt(segments_distance2(r.ax, r.ay, r.bx, r.by, s.ax, s.ay, s.bx, s.by));
     const double bound = chords - r.stray - s.stray;
     if (apart(bound)) return false;
-    const bool may_meet = bound <= 0;  // capsules apart hold no crossing
-    const ClipperLib::Path& p = in[r.loop];
-    const ClipperLib::Path& q = out[s.loop];
-    for (uint32_t i = r.first; i < r.first + r.edges; ++i) {
-      const IntPoint& a = p[i];
-      const IntPoint& b = p[(i + 1) % p.size()];
-      for (uint32_t j = s.first; j < s.first + s.edges; ++j) {
-        const IntPoint& c = q[j];
-        const IntPoint& d = q[(j + 1) % q.size()];
-        if (may_meet && segments_meet(a, b, c, d)) return true;
-        const double gx = double(std::max({ClipperLib::cInt(0), std::min(a.X, b.X) - std::max(c.X, d.X),
-                                           std::min(c.X, d.X) - std::max(a.X, b.X)}));
-        const double gy = double(std::max({ClipperLib::cInt(0), std::min(a.Y, b.Y) - std::max(c.Y, d.Y),
-                                           std::min(c.Y, d.Y) - std::max(a.Y, b.Y)}));
-        if (gx * gx + gy * gy >= distance2) continue;
-        if (point_segment2(a, c, d) < distance2 || point_segment2(b, c, d) < distance2 ||
-            point_segment2(c, a, b) < distance2 || point_segment2(d, a, b) < distance2)
-          return true;
-      }
+    if (bound <= 0) {  // capsules apart hold no crossing
+      const ClipperLib::Path& p = in[r.loop];
+      const ClipperLib::Path& q = out[s.loop];
+      for (uint32_t i = r.first; i < r.first + r.edges; ++i)
+        for (uint32_t j = s.first; j < s.first + s.edges; ++j)
+          if (segments_meet(p[i], p[(i + 1) % p.size()], q[j], q[(j + 1) % q.size()])) return true;
     }
-    return false;
+    // Segments that do not meet are as near as an end of one to the other: every point of each
+    // run against every edge of the other, all at once.
+    const IndexedRegion::RunPoints& rp = inner.points[ri];
+    const IndexedRegion::RunPoints& sp = outer.points[si];
+    return std::min(nearest2(rp, sp), nearest2(sp, rp)) < distance2;
   };
   for (const IndexedRegion::Group& gg : inner.supergroups)
     for (const IndexedRegion::Group& hh : outer.supergroups) {
-      if (apart(box_gap(gg, hh))) continue;
+      if (boxes_apart(gg, hh)) continue;
       for (uint32_t gi = gg.first; gi < gg.first + gg.count; ++gi)
         for (uint32_t hi = hh.first; hi < hh.first + hh.count; ++hi) {
           const IndexedRegion::Group& g = inner.groups[gi];
           const IndexedRegion::Group& h = outer.groups[hi];
-          if (apart(box_gap(g, h))) continue;
-          for (uint32_t ri = g.first; ri < g.first + g.count; ++ri)
+          if (boxes_apart(g, h)) continue;
+          for (uint32_t ri = g.first; ri < g.first + g.count; ++ri) {
+            if (boxes_apart(inner.runs[ri], h)) continue;
             for (uint32_t si = h.first; si < h.first + h.count; ++si)
-              if (too_near(inner.runs[ri], outer.runs[si])) return false;
+              if (too_near(ri, si)) return false;
+          }
         }
     }
   return true;

@@ -25,11 +25,18 @@
 namespace slicereuse {
 
 struct IndexedRegion {
+  static constexpr uint32_t kRunEdges = 3;  // edges a run holds (the last of a loop may hold fewer)
   struct Run {
     uint32_t loop, first, edges;  // edges first .. first + edges - 1 of loop
     double ax, ay, bx, by;        // the chord
     double stray;                 // the farthest point from it
     double x0, y0, x1, y1;        // its points' bounding box
+  };
+  // A run's points as doubles, and each edge's direction over its squared length (0 for none),
+  // padded to kRunEdges edges with the last point: compared with a fixed count, no branches.
+  // Apart from Run, whose boxes and capsules most comparisons end at.
+  struct RunPoints {
+    double px[kRunEdges + 1], py[kRunEdges + 1], ux[kRunEdges], uy[kRunEdges];
   };
   struct Group {
     uint32_t first, count;     // runs (or groups) first .. first + count - 1
@@ -37,6 +44,7 @@ struct IndexedRegion {
   };
   const ClipperLib::Paths* region = nullptr;
   std::vector<Run> runs;
+  std::vector<RunPoints> points;  // of each run
   std::vector<Group> groups;       // of runs
   std::vector<Group> supergroups;  // of groups
 };
