@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <set>
 #include <string>
 #include <tuple>
@@ -12,6 +13,7 @@
 
 #include "error_of.h"
 #include "family.h"
+#include "region_clearance.h"
 #include "shapes.h"
 #include "slicereuse/hollowing/cavity.h"
 #include "slicereuse/hollowing/drain_holes.h"
@@ -20,6 +22,7 @@
 #include "slicereuse/regions/layer_region.h"
 #include "slicereuse/regions/layers_mesh.h"
 #include "slicereuse/regions/region_triangles.h"
+#include "slicereuse/regions/segment_distance.h"
 #include "slicereuse/slicing/slice_layers.h"
 
 namespace slicereuse {
@@ -457,6 +460,70 @@ TEST(Cavity, RefusesBadOptionsInWords) {
             "the hollowing closing distance is inf mm; it must be a finite, non-negative number");
   o.closing_mm = 0;
   EXPECT_EQ(test::error_of([&] { cavity_regions(box, 0, o); }), "hollowing needs a positive layer thickness, not 0 mm");
+}
+
+// The nearest two segments come: 0 when they meet (exact integer orientations), else the
+// nearest an end of one comes to the other.
+double segments_apart(const ClipperLib::IntPoint& a, const ClipperLib::IntPoint& b, const ClipperLib::IntPoint& c,
+                      const ClipperLib::IntPoint& d) {
+  const auto side = [](const ClipperLib::IntPoint& p, const ClipperLib::IntPoint& q, const ClipperLib::IntPoint& r) {
+    const __int128 x = __int128(q.X - p.X) * (r.Y - p.Y) - __int128(q.Y - p.Y) * (r.X - p.X);
+    return (x > 0) - (x < 0);
+  };
+  const auto within = [](const ClipperLib::IntPoint& p, const ClipperLib::IntPoint& q, const ClipperLib::IntPoint& r) {
+    return std::min(p.X, q.X) <= r.X && r.X <= std::max(p.X, q.X) && std::min(p.Y, q.Y) <= r.Y && r.Y <= std::max(p.Y, q.Y);
+  };
+  const int o1 = side(a, b, c), o2 = side(a, b, d), o3 = side(c, d, a), o4 = side(c, d, b);
+  if ((o1 != o2 && o3 != o4) || (o1 == 0 && within(a, b, c)) || (o2 == 0 && within(a, b, d)) ||
+      (o3 == 0 && within(c, d, a)) || (o4 == 0 && within(c, d, b)))
+    return 0;
+  const auto d2 = [](const ClipperLib::IntPoint& p, const ClipperLib::IntPoint& q, const ClipperLib::IntPoint& r) {
+    return segment_distance2(double(p.X), double(p.Y), double(q.X), double(q.Y), double(r.X), double(r.Y));
+  };
+  return std::sqrt(std::min({d2(a, c, d), d2(b, c, d), d2(c, a, b), d2(d, a, b)}));
+}
+
+// boundaries_apart (region_clearance.h), which bounds runs of edges by boxes and capsules before
+// comparing their points, against every pair of edges of random loops (crossing, touching, of
+// one to many edges), at distances around the nearest pair's.
+TEST(RegionClearance, BoundariesApartAgreesWithEveryPairOfEdges) {
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<int> loops(1, 3), points(1, 40), coordinate(0, 4000);
+  std::uniform_real_distribution<double> scale(0.5, 1.5);
+  size_t apart = 0, near = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    Paths a, b;
+    for (Paths* region : {&a, &b})
+      for (int l = loops(rng); l > 0; --l) {
+        // A wobbly circle, so that loops lie near each other along their length as a cavity's do.
+        const double cx = coordinate(rng), cy = coordinate(rng), r = 50 + coordinate(rng) / 8.0;
+        const int n = points(rng);
+        ClipperLib::Path loop;
+        for (int i = 0; i < n; ++i) {
+          const double t = 2 * M_PI * i / n, w = r * scale(rng);
+          loop.push_back({ClipperLib::cInt(std::llround(cx + w * std::cos(t))), ClipperLib::cInt(std::llround(cy + w * std::sin(t)))});
+        }
+        region->push_back(loop);
+      }
+    double nearest = INFINITY;
+    for (const ClipperLib::Path& p : a)
+      for (size_t i = 0; i < p.size(); ++i)
+        for (const ClipperLib::Path& q : b)
+          for (size_t j = 0; j < q.size(); ++j)
+            nearest = std::min(nearest, segments_apart(p[i], p[(i + 1) % p.size()], q[j], q[(j + 1) % q.size()]));
+    const IndexedRegion ia = index_region(a), ib = index_region(b);
+    for (const double distance : {0.0, nearest * 0.5, nearest * 0.999, nearest * 1.001, nearest * 2, nearest + 300}) {
+      SCOPED_TRACE("trial " + std::to_string(trial) + ", distance " + std::to_string(distance) + ", nearest " +
+                   std::to_string(nearest));
+      const bool expected = distance == 0 ? nearest > 0 : nearest >= distance;
+      EXPECT_EQ(boundaries_apart(ia, ib, distance), expected);
+      EXPECT_EQ(boundaries_apart(ib, ia, distance), expected);
+      (expected ? apart : near) += 1;
+    }
+  }
+  // Both answers, many times over.
+  EXPECT_GT(apart, 500u);
+  EXPECT_GT(near, 500u);
 }
 
 }  // namespace
