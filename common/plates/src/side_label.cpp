@@ -9,6 +9,7 @@
 #include "slicereuse/plates/base_label.h"
 #include "slicereuse/plates/placement.h"
 #include "slicereuse/regions/clip_regions.h"
+#include "slicereuse/regions/clip_to_box.h"
 #include "slicereuse/regions/label_region.h"
 #include "slicereuse/regions/layer_region.h"
 #include "slicereuse/util/format.h"
@@ -73,7 +74,26 @@ struct LayerFace {
 Paths over(const Paths& region, cInt a, cInt b, cInt w_max = std::numeric_limits<cInt>::max()) {
   if (region.empty()) return {};
   const ClipperLib::IntRect all = bounds(region);
-  return clip_regions(region, {rect(a, all.top - 1, b, std::min(all.bottom + 1, w_max))}, ClipperLib::ctIntersection);
+  return clip_to_box(region, {a, all.top - 1, b, std::min(all.bottom + 1, w_max)});
+}
+
+// The least w of a region over a <= u <= b (rounded down), none when it has nothing there: the
+// least lies on its boundary (it is bounded), at a vertex over the strip or where an edge
+// crosses the strip's sides. What over's box would give, with no clip.
+std::optional<cInt> least_w_over(const Paths& region, cInt a, cInt b) {
+  std::optional<double> least;
+  const auto take = [&](double w) { least = least ? std::min(*least, w) : w; };
+  for (const Path& path : region)
+    for (size_t i = 0; i < path.size(); ++i) {
+      const IntPoint& p = path[i];
+      const IntPoint& q = path[(i + 1) % path.size()];
+      if (p.X >= a && p.X <= b) take(double(p.Y));
+      for (const cInt side : {a, b})
+        if ((p.X < side && q.X > side) || (p.X > side && q.X < side))
+          take(double(p.Y) + double(q.Y - p.Y) * (double(side - p.X) / double(q.X - p.X)));
+    }
+  if (!least) return std::nullopt;
+  return cInt(std::floor(*least));
 }
 
 LayerFace layer_face(const Paths& region, cInt a, cInt b, cInt reach) {
@@ -209,8 +229,8 @@ SideLabel place_side_label(std::vector<Paths> regions, const std::vector<double>
       L,
       [&](size_t k) {
         Paths& r = regions[k];
-        const Paths inner = over(r, u_centre - narrowest, u_centre + narrowest);
-        r = inner.empty() ? Paths{} : over(r, u_centre - widest, u_centre + widest, bounds(inner).top + reach);
+        const std::optional<cInt> top = least_w_over(r, u_centre - narrowest, u_centre + narrowest);
+        r = top ? over(r, u_centre - widest, u_centre + widest, *top + reach) : Paths{};
       },
       {}, "labels");
   const double bottom = layer_z[0] - 0.5 * thickness_mm;
