@@ -21,8 +21,9 @@
 // The layers are first simplified to within kCavitySimplifyMm and eroded by as much more as they
 // strayed, and a term that comes within kCavityProofSlackMm of binding is left out of the
 // dilation, or taken that much deeper into the erosion (but for the layer's own): the cavity lies
-// inside the exact one (walls at least t), within the two distances of it (0 on a prism, whose
-// cavity is its layers offset by the wall), for a fraction of the points and the time.
+// inside the exact one (walls at least t) and within the simplification and the slack of it
+// (the slack twice with a closing; 0 on a prism, whose cavity is its layers offset by the wall),
+// for a fraction of the points and the time.
 // Cost: per layer, the offsets of the few layers that bound its cavity, and proofs that the
 // others do not (cavity.cpp); a prism costs one offset a layer whatever t.
 // Throws Error for a wall or closing distance negative or not finite, or a thickness not
@@ -40,7 +41,7 @@ namespace slicereuse {
 constexpr double kPrusaHollowingWallMm = 3;
 constexpr double kPrusaHollowingClosingMm = 2;
 // How far a round offset's chords may stray from the true arc (1 um, a 50th of a 50 um pixel;
-// 0.1 um gave 1.4 times the points and cost 8 % more, bench/RESULTS.md).
+// 0.1 um gave 1.4 times the points and cost 7-11 % more, bench/RESULTS.md).
 constexpr double kCavityArcToleranceMm = 1e-3;
 // How far the layers' simplified contours may stray before eroding (5 um, a tenth of a 50 um
 // pixel): a dense mesh's contours then cost what a coarse one's do.
