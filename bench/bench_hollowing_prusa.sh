@@ -6,6 +6,8 @@
 # system, medians). Then bench_hollowing (one thread) gives what hollowing, draining and
 # labelling add to our job. Prints both and the ratio.
 # Needs PrusaSlicer (Debian's prusa-slicer, which scripts/setup installs) and build/2020.
+# bench/RESULTS.md runs it with TMPDIR=/dev/shm: masks written to a disk's folder just emptied
+# cost the job a varying 0.1-0.8 s of creating files ("Hollowing" there).
 #   bench/bench_hollowing_prusa.sh [--faces N] [--runs R]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -17,12 +19,8 @@ while [ $# -gt 0 ]; do
     *) echo "usage: bench/bench_hollowing_prusa.sh [--faces N] [--runs R]" >&2; exit 2 ;;
   esac
 done
-command -v prusa-slicer >/dev/null || { echo "prusa-slicer is not installed (apt-get install prusa-slicer)" >&2; exit 1; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-"$root/build/2020/tools/gen_family" --shape sphere --faces "$faces" --members 1 --height 35 --seed 1 --out . >/dev/null
-"$root/scripts/meshlabserver" -i member_000.ply -o part.stl >/dev/null 2>&1
+. "$root/bench/prusaslicer_part.sh"
+prusaslicer_part sphere "$faces" 35
 
 cpu() {  # median CPU seconds (user + system) of running "$@" $runs times
   for _ in $(seq "$runs"); do

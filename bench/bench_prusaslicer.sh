@@ -18,12 +18,8 @@ while [ $# -gt 0 ]; do
     *) echo "usage: bench/bench_prusaslicer.sh [--faces N] [--thickness MM] [--runs R]" >&2; exit 2 ;;
   esac
 done
-command -v prusa-slicer >/dev/null || { echo "prusa-slicer is not installed (apt-get install prusa-slicer)" >&2; exit 1; }
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-"$root/build/2020/tools/gen_family" --shape arch --faces "$faces" --members 1 --height 14.484 --seed 1 --out . >/dev/null
-"$root/scripts/meshlabserver" -i member_000.ply -o part.stl >/dev/null 2>&1
+. "$root/bench/prusaslicer_part.sh"
+prusaslicer_part arch "$faces" 14.484
 
 # One filter: Make Print Job, slicing directly (no encoding file) into an .sl1 archive in memory.
 sed -e "s/name=\"layer_thickness\" value=\"[^\"]*\"/name=\"layer_thickness\" value=\"$thickness\"/" \

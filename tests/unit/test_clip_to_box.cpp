@@ -1,5 +1,6 @@
 // clip_to_box (regions/clip_to_box.h): the same region as Clipper's intersection with the box,
-// on random loops (crossing themselves and each other, holes, loops beyond the box).
+// up to its rounding of crossings, on random loops (crossing each other, holes, loops beyond the
+// box).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "region_perimeter.h"
 #include "slicereuse/regions/clip_regions.h"
 #include "slicereuse/regions/clip_to_box.h"
 
@@ -19,14 +21,6 @@ double area(const Paths& region) {
   double a = 0;
   for (const ClipperLib::Path& loop : region) a += ClipperLib::Area(loop);
   return a;
-}
-
-double perimeter(const Paths& region) {
-  double p = 0;
-  for (const ClipperLib::Path& loop : region)
-    for (size_t i = 0; i < loop.size(); ++i)
-      p += std::hypot(double(loop[i].X - loop[(i + 1) % loop.size()].X), double(loop[i].Y - loop[(i + 1) % loop.size()].Y));
-  return p;
 }
 
 TEST(ClipToBox, IsClippersIntersectionWithTheBox) {
@@ -59,8 +53,8 @@ TEST(ClipToBox, IsClippersIntersectionWithTheBox) {
     const Paths got = clip_to_box(region, box);
     // The same region but for Clipper's rounding of crossings to its grid (its scanbeams, which
     // clamp them, lie at the vertices' heights): a sliver two units wide at most along the edges.
-    EXPECT_LE(std::abs(area(clip_regions(got, expected, ClipperLib::ctXor))), 2 * perimeter(expected));
-    EXPECT_NEAR(area(got), area(expected), 2 * perimeter(expected));
+    EXPECT_LE(std::abs(area(clip_regions(got, expected, ClipperLib::ctXor))), 2 * test::region_perimeter(expected));
+    EXPECT_NEAR(area(got), area(expected), 2 * test::region_perimeter(expected));
     (expected.empty() ? empty : cut) += 1;
   }
   EXPECT_GT(cut, 100u);

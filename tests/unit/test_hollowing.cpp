@@ -14,6 +14,7 @@
 #include "error_of.h"
 #include "family.h"
 #include "region_clearance.h"
+#include "region_perimeter.h"
 #include "shapes.h"
 #include "slicereuse/hollowing/cavity.h"
 #include "slicereuse/hollowing/drain_holes.h"
@@ -133,13 +134,7 @@ Paths offset(const Paths& region, double mm) {
   return out;
 }
 
-double perimeter_mm(const Paths& region) {
-  double p = 0;
-  for (const ClipperLib::Path& loop : region)
-    for (size_t i = 0; i < loop.size(); ++i)
-      p += std::hypot(double(loop[i].X - loop[(i + 1) % loop.size()].X), double(loop[i].Y - loop[(i + 1) % loop.size()].Y));
-  return p / kRegionScale;
-}
+double perimeter_mm(const Paths& region) { return test::region_perimeter(region) / kRegionScale; }
 
 // The definition, term by term: layer k eroded (grow false) or dilated by a ball of radius r,
 // every layer within it offset and intersected (or united), layers beyond the stack empty.
