@@ -137,10 +137,29 @@ struct LayeredBall {
   long reach;  // layers each way
 };
 
-// The layers simplified to within kCavitySimplifyMm (simplify_paths.h), and the farthest any
-// dropped vertex lay from its chord: a layer's region then lies within that of the original's
-// boundary. A loop too thin to keep three vertices stays as it was (it may be a hole, which must
-// not fill).
+// A layer's loops, each turned to start at its least point (by y, then x) and in the order of
+// those points: what a simplification keeps then depends on the loops' points alone, not on where
+// a slicer began them (a member's contours by reuse and by direct slicing are the same points).
+Paths canonical_loops(const Paths& loops) {
+  const auto less = [](const ClipperLib::IntPoint& a, const ClipperLib::IntPoint& b) {
+    return a.Y < b.Y || (a.Y == b.Y && a.X < b.X);
+  };
+  Paths out;
+  for (const ClipperLib::Path& loop : loops) {
+    if (loop.empty()) continue;
+    out.emplace_back(loop.size());
+    std::rotate_copy(loop.begin(), std::min_element(loop.begin(), loop.end(), less), loop.end(), out.back().begin());
+  }
+  std::sort(out.begin(), out.end(), [&](const ClipperLib::Path& a, const ClipperLib::Path& b) {
+    return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(), less);
+  });
+  return out;
+}
+
+// The layers (loops filled by the nonzero rule: contours as sliced, or regions) simplified to
+// within kCavitySimplifyMm (simplify_paths.h), and the farthest any dropped vertex lay from its
+// chord: a layer's region then lies within that of the original's boundary. A loop too thin to
+// keep three vertices stays as it was (it may be a hole, which must not fill).
 std::vector<Paths> simplified_layers(const std::vector<Paths>& layers, double& deviation_mm) {
   std::vector<Paths> out(layers.size());
   std::vector<double> deviation(layers.size(), 0);
@@ -148,7 +167,7 @@ std::vector<Paths> simplified_layers(const std::vector<Paths>& layers, double& d
       layers.size(),
       [&](size_t k) {
         ClipperLib::Clipper clipper;
-        for (const ClipperLib::Path& loop : layers[k]) {
+        for (const ClipperLib::Path& loop : canonical_loops(layers[k])) {
           double d = 0;
           const Paths simple = simplify_paths({loop}, kCavitySimplifyMm * kRegionScale, &d);
           clipper.AddPaths(simple.empty() ? Paths{loop} : simple, ClipperLib::ptSubject, true);
@@ -284,7 +303,9 @@ class StackByBall {
     if (!grow_ && result_.empty()) return;
     const long b0 = i << s, b1 = std::min(((i + 1) << s) - 1, long(blocks_.size()) - 1);
     if (b1 < lo || b0 > hi) return;
-    if (lo <= b0 && b1 <= hi) {
+    // A run may reach past the range's far end, beyond the ball: its layers there add only
+    // constraints, and proving it whole spares splitting it down to the range's end.
+    if (lo > k_ ? lo <= b0 : b1 <= hi) {
       // Dilating, a run whose terms come within the slack of the candidate's edge is left out.
       const double r =
           std::max(0.0, ball_.radius(b0 > k_ ? b0 - k_ : k_ - b1) - (grow_ ? kCavityProofSlackMm : 0)) * kRegionScale;

@@ -67,7 +67,8 @@ struct PlateMember {
   DirectLayers direct;         // made where drawn: its layers sliced beforehand
   size_t offset = 0;           // the plate layer of its layer 0
   std::vector<ClipperLib::Paths> cavity;  // hollowed: each of its layers' cavity; else empty
-  // Hollowed, with a label for its side: its layers' regions and mid-planes, made for its cavity,
+  // Hollowed, with a label for its side: its layers' contours (as loops, no union: the cavity
+  // simplifies them and the label clips them to its strip) and mid-planes, taken for its cavity,
   // kept for member_labels to place the label on (then freed).
   std::vector<ClipperLib::Paths> regions;
   std::vector<double> region_z;
@@ -231,8 +232,8 @@ const PlateJobOptions::MadeCavity* made_cavity(const PlateMember& p, const Plate
 // With o.hollowing, each member's cavity from all its layers, made as its masks' are (by its
 // transfer or sliced directly on its planes), one member at a time on all cores; its volume, or
 // why there is none, into st, or the one made before the job of the same layers. Supports stay
-// solid. A member to be labelled on a side keeps its layers' regions for the label
-// (member_labels), which would make them again.
+// solid. A member to be labelled on a side keeps its layers' contours for the label
+// (member_labels), which would slice them again.
 void hollow_members(std::vector<PlateMember>& members, const PlateJobOptions& o, PlateJobStats& st,
                     const Progress& progress) {
   const size_t n = st.direct_reasons.size();
@@ -250,7 +251,7 @@ void hollow_members(std::vector<PlateMember>& members, const PlateJobOptions& o,
     const bool side_label = m < o.labels.size() && !o.labels[m].empty() && o.label.side != LabelSide::Base;
     const PlateJobOptions::MadeCavity* made = made_cavity(p, o);
     std::vector<ClipperLib::Paths> regions;
-    if (!made || side_label) regions = layer_regions(layers, sub_progress(mp, 0.2, 0.3), "hollowing");
+    if (!made || side_label) regions = layers_paths(layers);
     p.cavity = made ? made->cavity : cavity_regions(regions, st.thickness, o.hollowing, sub_progress(mp, 0.3, 1));
     if (side_label) {
       p.regions = std::move(regions);

@@ -70,8 +70,8 @@ struct LayerFace {
   double innermost = 0, solid = 0;
 };
 
-// What of a region lies over a <= u <= b and at most w_max, and its box.
-Paths over(const Paths& region, cInt a, cInt b, cInt w_max = std::numeric_limits<cInt>::max()) {
+// What of a region lies over a <= u <= b and at most w_max.
+Paths over(const Paths& region, cInt a, cInt b, cInt w_max) {
   if (region.empty()) return {};
   const ClipperLib::IntRect all = bounds(region);
   return clip_to_box(region, {a, all.top - 1, b, std::min(all.bottom + 1, w_max)});
@@ -79,7 +79,8 @@ Paths over(const Paths& region, cInt a, cInt b, cInt w_max = std::numeric_limits
 
 // The least w of a region over a <= u <= b (rounded down), none when it has nothing there: the
 // least lies on its boundary (it is bounded), at a vertex over the strip or where an edge
-// crosses the strip's sides. What over's box would give, with no clip.
+// crosses the strip's sides. The top of what a clip to the strip would give, with no clip (a
+// layer's hundreds of points cut to a strip at each of its layers were most of a label's search).
 std::optional<cInt> least_w_over(const Paths& region, cInt a, cInt b) {
   std::optional<double> least;
   const auto take = [&](double w) { least = least ? std::min(*least, w) : w; };
@@ -98,11 +99,11 @@ std::optional<cInt> least_w_over(const Paths& region, cInt a, cInt b) {
 
 LayerFace layer_face(const Paths& region, cInt a, cInt b, cInt reach) {
   LayerFace f;
-  const Paths strip = over(region, a, b);
-  if (strip.empty()) return f;
-  f.outermost = bounds(strip).top;
+  const std::optional<cInt> outermost = least_w_over(region, a, b);
+  if (!outermost) return f;
+  f.outermost = *outermost;
   const cInt cap = f.outermost + reach;
-  const Paths near = clip_regions(strip, {rect(a, f.outermost - 1, b, cap)}, ClipperLib::ctIntersection);
+  const Paths near = clip_to_box(region, {a, f.outermost - 1, b, cap});
   // Between consecutive vertices' u, the part's least w at u is on one edge (the polygons do not
   // cross): the lowest crossing the slab's middle. Its greatest is at a slab's end.
   std::vector<cInt> breaks{a, b};
@@ -187,7 +188,7 @@ const char* side_name(LabelSide side) {
 
 SideLabel place_side_label(const Slices& layers, double thickness_mm, double turn_deg, const std::string& text,
                            const std::string& name, const LabelOptions& o) {
-  return place_side_label(layer_regions(layers, {}, "labels"), layers.layer_z, thickness_mm, turn_deg, text, name, o);
+  return place_side_label(layers_paths(layers), layers.layer_z, thickness_mm, turn_deg, text, name, o);
 }
 
 SideLabel place_side_label(std::vector<Paths> regions, const std::vector<double>& layer_z, double thickness_mm,

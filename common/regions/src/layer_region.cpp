@@ -36,6 +36,12 @@ std::vector<ClipperLib::Paths> layer_regions(const Slices& s, const Progress& pr
   return regions;
 }
 
+std::vector<ClipperLib::Paths> layers_paths(const Slices& s) {
+  std::vector<ClipperLib::Paths> paths(s.layers());
+  for (size_t k = 0; k < s.layers(); ++k) paths[k] = layer_paths(LayerView(s, k));
+  return paths;
+}
+
 void region_into_layer(const ClipperLib::Paths& region, double z, Slices& out) {
   out = Slices{};
   out.layer_z = {z};

@@ -24,8 +24,9 @@
 // layer's outside. Not placed (cuts empty), with `why` saying so in words, when no height and
 // place fits. Deterministic: quarter turns are exact, and the same layers give the same bands.
 // Throws Error as label_region does (a text the font cannot print, heights that are not positive).
-// The second form takes the layers as their regions (layer_regions, layer_region.h) and their
-// mid-planes (Slices::layer_z), as a hollowed member's job has made them for its cavity.
+// The second form takes the layers as loops filled by the nonzero rule (their contours as
+// sliced, layers_paths, or their regions, layer_region.h) and their mid-planes
+// (Slices::layer_z), as a hollowed member's job has taken them for its cavity.
 // side_name: "front", "back", "left" or "right" (and "base").
 #include <array>
 #include <clipper.hpp>

@@ -8,7 +8,8 @@
 // rasterize_layer.h) as simple polygons: outer loops counter-clockwise, holes clockwise, none
 // crossing another. Overlapping members or supports merge into one region.
 // layer_regions: every layer of s as its region (layer_region), on all cores (phase names them
-// in the progress).
+// in the progress); layers_paths: every layer's closed contours as they are (layer_paths), for
+// those who clip or simplify them anyway and need no union first.
 // region_into_layer: polygons (any orientation convention Clipper gives, outer CCW) as layer 0 of
 // out (replaced): one closed contour per polygon at height z, xyz only, no encoding.
 #include <clipper.hpp>
@@ -29,6 +30,7 @@ ClipperLib::Paths layer_paths(const LayerView& layer);
 ClipperLib::Paths layer_region(const LayerView& layer);
 std::vector<ClipperLib::Paths> layer_regions(const Slices& s, const Progress& progress = {},
                                              const char* phase = "regions");
+std::vector<ClipperLib::Paths> layers_paths(const Slices& s);
 void region_into_layer(const ClipperLib::Paths& region, double z, Slices& out);
 
 // Area in mm^2 of a region (outer loops positive, holes negative).
