@@ -197,6 +197,32 @@ TEST(Cavity, EqualsTheDefinitionTermByTerm) {
   }
 }
 
+// Reuse and direct slicing give a member the same contour points, but not always from the same
+// point of each loop, nor the loops in the same order: the cavity is the same either way, and
+// the same from the contours as from their regions.
+TEST(Cavity, DependsOnTheLoopsPointsNotWhereTheyStart) {
+  test::FamilyOptions fo;
+  fo.shape = "torus";
+  fo.faces = 2500;
+  fo.height = 6;
+  const Slices s = slice_layers(test::make_family_base(fo), SliceOptions{0.1});
+  std::vector<Paths> contours = layers_paths(s), turned = contours, regions = layer_regions(s);
+  for (Paths& layer : turned) {
+    for (size_t i = 0; i < layer.size(); ++i)
+      std::rotate(layer[i].begin(), layer[i].begin() + long((7 * i + 3) % layer[i].size()), layer[i].end());
+    std::reverse(layer.begin(), layer.end());
+  }
+  HollowingOptions o;
+  o.wall_mm = 0.6;
+  o.closing_mm = 0.3;
+  const std::vector<Paths> cavity = cavity_regions(contours, 0.1, o);
+  double volume = 0;
+  for (const Paths& layer : cavity) volume += region_area_mm2(layer) * 0.1;
+  EXPECT_GT(volume, 1);
+  EXPECT_EQ(cavity_regions(turned, 0.1, o), cavity);
+  EXPECT_EQ(cavity_regions(regions, 0.1, o), cavity);
+}
+
 // A square 20 mm wide less two square holes and a 64-gon hole: its triangles are counter-clockwise,
 // cover it exactly (their union is the region, their areas sum to its area: no overlaps), and its
 // slabs, one per layer, enclose the layers' areas times the thickness.

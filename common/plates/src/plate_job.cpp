@@ -70,8 +70,8 @@ struct PlateMember {
   // Hollowed, with a label for its side: its layers' contours (as loops, no union: the cavity
   // simplifies them and the label clips them to its strip) and mid-planes, taken for its cavity,
   // kept for member_labels to place the label on (then freed).
-  std::vector<ClipperLib::Paths> regions;
-  std::vector<double> region_z;
+  std::vector<ClipperLib::Paths> contours;
+  std::vector<double> contour_z;
   bool support = false;
   size_t owner = 0;            // the member it is, or whose support it is
 
@@ -250,12 +250,12 @@ void hollow_members(std::vector<PlateMember>& members, const PlateJobOptions& o,
     layers.thickness = st.thickness;
     const bool side_label = m < o.labels.size() && !o.labels[m].empty() && o.label.side != LabelSide::Base;
     const PlateJobOptions::MadeCavity* made = made_cavity(p, o);
-    std::vector<ClipperLib::Paths> regions;
-    if (!made || side_label) regions = layers_paths(layers);
-    p.cavity = made ? made->cavity : cavity_regions(regions, st.thickness, o.hollowing, sub_progress(mp, 0.3, 1));
+    std::vector<ClipperLib::Paths> contours;
+    if (!made || side_label) contours = layers_paths(layers);
+    p.cavity = made ? made->cavity : cavity_regions(contours, st.thickness, o.hollowing, sub_progress(mp, 0.2, 1));
     if (side_label) {
-      p.regions = std::move(regions);
-      p.region_z = layers.layer_z;
+      p.contours = std::move(contours);
+      p.contour_z = layers.layer_z;
     }
     st.cavity_mm3[m] = cavity_volume_mm3(p.cavity, st.thickness);
     if (o.drain_hole_mm > 0 && st.cavity_mm3[m] > 0)
@@ -355,10 +355,10 @@ std::vector<LabelCut> member_labels(std::vector<PlateMember>& members, size_t co
       // outside (engrave_part), so they keep the wall less their depth from the cavity (above).
       const double turn = p.owner < o.label_turns_deg.size() ? o.label_turns_deg[p.owner] : 0;
       SideLabel s;
-      if (!p.region_z.empty()) {
-        s = place_side_label(std::move(p.regions), p.region_z, st.thickness, turn, text, name, o.label);
-        p.regions = {};
-        p.region_z = {};
+      if (!p.contour_z.empty()) {
+        s = place_side_label(std::move(p.contours), p.contour_z, st.thickness, turn, text, name, o.label);
+        p.contours = {};
+        p.contour_z = {};
       } else {
         const Slices all = p.transfer ? p.transfer->layers(0, p.layers()) : slice_planes(*p.mesh, p.planes, {}, false);
         s = place_side_label(all, st.thickness, turn, text, name, o.label);

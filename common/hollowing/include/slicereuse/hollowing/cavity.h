@@ -3,9 +3,10 @@
 // hollows on a voxel distance field; the layers' contours give the same cavity exactly).
 //
 // Input: the part's layers as loops filled by the nonzero rule (its contours as sliced,
-// layers_paths, or its regions, layer_region.h: the same cavity, whatever loop each starts at),
-// layer j being the slab of height thickness_mm above layer j - 1, from the bottom, with no gap; options.wall_mm (t, PrusaSlicer's
-// hollowing_min_thickness) and options.closing_mm (D, its hollowing_closing_distance).
+// layers_paths, or its regions, layer_region.h: the same cavity, whatever point each loop starts
+// at), layer j being the slab of height thickness_mm above layer j - 1, from the bottom, with no
+// gap; options.wall_mm (t, PrusaSlicer's hollowing_min_thickness) and options.closing_mm (D, its
+// hollowing_closing_distance).
 // Output: each layer's cavity region (empty where there is none); all empty when t is 0.
 //
 // The cavity is the set of points farther than t inside the part: a 3-D erosion by a ball of
