@@ -315,6 +315,17 @@ void expect_runs_encode_the_pixels_as_the_direct_png_does(const Slices& s, size_
   EXPECT_EQ(back.pixels, raster(s, k, p));
   rasterize_layer_antialiased_png(s, k, p, direct);
   EXPECT_EQ(direct, png);
+  // Both from one pass, into outputs holding a former layer's: the same PNG and the same runs.
+  std::vector<uint8_t> both_png = png;
+  MaskRuns both_runs;
+  rasterize_layer_antialiased_runs(s, (k + 1) % s.layers(), p, both_runs);
+  rasterize_layer_antialiased_png(s, k, p, both_png, &both_runs);
+  EXPECT_EQ(both_png, png);
+  EXPECT_EQ(both_runs.width, runs.width);
+  EXPECT_EQ(both_runs.height, runs.height);
+  EXPECT_EQ(both_runs.row_begin, runs.row_begin);
+  EXPECT_EQ(both_runs.columns, runs.columns);
+  EXPECT_EQ(both_runs.levels, runs.levels);
 }
 
 }  // namespace

@@ -339,8 +339,8 @@ Progress encoding_progress(const PremadeMasks* premade, const Progress& progress
 void encode_layer(const LayerView& layer, size_t k, const PrinterProfile& p, int bits, std::vector<uint8_t>& png,
                   StackSummary& summary, PremadeMasks* premade, MaskRuns* mask = nullptr) {
   if (!premade) summary.add(k, summarize_layer(layer, k));
-  if (bits == 8 && p.antialiasing && !mask && !premade) {  // anti-aliased: straight into the PNG
-    rasterize_layer_antialiased_png(layer, p, png);
+  if (bits == 8 && p.antialiasing && !premade) {  // anti-aliased: straight into the PNG (and the runs)
+    rasterize_layer_antialiased_png(layer, p, png, mask);
     return;
   }
   thread_local MaskRuns runs;

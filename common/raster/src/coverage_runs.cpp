@@ -578,6 +578,31 @@ class RunsSink {
   MaskRuns& out_;
 };
 
+// The PNG and the runs from one sweep: each span goes to both.
+class PngAndRunsSink {
+ public:
+  PngAndRunsSink(PngRows& png, RunsSink runs) : png_(png), runs_(runs) {}
+  template <class Fill>
+  void row(Fill&& fill) {
+    png_.row([&](auto&& png_pixels) {
+      runs_.row([&](auto&& run_pixels) {
+        fill([&](uint8_t level, size_t n) {
+          png_pixels(level, n);
+          run_pixels(level, n);
+        });
+      });
+    });
+  }
+  void empty_rows(size_t n) {
+    png_.empty_rows(n);
+    runs_.empty_rows(n);
+  }
+
+ private:
+  PngRows& png_;
+  RunsSink runs_;
+};
+
 }  // namespace
 
 size_t coverage_runs(const LayerView& layer, const PrinterProfile& p, MaskRuns& out) {
@@ -586,10 +611,16 @@ size_t coverage_runs(const LayerView& layer, const PrinterProfile& p, MaskRuns& 
   return rasterize_coverage(layer, p, sink);
 }
 
-size_t coverage_png(const LayerView& layer, const PrinterProfile& p, std::vector<uint8_t>& png) {
+size_t coverage_png(const LayerView& layer, const PrinterProfile& p, std::vector<uint8_t>& png, MaskRuns* runs) {
   const MaskImageLayout image = mask_image_layout(p);
   PngRows sink(image.width, image.height, png);
-  const size_t open = rasterize_coverage(layer, p, sink);
+  size_t open;
+  if (runs) {
+    PngAndRunsSink both(sink, RunsSink(image.width, image.height, *runs));
+    open = rasterize_coverage(layer, p, both);
+  } else {
+    open = rasterize_coverage(layer, p, sink);
+  }
   sink.finish();
   return open;
 }

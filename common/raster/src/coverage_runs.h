@@ -1,7 +1,8 @@
 #pragma once
 // coverage_runs: a layer's anti-aliased mask (rasterize_layer.h) as runs of equal non-zero
 // grey levels, replacing out's content; coverage_png: the same mask straight into an 8-bit PNG
-// (png replaced), the bytes encode_mask_png gives for those runs, without keeping them. The
+// (png replaced), the bytes encode_mask_png gives for those runs, without keeping them unless
+// runs is not null (then replaced by them, from the same sweep: the pixels are made once). The
 // caller has checked the layer and the profile (antialiasing on, gamma > 0). Both return the
 // number of open contours ignored.
 //
@@ -46,6 +47,7 @@
 namespace slicereuse {
 
 size_t coverage_runs(const LayerView& layer, const PrinterProfile& profile, MaskRuns& out);
-size_t coverage_png(const LayerView& layer, const PrinterProfile& profile, std::vector<uint8_t>& png);
+size_t coverage_png(const LayerView& layer, const PrinterProfile& profile, std::vector<uint8_t>& png,
+                    MaskRuns* runs = nullptr);
 
 }  // namespace slicereuse

@@ -241,12 +241,13 @@ size_t rasterize_layer_antialiased_runs(const LayerView& layer, const PrinterPro
 }
 
 size_t rasterize_layer_antialiased_png(const LayerView& layer, const PrinterProfile& profile,
-                                       std::vector<uint8_t>& out) {
+                                       std::vector<uint8_t>& out, MaskRuns* runs) {
   check_antialiased_layer(layer, profile);
-  if (!is_binary(profile)) return coverage_png(layer, profile, out);
-  thread_local MaskRuns runs;
-  const size_t open = binary_runs(layer, profile, runs);
-  encode_mask_png(runs, out);
+  if (!is_binary(profile)) return coverage_png(layer, profile, out, runs);
+  thread_local MaskRuns own;
+  MaskRuns& binary = runs ? *runs : own;
+  const size_t open = binary_runs(layer, profile, binary);
+  encode_mask_png(binary, out);
   return open;
 }
 

@@ -43,9 +43,11 @@ size_t rasterize_layer_runs(const LayerView& layer, const PrinterProfile& profil
 size_t rasterize_layer_antialiased_runs(const LayerView& layer, const PrinterProfile& profile, MaskRuns& out);
 
 // That mask straight into an 8-bit PNG (out replaced): the bytes encode_mask_png gives for
-// rasterize_layer_antialiased_runs, without keeping the runs (what .sl1 export encodes).
+// rasterize_layer_antialiased_runs (what .sl1 export encodes), without keeping the runs unless
+// runs is not null: then they replace its content too, from the same pass (a job that checks its
+// masks makes each once).
 size_t rasterize_layer_antialiased_png(const LayerView& layer, const PrinterProfile& profile,
-                                       std::vector<uint8_t>& out);
+                                       std::vector<uint8_t>& out, MaskRuns* runs = nullptr);
 
 inline size_t rasterize_layer(const Slices& s, size_t k, const PrinterProfile& profile, uint8_t* out) {
   return rasterize_layer(LayerView(s, k), profile, out);
@@ -58,8 +60,8 @@ inline size_t rasterize_layer_antialiased_runs(const Slices& s, size_t k, const 
   return rasterize_layer_antialiased_runs(LayerView(s, k), profile, out);
 }
 inline size_t rasterize_layer_antialiased_png(const Slices& s, size_t k, const PrinterProfile& profile,
-                                              std::vector<uint8_t>& out) {
-  return rasterize_layer_antialiased_png(LayerView(s, k), profile, out);
+                                              std::vector<uint8_t>& out, MaskRuns* runs = nullptr) {
+  return rasterize_layer_antialiased_png(LayerView(s, k), profile, out, runs);
 }
 
 }  // namespace slicereuse
