@@ -541,7 +541,9 @@ size_t rasterize_coverage(const LayerView& layer, const PrinterProfile& p, Sink&
   return open;
 }
 
-// Runs of non-zero pixels, adjacent ones of one level joined.
+// Runs of non-zero pixels, adjacent ones of one level joined. The arrays are kept at least a row
+// of runs (W) longer than those written, which are counted apart, so that a span is written with
+// no check of the room left; finish() cuts them to the runs written.
 class RunsSink {
  public:
   RunsSink(int W, int H, MaskRuns& out) : out_(out) {
@@ -549,39 +551,51 @@ class RunsSink {
     out.height = H;
     out.row_begin.assign(1, 0);
     out.row_begin.reserve(size_t(H) + 1);
-    out.columns.clear();
-    out.levels.clear();
   }
   // The next row: fill(pixels) calls pixels(level, n), n >= 0, left to right (as PngRows).
   template <class Fill>
   void row(Fill&& fill) {
-    const size_t first = out_.levels.size();
+    const size_t room = written_ + size_t(out_.width);
+    if (out_.levels.size() < room) {
+      out_.levels.resize(std::max(room, 2 * out_.levels.size()));
+      out_.columns.resize(2 * out_.levels.size());
+    }
+    uint16_t* const columns = out_.columns.data();
+    uint8_t* const levels = out_.levels.data();
+    const size_t first = written_;
+    size_t n_runs = written_;
     int at = 0;  // the row's next column
     fill([&](uint8_t level, size_t n) {
       const int end = at + int(n);
       if (n > 0 && level != 0) {
-        if (out_.levels.size() > first && out_.columns.back() == at && out_.levels.back() == level) {
-          out_.columns.back() = uint16_t(end);
+        if (n_runs > first && columns[2 * n_runs - 1] == at && levels[n_runs - 1] == level) {
+          columns[2 * n_runs - 1] = uint16_t(end);
         } else {
-          out_.columns.push_back(uint16_t(at));
-          out_.columns.push_back(uint16_t(end));
-          out_.levels.push_back(level);
+          columns[2 * n_runs] = uint16_t(at);
+          columns[2 * n_runs + 1] = uint16_t(end);
+          levels[n_runs++] = level;
         }
       }
       at = end;
     });
-    out_.row_begin.push_back(uint32_t(out_.levels.size()));
+    written_ = n_runs;
+    out_.row_begin.push_back(uint32_t(written_));
   }
-  void empty_rows(size_t n) { out_.row_begin.insert(out_.row_begin.end(), n, uint32_t(out_.levels.size())); }
+  void empty_rows(size_t n) { out_.row_begin.insert(out_.row_begin.end(), n, uint32_t(written_)); }
+  void finish() {
+    out_.levels.resize(written_);
+    out_.columns.resize(2 * written_);
+  }
 
  private:
   MaskRuns& out_;
+  size_t written_ = 0;
 };
 
 // The PNG and the runs from one sweep: each span goes to both.
 class PngAndRunsSink {
  public:
-  PngAndRunsSink(PngRows& png, RunsSink runs) : png_(png), runs_(runs) {}
+  PngAndRunsSink(PngRows& png, RunsSink& runs) : png_(png), runs_(runs) {}
   template <class Fill>
   void row(Fill&& fill) {
     png_.row([&](auto&& png_pixels) {
@@ -600,7 +614,7 @@ class PngAndRunsSink {
 
  private:
   PngRows& png_;
-  RunsSink runs_;
+  RunsSink& runs_;
 };
 
 }  // namespace
@@ -608,7 +622,9 @@ class PngAndRunsSink {
 size_t coverage_runs(const LayerView& layer, const PrinterProfile& p, MaskRuns& out) {
   const MaskImageLayout image = mask_image_layout(p);
   RunsSink sink(image.width, image.height, out);
-  return rasterize_coverage(layer, p, sink);
+  const size_t open = rasterize_coverage(layer, p, sink);
+  sink.finish();
+  return open;
 }
 
 size_t coverage_png(const LayerView& layer, const PrinterProfile& p, std::vector<uint8_t>& png, MaskRuns* runs) {
@@ -616,8 +632,10 @@ size_t coverage_png(const LayerView& layer, const PrinterProfile& p, std::vector
   PngRows sink(image.width, image.height, png);
   size_t open;
   if (runs) {
-    PngAndRunsSink both(sink, RunsSink(image.width, image.height, *runs));
+    RunsSink runs_sink(image.width, image.height, *runs);
+    PngAndRunsSink both(sink, runs_sink);
     open = rasterize_coverage(layer, p, both);
+    runs_sink.finish();
   } else {
     open = rasterize_coverage(layer, p, sink);
   }
