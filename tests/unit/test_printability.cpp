@@ -106,7 +106,9 @@ TEST(LevelRuns, SetOperationsAndLabels) {
   EXPECT_EQ(row0(complement_runs(nonzero)), (std::vector<int>{5, 8, 12, 16}));
   const LevelRuns b = runs_at_levels(mask_runs_of(layer(16, 2, {{3, 0, 10, 1}})), {1})[0];
   EXPECT_EQ(row0(subtract_runs(nonzero, b)), (std::vector<int>{0, 3, 10, 12}));
-  EXPECT_EQ(row0(intersect_runs(nonzero, b)), (std::vector<int>{3, 5, 8, 10}));
+  std::vector<int> overlaps;
+  for_each_overlap(nonzero, b, 0, [&](uint32_t, uint32_t, int lo, int hi) { overlaps.insert(overlaps.end(), {lo, hi}); });
+  EXPECT_EQ(overlaps, (std::vector<int>{3, 5, 8, 10}));
   // Row 1's [5, 8) touches row 0's runs only at corners: one region with diagonals, three without.
   EXPECT_EQ(label_runs(nonzero, false).count, 3u);
   EXPECT_EQ(label_runs(nonzero, true).count, 1u);

@@ -97,7 +97,11 @@ struct LayerChecker::State {
       findings.push_back(o);
     }
 
-    const std::vector<uint64_t> supported = pixels_inside(intersect_runs(f.points, below.support), f.lit, f.lit_labels);
+    // Per region, its pixels >= 10 on pixels >= 150 below.
+    std::vector<uint64_t> supported(f.lit_labels.count, 0);
+    for (int y = 0; y < f.points.height; ++y)
+      for_each_overlap(f.points, below.support, y,
+                       [&](uint32_t i, uint32_t, int lo, int hi) { supported[f.point_region[i]] += uint64_t(hi - lo); });
     std::vector<uint64_t> overhanging;  // only where a region is held well enough to need it
     for (uint32_t c = 0; c < f.lit_labels.count; ++c) {
       const LitRegion& r = f.lit_regions[c];

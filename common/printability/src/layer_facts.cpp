@@ -64,8 +64,17 @@ LayerFacts layer_facts_of(MaskRuns mask) {
       r.box.add(f.lit.lo[i], f.lit.hi[i], y);
     }
   }
-  const std::vector<uint64_t> point_pixels = pixels_inside(f.points, f.lit, f.lit_labels);
-  for (uint32_t c = 0; c < f.lit_labels.count; ++c) f.lit_regions[c].point_pixels = point_pixels[c];
+  // Pixels >= 10 are lit: each run of them lies in one lit run.
+  f.point_region.resize(f.points.runs());
+  for (int y = 0; y < f.points.height; ++y) {
+    uint32_t j = f.lit.row_begin[size_t(y)];
+    for (uint32_t i = f.points.row_begin[size_t(y)]; i < f.points.row_begin[size_t(y) + 1]; ++i) {
+      while (f.lit.hi[j] <= f.points.lo[i]) ++j;
+      const uint32_t c = f.lit_labels.of_run[j];
+      f.point_region[i] = c;
+      f.lit_regions[c].point_pixels += f.points.hi[i] - f.points.lo[i];
+    }
+  }
   f.air = air_layer_of(complement_runs(at[2]));
   f.mask = std::move(mask);
   return f;

@@ -8,7 +8,7 @@
 //   - the box of its pixels > 0 (overhangs erode inside the two layers' boxes);
 //   - its pixels >= 127 within 5 pixels of the image's edges (touching bounds), box and count;
 //   - its islands' candidates: the 4-connected regions of pixels > 1, each with its pixels, box
-//     and pixels >= 10;
+//     and pixels >= 10, and the region of each run of those;
 //   - its air (pixels <= 100) as regions (air_regions.h).
 // Thread-safe. Time: proportional to the mask's runs.
 #include <cstdint>
@@ -33,6 +33,7 @@ struct LayerFacts {
   LevelRuns lit, points, at_least_128, support;  // > 1, >= 10, >= 128, >= 150
   RunLabels lit_labels;                       // region of each run of lit
   std::vector<LitRegion> lit_regions;
+  std::vector<uint32_t> point_region;  // region of each run of points (the lit run holding it)
   PixelBox touching_box;  // pixels >= 127 within the margin
   uint64_t touching_pixels = 0;
   AirLayer air;

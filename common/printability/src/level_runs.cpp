@@ -115,27 +115,7 @@ LevelRuns complement_runs(const LevelRuns& runs) {
 LevelRuns subtract_runs(const LevelRuns& a, const LevelRuns& b) {
   LevelRuns r = empty_like(a.width, a.height);
   for (int y = 0; y < a.height; ++y) {
-    uint32_t j = b.row_begin[size_t(y)];
-    const uint32_t je = b.row_begin[size_t(y) + 1];
-    for (uint32_t i = a.row_begin[size_t(y)]; i < a.row_begin[size_t(y) + 1]; ++i) {
-      int x = a.lo[i];
-      while (j < je && b.hi[j] <= x) ++j;
-      // Each run of b inside a's run cuts it; the last one may reach into a's next run.
-      for (uint32_t k = j; k < je && b.lo[k] < a.hi[i]; ++k) {
-        if (b.lo[k] > x) add_run(r, x, b.lo[k]);
-        if (b.hi[k] > x) x = b.hi[k];
-      }
-      if (x < a.hi[i]) add_run(r, x, a.hi[i]);
-    }
-    r.row_begin.push_back(r.runs());
-  }
-  return r;
-}
-
-LevelRuns intersect_runs(const LevelRuns& a, const LevelRuns& b) {
-  LevelRuns r = empty_like(a.width, a.height);
-  for (int y = 0; y < a.height; ++y) {
-    for_each_overlap(a, b, y, [&](uint32_t, uint32_t, int lo, int hi) { add_run(r, lo, hi); });
+    for_each_difference(a, b, y, [&](int lo, int hi) { add_run(r, lo, hi); });
     r.row_begin.push_back(r.runs());
   }
   return r;

@@ -10,7 +10,7 @@
 //   over the mask's runs.
 // box_of: the box of the runs' pixels.
 // complement_runs: the runs of the pixels in no run of runs (same width and height).
-// subtract_runs: the pixels of a not in b; intersect_runs: the pixels in both.
+// subtract_runs: the pixels of a not in b.
 // label_runs: runs -> the connected component of each run (0..count-1, in order of first run),
 //   runs of neighbouring rows joining when they share a column (4-connectivity) or, with
 //   diagonal, also when they touch at a corner (8-connectivity).
@@ -18,6 +18,8 @@
 //   pixels of other inside it.
 // for_each_overlap(a, b, row, f): f(i, j, lo, hi) for each pair of run i of a and run j of b in
 //   that row sharing columns [lo, hi), in increasing column order.
+// for_each_difference(a, b, row, f): f(lo, hi) for each run [lo, hi) of that row's pixels of a
+//   not in b, in increasing column order (subtract_runs' runs, without keeping them).
 #include <cstdint>
 #include <vector>
 
@@ -57,7 +59,6 @@ std::vector<LevelRuns> runs_at_levels(const MaskRuns& mask, const std::vector<ui
 PixelBox box_of(const LevelRuns& runs);
 LevelRuns complement_runs(const LevelRuns& runs);
 LevelRuns subtract_runs(const LevelRuns& a, const LevelRuns& b);
-LevelRuns intersect_runs(const LevelRuns& a, const LevelRuns& b);
 
 struct RunLabels {
   std::vector<uint32_t> of_run;  // component of each run
@@ -75,6 +76,22 @@ void for_each_overlap(const LevelRuns& a, const LevelRuns& b, int row, F f) {
     const uint16_t hi = a.hi[i] < b.hi[j] ? a.hi[i] : b.hi[j];
     if (lo < hi) f(i, j, lo, hi);
     if (a.hi[i] < b.hi[j]) ++i; else ++j;
+  }
+}
+
+template <class F>
+void for_each_difference(const LevelRuns& a, const LevelRuns& b, int row, F f) {
+  uint32_t j = b.row_begin[size_t(row)];
+  const uint32_t je = b.row_begin[size_t(row) + 1];
+  for (uint32_t i = a.row_begin[size_t(row)]; i < a.row_begin[size_t(row) + 1]; ++i) {
+    int x = a.lo[i];
+    while (j < je && b.hi[j] <= x) ++j;
+    // Each run of b inside a's run cuts it; the last one may reach into a's next run.
+    for (uint32_t k = j; k < je && b.lo[k] < a.hi[i]; ++k) {
+      if (b.lo[k] > x) f(x, int(b.lo[k]));
+      if (b.hi[k] > x) x = b.hi[k];
+    }
+    if (x < a.hi[i]) f(x, int(a.hi[i]));
   }
 }
 

@@ -31,8 +31,6 @@ struct RowLevels {
 
 LevelRuns overhang_pixels(const LayerRuns& layer, const LayerRuns& below) {
   const MaskRuns& mask = *layer.mask;
-  // Brighter by more than 127 needs >= 128 here and < 128 below; the levels decide the rest.
-  const LevelRuns candidates = subtract_runs(*layer.at_least_128, *below.at_least_128);
   PixelBox crop = *layer.nonzero_box;
   crop.add(*below.nonzero_box);
   // Only a pixel whose row has 40 brighter pixels on either side (or the crop's border, which
@@ -47,12 +45,18 @@ LevelRuns overhang_pixels(const LayerRuns& layer, const LayerRuns& below) {
   kept.width = mask.width;
   kept.height = mask.height;
   kept.row_begin.assign(size_t(mask.height) + 1, 0);
+  // Brighter by more than 127 needs >= 128 here and < 128 below (the candidates); the levels
+  // decide the rest. Most layers have no candidate run with a core: they are not kept.
+  const LevelRuns& here_128 = *layer.at_least_128;
+  const LevelRuns& below_128 = *below.at_least_128;
   bool any_core = false;
-  for (uint32_t i = 0; i < candidates.runs() && !any_core; ++i) {
-    int core_lo, core_hi;
-    any_core = core_of(candidates.lo[i], candidates.hi[i], core_lo, core_hi);
-  }
+  for (int y = 0; y < mask.height && !any_core; ++y)
+    for_each_difference(here_128, below_128, y, [&](int lo, int hi) {
+      int core_lo, core_hi;
+      any_core |= core_of(lo, hi, core_lo, core_hi);
+    });
   if (!any_core) return kept;
+  const LevelRuns candidates = subtract_runs(here_128, below_128);
   LevelRuns brighter;
   brighter.width = mask.width;
   brighter.height = mask.height;
