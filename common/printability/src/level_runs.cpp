@@ -42,6 +42,11 @@ std::vector<LevelRuns> runs_at_levels(const MaskRuns& mask, const std::vector<ui
     for (size_t j = 0; j < count_of_levels; ++j)
       if (v >= levels[j]) passes[v] |= 1u << j;
   }
+  // Written into the thread's arrays, room for every run of the mask at each level (only grown,
+  // never cleared), then copied out at their size: most runs of the mask are grey pixels that
+  // open no run.
+  thread_local std::vector<std::vector<uint16_t>> room;
+  if (room.size() < 2 * count_of_levels) room.resize(2 * count_of_levels);
   std::vector<LevelRuns> out(count_of_levels);
   std::vector<uint16_t*> lo(count_of_levels), hi(count_of_levels);
   std::vector<uint32_t> count(count_of_levels, 0);
@@ -50,9 +55,9 @@ std::vector<LevelRuns> runs_at_levels(const MaskRuns& mask, const std::vector<ui
     r.width = mask.width;
     r.height = mask.height;
     r.row_begin.resize(size_t(mask.height) + 1);
-    r.lo.resize(n);
-    r.hi.resize(n);
-    lo[j] = r.lo.data(), hi[j] = r.hi.data();
+    for (size_t side = 2 * j; side < 2 * j + 2; ++side)
+      if (room[side].size() < n) room[side].resize(n);
+    lo[j] = room[2 * j].data(), hi[j] = room[2 * j + 1].data();
   }
   const uint16_t* columns = mask.columns.data();
   const uint8_t* run_level = mask.levels.data();
@@ -83,8 +88,8 @@ std::vector<LevelRuns> runs_at_levels(const MaskRuns& mask, const std::vector<ui
   for (size_t j = 0; j < count_of_levels; ++j) {
     LevelRuns& r = out[j];
     r.row_begin[size_t(mask.height)] = count[j];
-    r.lo.resize(count[j]);
-    r.hi.resize(count[j]);
+    r.lo.assign(lo[j], lo[j] + count[j]);
+    r.hi.assign(hi[j], hi[j] + count[j]);
   }
   return out;
 }
@@ -122,21 +127,33 @@ LevelRuns subtract_runs(const LevelRuns& a, const LevelRuns& b) {
 }
 
 RunLabels label_runs(const LevelRuns& runs, bool diagonal) {
-  UnionFind sets(runs.runs());
+  // Each run takes the provisional label of the first run of the row above that it touches, or a
+  // new one; only where it touches runs of other labels are the labels joined. Most runs touch
+  // one run above, so the sets hold few labels and most finds end at once.
   const int reach = diagonal ? 1 : 0;  // a corner contact is one column apart
-  for (int y = 1; y < runs.height; ++y) {
-    uint32_t j = runs.row_begin[size_t(y) - 1];
+  std::vector<uint32_t> provisional(runs.runs());
+  UnionFind sets;
+  for (int y = 0; y < runs.height; ++y) {
+    uint32_t j = y > 0 ? runs.row_begin[size_t(y) - 1] : 0;
     const uint32_t je = runs.row_begin[size_t(y)];
     for (uint32_t i = runs.row_begin[size_t(y)]; i < runs.row_begin[size_t(y) + 1]; ++i) {
       while (j < je && runs.hi[j] + reach <= runs.lo[i]) ++j;
-      for (uint32_t k = j; k < je && runs.lo[k] < runs.hi[i] + reach; ++k) sets.join(i, k);
+      uint32_t k = j;
+      if (k == je || runs.lo[k] >= runs.hi[i] + reach) {
+        provisional[i] = sets.add();
+        continue;
+      }
+      const uint32_t label = provisional[k];
+      provisional[i] = label;
+      for (++k; k < je && runs.lo[k] < runs.hi[i] + reach; ++k)
+        if (provisional[k] != label) sets.join(provisional[k], label);
     }
   }
   RunLabels labels;
   labels.of_run.resize(runs.runs());
-  std::vector<uint32_t> of_root(runs.runs(), UINT32_MAX);
+  std::vector<uint32_t> of_root(sets.parent.size(), UINT32_MAX);
   for (uint32_t i = 0; i < runs.runs(); ++i) {
-    uint32_t& label = of_root[sets.find(i)];
+    uint32_t& label = of_root[sets.find(provisional[i])];
     if (label == UINT32_MAX) label = labels.count++;
     labels.of_run[i] = label;
   }
