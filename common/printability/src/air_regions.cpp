@@ -92,22 +92,24 @@ void AirRegions::add_layer(AirLayer layer_air, size_t layer, std::vector<uint32_
   struct Shared {
     uint64_t key = 0, pixels = 0, below_area = 0;
   };
+  // A region holds runs in every row of its box (it is 4-connected): the rows with inner air are
+  // its boxes' rows.
   std::vector<Shared> shared;
   std::vector<uint8_t> inner_rows(size_t(air.height), 0);
-  for (int y = 0; y < air.height; ++y)
-    for (uint32_t i = air.row_begin[size_t(y)]; i < air.row_begin[size_t(y) + 1]; ++i)
-      if (node[labels.of_run[i]] != kSolid && !pieces[labels.of_run[i]].border) inner_rows[size_t(y)] = 1;
+  for (uint32_t c = 0; c < labels.count; ++c)
+    if (node[c] != kSolid && !pieces[c].border) std::fill(&inner_rows[size_t(pieces[c].y0)], &inner_rows[size_t(pieces[c].y1 - 1)] + 1, 1);
   if (previous_air_.height == air.height && previous_air_.width == air.width) {
     for (int y = 0; y < air.height; ++y) {
       if (!inner_rows[size_t(y)] && !previous_inner_rows_[size_t(y)]) continue;
       for_each_overlap(air, previous_air_, y, [&](uint32_t i, uint32_t j, int lo, int hi) {
-        const uint32_t c = labels.of_run[i];
-        if (node[c] == kSolid || previous_node_[j] == kSolid) return;
-        if (pieces[c].border && regions_[previous_node_[j]].border) return;
-        const uint64_t key = uint64_t(c) << 32 | previous_node_[j];
+        const uint32_t c = labels.of_run[i], below = previous_labels_[j];
+        const uint32_t below_node = previous_node_[below];
+        if (node[c] == kSolid || below_node == kSolid) return;
+        if (pieces[c].border && regions_[below_node].border) return;
+        const uint64_t key = uint64_t(c) << 32 | below_node;
         if (shared.empty() || shared.back().key != key) shared.push_back({key, 0, 0});
         shared.back().pixels += uint64_t(hi - lo);
-        shared.back().below_area = previous_area_[j];
+        shared.back().below_area = previous_area_[below];
       });
     }
   }
@@ -146,21 +148,21 @@ void AirRegions::add_layer(AirLayer layer_air, size_t layer, std::vector<uint32_
   }
 
   // Only the open regions are kept, renumbered: memory stays that of one layer.
-  previous_node_.assign(air.runs(), kSolid);
-  previous_area_.assign(air.runs(), 0);
-  for (uint32_t i = 0; i < air.runs(); ++i) {
-    const uint32_t c = labels.of_run[i];
+  previous_node_.assign(labels.count, kSolid);
+  previous_area_.assign(labels.count, 0);
+  for (uint32_t c = 0; c < labels.count; ++c) {
     if (node[c] == kSolid) continue;
-    previous_node_[i] = compact[sets_.find(node[c])];
-    previous_area_[i] = pieces[c].pixels;
+    previous_node_[c] = compact[sets_.find(node[c])];
+    previous_area_[c] = pieces[c].pixels;
   }
   regions_ = std::move(alive);
   sets_ = UnionFind(regions_.size());
   previous_inner_rows_.assign(size_t(air.height), 0);
-  for (int y = 0; y < air.height; ++y)
-    for (uint32_t i = air.row_begin[size_t(y)]; i < air.row_begin[size_t(y) + 1]; ++i)
-      if (previous_node_[i] != kSolid && !regions_[previous_node_[i]].border) previous_inner_rows_[size_t(y)] = 1;
+  for (uint32_t c = 0; c < labels.count; ++c)
+    if (previous_node_[c] != kSolid && !regions_[previous_node_[c]].border)
+      std::fill(&previous_inner_rows_[size_t(pieces[c].y0)], &previous_inner_rows_[size_t(pieces[c].y1 - 1)] + 1, 1);
   previous_air_ = std::move(layer_air.runs);
+  previous_labels_ = std::move(layer_air.labels.of_run);
 }
 
 void AirRegions::finish() {
@@ -171,6 +173,7 @@ void AirRegions::finish() {
   regions_.clear();
   sets_ = UnionFind();
   previous_air_ = LevelRuns();
+  previous_labels_.clear();
   previous_node_.clear();
   previous_area_.clear();
   previous_inner_rows_.clear();

@@ -69,8 +69,9 @@ class AirRegions {
   UnionFind sets_;
   std::vector<AirRegion> regions_;      // by node of sets_; valid at roots
   LevelRuns previous_air_;
-  std::vector<uint32_t> previous_node_;  // per run of previous_air_, UINT32_MAX: solid
-  std::vector<uint64_t> previous_area_;  // per run: its layer region's pixels
+  std::vector<uint32_t> previous_labels_;  // per run of previous_air_: its region in its layer
+  std::vector<uint32_t> previous_node_;    // per region of the layer below, UINT32_MAX: solid
+  std::vector<uint64_t> previous_area_;    // per region of the layer below: its pixels
   std::vector<uint8_t> previous_inner_rows_;  // per row: holds air not reaching the image border
   std::vector<AirRegion> closed_;
   bool track_pieces_ = false;
