@@ -78,11 +78,10 @@ struct LayerChecker::State {
     touching->area_mm2 = summed;
   }
 
-  // Islands and overhangs of a layer above layer 0.
-  void check_islands_and_overhangs(const LayerFacts& f, size_t layer) {
-    const LevelRuns overhang =
-        overhang_pixels({&f.mask, &f.nonzero_box, &f.at_least_128}, {&below.mask, &below.nonzero_box, &below.at_least_128});
-    const RunLabels overhang_labels = label_runs(overhang, true);  // contours, as UVtools finds them
+  // The overhangs' regions (8-connected: contours, as UVtools finds them) of a layer's
+  // overhanging pixels.
+  void add_overhang_findings(const LevelRuns& overhang, size_t layer) {
+    const RunLabels overhang_labels = label_runs(overhang, true);
     std::vector<PixelBox> overhang_boxes(overhang_labels.count);
     std::vector<uint64_t> overhang_pixels_of(overhang_labels.count, 0);
     for (int y = 0; y < overhang.height; ++y)
@@ -96,10 +95,17 @@ struct LayerChecker::State {
       o.area_mm2 = double(overhang_pixels_of[c]) * pixel_x * pixel_y;
       findings.push_back(o);
     }
+  }
 
-    // Per region, its pixels >= 10 on pixels >= 150 below.
+  // Islands and overhangs of a layer above layer 0.
+  void check_islands_and_overhangs(const LayerFacts& f, size_t layer) {
+    const LevelRuns overhang =
+        overhang_pixels({&f.mask, &f.nonzero_box, &f.at_least_128}, {&below.mask, &below.nonzero_box, &below.at_least_128});
+    if (overhang.runs() > 0) add_overhang_findings(overhang, layer);
+
+    // Per region, its pixels >= 10 on pixels >= 150 below (the rows of its pixels > 0 hold them).
     std::vector<uint64_t> supported(f.lit_labels.count, 0);
-    for (int y = 0; y < f.points.height; ++y)
+    for (int y = f.nonzero_box.y0; y < f.nonzero_box.y1; ++y)
       for_each_overlap(f.points, below.support, y,
                        [&](uint32_t i, uint32_t, int lo, int hi) { supported[f.point_region[i]] += uint64_t(hi - lo); });
     std::vector<uint64_t> overhanging;  // only where a region is held well enough to need it

@@ -1,5 +1,7 @@
 #include "level_runs.h"
 
+#include <algorithm>
+
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
 #include "slicereuse/util/union_find.h"
@@ -68,8 +70,19 @@ std::vector<LevelRuns> runs_at_levels(const MaskRuns& mask, const std::vector<ui
       hi[size_t(j)][count[size_t(j)] - 1] = end;
     }
   };
+  // Each level's row_begin is written at the rows with runs, and filled in between (most rows of
+  // a display are empty).
+  int filled = 0;  // rows before it have their row_begin
+  const auto fill_rows = [&](int end) {
+    for (size_t j = 0; j < count_of_levels; ++j)
+      std::fill(out[j].row_begin.begin() + filled, out[j].row_begin.begin() + end, count[j]);
+    filled = end;
+  };
   for (int y = 0; y < mask.height; ++y) {
+    if (mask.row_begin[size_t(y)] == mask.row_begin[size_t(y) + 1]) continue;
+    if (filled < y) fill_rows(y);
     for (size_t j = 0; j < count_of_levels; ++j) out[j].row_begin[size_t(y)] = count[j];
+    filled = y + 1;
     uint32_t open = 0;  // the levels whose run is still open, up to open_end
     uint16_t open_end = 0;
     for (uint32_t i = mask.row_begin[size_t(y)]; i < mask.row_begin[size_t(y) + 1]; ++i) {
@@ -85,9 +98,9 @@ std::vector<LevelRuns> runs_at_levels(const MaskRuns& mask, const std::vector<ui
     }
     close(open, open_end);
   }
+  fill_rows(mask.height + 1);
   for (size_t j = 0; j < count_of_levels; ++j) {
     LevelRuns& r = out[j];
-    r.row_begin[size_t(mask.height)] = count[j];
     r.lo.assign(lo[j], lo[j] + count[j]);
     r.hi.assign(hi[j], hi[j] + count[j]);
   }

@@ -50,7 +50,7 @@ LevelRuns overhang_pixels(const LayerRuns& layer, const LayerRuns& below) {
   const LevelRuns& here_128 = *layer.at_least_128;
   const LevelRuns& below_128 = *below.at_least_128;
   bool any_core = false;
-  for (int y = 0; y < mask.height && !any_core; ++y)
+  for (int y = layer.nonzero_box->y0; y < layer.nonzero_box->y1 && !any_core; ++y)  // rows with pixels here
     for_each_difference(here_128, below_128, y, [&](int lo, int hi) {
       int core_lo, core_hi;
       any_core |= core_of(lo, hi, core_lo, core_hi);
