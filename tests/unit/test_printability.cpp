@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "fake_host.h"
+#include "air_regions.h"
 #include "level_runs.h"
 #include "mask_layers.h"
 #include "shapes.h"
@@ -103,7 +104,7 @@ TEST(LevelRuns, SetOperationsAndLabels) {
   EXPECT_EQ(row0(nonzero), (std::vector<int>{0, 5, 8, 12}));
   EXPECT_EQ(row0(at[1]), (std::vector<int>{0, 5, 10, 12}));
   EXPECT_EQ(row0(at[2]), (std::vector<int>{0, 5}));
-  EXPECT_EQ(row0(complement_runs(nonzero)), (std::vector<int>{5, 8, 12, 16}));
+  EXPECT_EQ(row0(air_layer_of(nonzero).runs), (std::vector<int>{5, 8, 12, 16}));
   const LevelRuns b = runs_at_levels(mask_runs_of(layer(16, 2, {{3, 0, 10, 1}})), {1})[0];
   EXPECT_EQ(row0(subtract_runs(nonzero, b)), (std::vector<int>{0, 3, 10, 12}));
   std::vector<int> overlaps;
@@ -140,6 +141,66 @@ TEST(LevelRuns, AtLevelsAreThePixelsAtOrAboveEachLevel) {
         }
       for (size_t k = 0; k < drawn.size(); ++k)
         ASSERT_EQ(drawn[k], image.pixels[k] >= levels[j] && image.pixels[k] > 0) << trial << " level " << int(levels[j]) << " pixel " << k;
+    }
+  }
+}
+
+// A layer's air is its pixels <= 100, as runs, in the 4-connected regions a flood fill finds, each
+// numbered in order of its first pixel, with its pixels, box and whether it touches the image's
+// edge; on random images of solid blocks and grey pixels (rows empty and full, air at the edges).
+TEST(AirRegions, AirOfALayerIsItsOtherPixelsInTheirFourConnectedRegions) {
+  std::mt19937 rng(5);
+  for (int trial = 0; trial < 60; ++trial) {
+    const int width = 1 + int(rng() % 40), height = 1 + int(rng() % 30);
+    MaskImage image;
+    image.width = width, image.height = height;
+    image.pixels.assign(size_t(width) * size_t(height), 0);
+    for (uint8_t& p : image.pixels) {
+      const uint32_t r = rng() % 8;
+      p = r < 3 ? 0 : r < 6 ? 255 : uint8_t(rng() % 256);
+    }
+    const AirLayer air = air_layer_of(runs_at_levels(mask_runs_of(image), {101})[0]);
+    // The reference: each air pixel's region, numbered as found scanning the rows.
+    std::vector<int> region(image.pixels.size(), -1);
+    std::vector<AirRegion> regions;
+    for (size_t start = 0; start < image.pixels.size(); ++start) {
+      if (image.pixels[start] > 100 || region[start] >= 0) continue;
+      AirRegion r;
+      r.x0 = width, r.y0 = height;
+      std::vector<size_t> stack{start};
+      region[start] = int(regions.size());
+      while (!stack.empty()) {
+        const size_t at = stack.back();
+        stack.pop_back();
+        const int x = int(at % size_t(width)), y = int(at / size_t(width));
+        ++r.pixels;
+        r.x0 = std::min(r.x0, x), r.x1 = std::max(r.x1, x + 1), r.y0 = std::min(r.y0, y), r.y1 = std::max(r.y1, y + 1);
+        r.border |= x == 0 || y == 0 || x == width - 1 || y == height - 1;
+        const int dx[4] = {1, -1, 0, 0}, dy[4] = {0, 0, 1, -1};
+        for (int d = 0; d < 4; ++d) {
+          const int nx = x + dx[d], ny = y + dy[d];
+          if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+          const size_t n = size_t(ny) * size_t(width) + size_t(nx);
+          if (image.pixels[n] > 100 || region[n] >= 0) continue;
+          region[n] = int(regions.size());
+          stack.push_back(n);
+        }
+      }
+      regions.push_back(r);
+    }
+    std::vector<int> drawn(image.pixels.size(), -1);
+    for (int y = 0; y < height; ++y)
+      for (uint32_t i = air.runs.row_begin[size_t(y)]; i < air.runs.row_begin[size_t(y) + 1]; ++i)
+        for (int x = air.runs.lo[i]; x < air.runs.hi[i]; ++x) drawn[size_t(y) * size_t(width) + size_t(x)] = int(air.labels.of_run[i]);
+    ASSERT_EQ(drawn, region) << "trial " << trial;
+    ASSERT_EQ(air.labels.count, regions.size());
+    ASSERT_EQ(air.regions.size(), regions.size());
+    for (size_t c = 0; c < regions.size(); ++c) {
+      const AirRegion &a = air.regions[c], &b = regions[c];
+      EXPECT_EQ(a.pixels, b.pixels);
+      EXPECT_EQ(std::vector<int>({a.x0, a.y0, a.x1, a.y1}), std::vector<int>({b.x0, b.y0, b.x1, b.y1}));
+      EXPECT_EQ(a.border, b.border);
+      EXPECT_EQ(air.solid[c], b.pixels < 4 && !b.border);
     }
   }
 }

@@ -34,29 +34,91 @@ void AirRegions::merge(uint32_t a, uint32_t b) {
   if (track_pieces_) pieces_.join(from.piece, to.piece);
 }
 
-AirLayer air_layer_of(LevelRuns air) {
+AirLayer air_layer_of(const LevelRuns& solid) {
+  // One pass over the rows makes the air's runs (the gaps between solid runs) and labels them as
+  // label_runs does: each run takes the provisional label of the first run above it touches, or
+  // a new one, labels being joined where a run touches runs of other labels; each provisional
+  // label sums its runs. Then the labels are numbered in order of first run and their sums added.
   AirLayer a;
-  a.labels = label_runs(air, false);
-  a.regions.resize(a.labels.count);
-  for (AirRegion& p : a.regions) {
-    p.x0 = air.width;
-    p.y0 = air.height;
-  }
-  for (int y = 0; y < air.height; ++y) {
-    for (uint32_t i = air.row_begin[size_t(y)]; i < air.row_begin[size_t(y) + 1]; ++i) {
-      AirRegion& p = a.regions[a.labels.of_run[i]];
-      p.pixels += air.hi[i] - air.lo[i];
-      p.x0 = std::min<int>(p.x0, air.lo[i]);
-      p.x1 = std::max<int>(p.x1, air.hi[i]);
-      p.y0 = std::min(p.y0, y);
-      p.y1 = y + 1;
-      p.border |= y == 0 || y == air.height - 1 || air.lo[i] == 0 || air.hi[i] == air.width;
+  LevelRuns& air = a.runs;
+  air.width = solid.width;
+  air.height = solid.height;
+  air.row_begin.resize(size_t(solid.height) + 1);
+  const size_t most = solid.runs() + size_t(solid.height);  // a row has one gap more than solid runs
+  air.lo.resize(most);
+  air.hi.resize(most);
+  std::vector<uint32_t> provisional(most);
+  uint16_t* const lo_of = air.lo.data();
+  uint16_t* const hi_of = air.hi.data();
+  std::vector<AirRegion> sums;  // per provisional label
+  UnionFind sets;
+  const int width = solid.width, last_row = solid.height - 1;
+  uint32_t n = 0;  // air runs so far
+  for (int y = 0; y < solid.height; ++y) {
+    air.row_begin[size_t(y)] = n;
+    uint32_t j = y > 0 ? air.row_begin[size_t(y) - 1] : 0;  // the row above's air runs
+    const uint32_t je = n;
+    const bool edge_row = y == 0 || y == last_row;
+    const uint32_t sb = solid.row_begin[size_t(y)], se = solid.row_begin[size_t(y) + 1];
+    // Gap g of the row: before solid run sb + g (the last one: after the last solid run).
+    for (uint32_t g = sb; g <= se; ++g) {
+      const int lo = g == sb ? 0 : solid.hi[g - 1];
+      const int hi = g == se ? width : solid.lo[g];
+      if (lo >= hi) continue;
+      lo_of[n] = uint16_t(lo);
+      hi_of[n] = uint16_t(hi);
+      while (j < je && hi_of[j] <= lo) ++j;
+      uint32_t label;
+      if (j == je || lo_of[j] >= hi) {
+        label = sets.add();
+        sums.emplace_back();
+        AirRegion& r = sums.back();
+        r.x0 = lo, r.y0 = y, r.x1 = hi;
+      } else {
+        label = provisional[j];
+        for (uint32_t k = j + 1; k < je && lo_of[k] < hi; ++k)
+          if (provisional[k] != label) sets.join(provisional[k], label);
+      }
+      provisional[n++] = label;
+      AirRegion& r = sums[label];
+      r.pixels += uint64_t(hi - lo);
+      r.x0 = std::min(r.x0, lo);
+      r.x1 = std::max(r.x1, hi);
+      r.y1 = y + 1;
+      r.border |= edge_row || lo == 0 || hi == width;
     }
+  }
+  air.row_begin[size_t(solid.height)] = n;
+  air.lo.resize(n);
+  air.hi.resize(n);
+  // A provisional label's sums go to its set's root, then the roots are numbered in order of
+  // their first run.
+  for (uint32_t p = 0; p < sums.size(); ++p) {
+    const uint32_t root = sets.find(p);
+    if (root == p) continue;
+    AirRegion& to = sums[root];
+    const AirRegion& from = sums[p];
+    to.pixels += from.pixels;
+    to.x0 = std::min(to.x0, from.x0);
+    to.y0 = std::min(to.y0, from.y0);
+    to.x1 = std::max(to.x1, from.x1);
+    to.y1 = std::max(to.y1, from.y1);
+    to.border |= from.border;
+  }
+  a.labels.of_run.resize(air.runs());
+  std::vector<uint32_t> of_root(sums.size(), UINT32_MAX);
+  for (uint32_t i = 0; i < air.runs(); ++i) {
+    const uint32_t root = sets.find(provisional[i]);
+    uint32_t& label = of_root[root];
+    if (label == UINT32_MAX) {
+      label = a.labels.count++;
+      a.regions.push_back(sums[root]);
+    }
+    a.labels.of_run[i] = label;
   }
   a.solid.resize(a.labels.count);
   for (uint32_t c = 0; c < a.labels.count; ++c)
     a.solid[c] = a.regions[c].pixels < kRequiredAreaToProcessCheck && !a.regions[c].border;
-  a.runs = std::move(air);
   return a;
 }
 

@@ -3,10 +3,12 @@
 // labelled in 3D as it streams in, bottom to top, as UVtools' resin trap and suction cup
 // detection sees it.
 //
-// air_layer_of(air): a layer's air runs (level_runs.h) -> its regions in the layer, joined by
-//   4-connectivity, each with its pixels, box and whether it touches the image border; a region
-//   under 4 pixels (RequiredAreaToProcessCheck) that does not touch the border is taken as solid.
-//   Depends on the layer alone (a job computes it in parallel).
+// air_layer_of(solid): a layer's solid runs (level_runs.h: its pixels above the threshold) -> its
+//   air: the runs of the other pixels, and their regions in the layer, joined by 4-connectivity,
+//   each with its pixels, box and whether it touches the image border; a region under 4 pixels
+//   (RequiredAreaToProcessCheck) that does not touch the border is taken as solid. Regions are
+//   numbered in order of their first run, as label_runs numbers them. Depends on the layer alone
+//   (a job computes it in parallel).
 // add_layer(air, layer, piece_of): the next layer's air regions. A region joins the air of the
 //   layer below that it overlaps by at least 10 pixels (RequiredBlackPixelsToDrain), or by all of
 //   the smaller one's pixels when either has fewer (a narrow vent still connects).
@@ -51,7 +53,7 @@ struct AirLayer {
   std::vector<bool> solid;  // per region: too small to count
 };
 
-AirLayer air_layer_of(LevelRuns air);
+AirLayer air_layer_of(const LevelRuns& solid);
 
 class AirRegions {
  public:

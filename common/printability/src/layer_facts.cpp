@@ -75,7 +75,7 @@ LayerFacts layer_facts_of(MaskRuns mask) {
       f.lit_regions[c].point_pixels += f.points.hi[i] - f.points.lo[i];
     }
   }
-  f.air = air_layer_of(complement_runs(at[2]));
+  f.air = air_layer_of(at[2]);
   f.mask = std::move(mask);
   return f;
 }

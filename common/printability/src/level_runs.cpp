@@ -116,20 +116,6 @@ PixelBox box_of(const LevelRuns& runs) {
   return box;
 }
 
-LevelRuns complement_runs(const LevelRuns& runs) {
-  LevelRuns r = empty_like(runs.width, runs.height);
-  for (int y = 0; y < runs.height; ++y) {
-    int x = 0;
-    for (uint32_t i = runs.row_begin[size_t(y)]; i < runs.row_begin[size_t(y) + 1]; ++i) {
-      if (runs.lo[i] > x) add_run(r, x, runs.lo[i]);
-      x = runs.hi[i];
-    }
-    if (x < runs.width) add_run(r, x, runs.width);
-    r.row_begin.push_back(r.runs());
-  }
-  return r;
-}
-
 LevelRuns subtract_runs(const LevelRuns& a, const LevelRuns& b) {
   LevelRuns r = empty_like(a.width, a.height);
   for (int y = 0; y < a.height; ++y) {

@@ -9,7 +9,6 @@
 //   pixels >= that level (runs of different levels side by side join), all levels in one pass
 //   over the mask's runs.
 // box_of: the box of the runs' pixels.
-// complement_runs: the runs of the pixels in no run of runs (same width and height).
 // subtract_runs: the pixels of a not in b.
 // label_runs: runs -> the connected component of each run (0..count-1, in order of first run),
 //   runs of neighbouring rows joining when they share a column (4-connectivity) or, with
@@ -57,7 +56,6 @@ struct LevelRuns {
 
 std::vector<LevelRuns> runs_at_levels(const MaskRuns& mask, const std::vector<uint8_t>& levels);
 PixelBox box_of(const LevelRuns& runs);
-LevelRuns complement_runs(const LevelRuns& runs);
 LevelRuns subtract_runs(const LevelRuns& a, const LevelRuns& b);
 
 struct RunLabels {

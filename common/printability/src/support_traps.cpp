@@ -76,7 +76,7 @@ TrapLayer prepare_trap_layer(const MaskRuns& mask, const MaskRuns& support_runs)
   TrapLayer out;
   out.air = std::make_unique<TrapLayerAir>();
   AirLayer& a = out.air->air;
-  a = air_layer_of(complement_runs(runs_at_levels(mask, {kTrapSolid})[0]));
+  a = air_layer_of(runs_at_levels(mask, {kTrapSolid})[0]);
   bool pockets = false;
   for (uint32_t c = 0; c < a.labels.count; ++c) pockets |= !a.regions[c].border && !a.solid[c];
   if (!pockets || support_runs.levels.empty()) return out;
