@@ -35,10 +35,9 @@ void AirRegions::merge(uint32_t a, uint32_t b) {
 }
 
 AirLayer air_layer_of(const LevelRuns& solid) {
-  // One pass over the rows makes the air's runs (the gaps between solid runs) and labels them as
-  // label_runs does: each run takes the provisional label of the first run above it touches, or
-  // a new one, labels being joined where a run touches runs of other labels; each provisional
-  // label sums its runs. Then the labels are numbered in order of first run and their sums added.
+  // One pass over the rows makes the air's runs (the gaps between solid runs), labels them as
+  // they come (ProvisionalLabels, as label_runs labels them) and sums each provisional label's
+  // runs; then each set's sums are added up at its root.
   AirLayer a;
   LevelRuns& air = a.runs;
   air.width = solid.width;
@@ -47,11 +46,11 @@ AirLayer air_layer_of(const LevelRuns& solid) {
   const size_t most = solid.runs() + size_t(solid.height);  // a row has one gap more than solid runs
   air.lo.resize(most);
   air.hi.resize(most);
-  std::vector<uint32_t> provisional(most);
   uint16_t* const lo_of = air.lo.data();
   uint16_t* const hi_of = air.hi.data();
+  ProvisionalLabels labels;
+  labels.of_run.reserve(most);
   std::vector<AirRegion> sums;  // per provisional label
-  UnionFind sets;
   const int width = solid.width, last_row = solid.height - 1;
   uint32_t n = 0;  // air runs so far
   for (int y = 0; y < solid.height; ++y) {
@@ -60,27 +59,19 @@ AirLayer air_layer_of(const LevelRuns& solid) {
     const uint32_t je = n;
     const bool edge_row = y == 0 || y == last_row;
     const uint32_t sb = solid.row_begin[size_t(y)], se = solid.row_begin[size_t(y) + 1];
-    // Gap g of the row: before solid run sb + g (the last one: after the last solid run).
+    // Gap g of the row: before solid run g (the last one: after the last solid run).
     for (uint32_t g = sb; g <= se; ++g) {
       const int lo = g == sb ? 0 : solid.hi[g - 1];
       const int hi = g == se ? width : solid.lo[g];
       if (lo >= hi) continue;
       lo_of[n] = uint16_t(lo);
       hi_of[n] = uint16_t(hi);
-      while (j < je && hi_of[j] <= lo) ++j;
-      uint32_t label;
-      if (j == je || lo_of[j] >= hi) {
-        label = sets.add();
+      ++n;
+      if (labels.add(lo_of, hi_of, j, je, lo, hi, 0)) {
         sums.emplace_back();
-        AirRegion& r = sums.back();
-        r.x0 = lo, r.y0 = y, r.x1 = hi;
-      } else {
-        label = provisional[j];
-        for (uint32_t k = j + 1; k < je && lo_of[k] < hi; ++k)
-          if (provisional[k] != label) sets.join(provisional[k], label);
+        sums.back().x0 = lo, sums.back().y0 = y, sums.back().x1 = hi;
       }
-      provisional[n++] = label;
-      AirRegion& r = sums[label];
+      AirRegion& r = sums[labels.of_run.back()];
       r.pixels += uint64_t(hi - lo);
       r.x0 = std::min(r.x0, lo);
       r.x1 = std::max(r.x1, hi);
@@ -91,10 +82,8 @@ AirLayer air_layer_of(const LevelRuns& solid) {
   air.row_begin[size_t(solid.height)] = n;
   air.lo.resize(n);
   air.hi.resize(n);
-  // A provisional label's sums go to its set's root, then the roots are numbered in order of
-  // their first run.
   for (uint32_t p = 0; p < sums.size(); ++p) {
-    const uint32_t root = sets.find(p);
+    const uint32_t root = labels.sets.find(p);
     if (root == p) continue;
     AirRegion& to = sums[root];
     const AirRegion& from = sums[p];
@@ -105,17 +94,10 @@ AirLayer air_layer_of(const LevelRuns& solid) {
     to.y1 = std::max(to.y1, from.y1);
     to.border |= from.border;
   }
-  a.labels.of_run.resize(air.runs());
-  std::vector<uint32_t> of_root(sums.size(), UINT32_MAX);
-  for (uint32_t i = 0; i < air.runs(); ++i) {
-    const uint32_t root = sets.find(provisional[i]);
-    uint32_t& label = of_root[root];
-    if (label == UINT32_MAX) {
-      label = a.labels.count++;
-      a.regions.push_back(sums[root]);
-    }
-    a.labels.of_run[i] = label;
-  }
+  std::vector<uint32_t> root_of_label;
+  a.labels = labels.numbered(&root_of_label);
+  a.regions.reserve(a.labels.count);
+  for (const uint32_t root : root_of_label) a.regions.push_back(sums[root]);
   a.solid.resize(a.labels.count);
   for (uint32_t c = 0; c < a.labels.count; ++c)
     a.solid[c] = a.regions[c].pixels < kRequiredAreaToProcessCheck && !a.regions[c].border;

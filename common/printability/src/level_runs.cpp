@@ -4,7 +4,6 @@
 
 #include "slicereuse/util/error.h"
 #include "slicereuse/util/format.h"
-#include "slicereuse/util/union_find.h"
 
 namespace slicereuse {
 namespace {
@@ -126,34 +125,29 @@ LevelRuns subtract_runs(const LevelRuns& a, const LevelRuns& b) {
 }
 
 RunLabels label_runs(const LevelRuns& runs, bool diagonal) {
-  // Each run takes the provisional label of the first run of the row above that it touches, or a
-  // new one; only where it touches runs of other labels are the labels joined. Most runs touch
-  // one run above, so the sets hold few labels and most finds end at once.
-  const int reach = diagonal ? 1 : 0;  // a corner contact is one column apart
-  std::vector<uint32_t> provisional(runs.runs());
-  UnionFind sets;
+  ProvisionalLabels labels;
+  labels.of_run.reserve(runs.runs());
   for (int y = 0; y < runs.height; ++y) {
     uint32_t j = y > 0 ? runs.row_begin[size_t(y) - 1] : 0;
     const uint32_t je = runs.row_begin[size_t(y)];
-    for (uint32_t i = runs.row_begin[size_t(y)]; i < runs.row_begin[size_t(y) + 1]; ++i) {
-      while (j < je && runs.hi[j] + reach <= runs.lo[i]) ++j;
-      uint32_t k = j;
-      if (k == je || runs.lo[k] >= runs.hi[i] + reach) {
-        provisional[i] = sets.add();
-        continue;
-      }
-      const uint32_t label = provisional[k];
-      provisional[i] = label;
-      for (++k; k < je && runs.lo[k] < runs.hi[i] + reach; ++k)
-        if (provisional[k] != label) sets.join(provisional[k], label);
-    }
+    for (uint32_t i = runs.row_begin[size_t(y)]; i < runs.row_begin[size_t(y) + 1]; ++i)
+      labels.add(runs.lo.data(), runs.hi.data(), j, je, runs.lo[i], runs.hi[i], diagonal ? 1 : 0);
   }
+  return labels.numbered();
+}
+
+RunLabels ProvisionalLabels::numbered(std::vector<uint32_t>* root_of_label) {
   RunLabels labels;
-  labels.of_run.resize(runs.runs());
+  labels.of_run.resize(of_run.size());
   std::vector<uint32_t> of_root(sets.parent.size(), UINT32_MAX);
-  for (uint32_t i = 0; i < runs.runs(); ++i) {
-    uint32_t& label = of_root[sets.find(provisional[i])];
-    if (label == UINT32_MAX) label = labels.count++;
+  if (root_of_label) root_of_label->clear();
+  for (size_t i = 0; i < of_run.size(); ++i) {
+    const uint32_t root = sets.find(of_run[i]);
+    uint32_t& label = of_root[root];
+    if (label == UINT32_MAX) {
+      label = labels.count++;
+      if (root_of_label) root_of_label->push_back(root);
+    }
     labels.of_run[i] = label;
   }
   return labels;

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "slicereuse/png/mask_png.h"
+#include "slicereuse/util/union_find.h"
 
 namespace slicereuse {
 
@@ -63,6 +64,33 @@ struct RunLabels {
   uint32_t count = 0;
 };
 RunLabels label_runs(const LevelRuns& runs, bool diagonal);
+
+// ProvisionalLabels: label_runs' labelling of runs as they are made, row after row (air_layer_of
+// makes and labels the air's runs in one pass). add(lo_of, hi_of, j, je, lo, hi, reach) labels the
+// next run, [lo, hi), of a row whose row above holds runs [j, je) of lo_of and hi_of (j advances
+// as the row's runs come, left to right; reach 1 joins runs touching at a corner): it takes the
+// label of the first run above it touches, or a new one (returns true), and the labels of other
+// runs above it touches are joined to it. Most runs touch one run above, so the sets hold few
+// labels and most finds end at once. numbered(root_of_label) numbers the sets in order of their
+// first run; root_of_label, when not null, gets each one's root among the provisional labels.
+struct ProvisionalLabels {
+  std::vector<uint32_t> of_run;
+  UnionFind sets;
+
+  bool add(const uint16_t* lo_of, const uint16_t* hi_of, uint32_t& j, uint32_t je, int lo, int hi, int reach) {
+    while (j < je && hi_of[j] + reach <= lo) ++j;
+    if (j == je || lo_of[j] >= hi + reach) {
+      of_run.push_back(sets.add());
+      return true;
+    }
+    const uint32_t label = of_run[j];
+    for (uint32_t k = j + 1; k < je && lo_of[k] < hi + reach; ++k)
+      if (of_run[k] != label) sets.join(of_run[k], label);
+    of_run.push_back(label);
+    return false;
+  }
+  RunLabels numbered(std::vector<uint32_t>* root_of_label = nullptr);
+};
 std::vector<uint64_t> pixels_inside(const LevelRuns& other, const LevelRuns& runs, const RunLabels& labels);
 
 template <class F>
