@@ -137,16 +137,18 @@ RunLabels label_runs(const LevelRuns& runs, bool diagonal) {
 }
 
 RunLabels ProvisionalLabels::numbered(std::vector<uint32_t>* root_of_label) {
+  // Each provisional label's set found once (there are few), then each run's numbered through it.
+  const uint32_t count = uint32_t(sets.parent.size());
+  std::vector<uint32_t> root(count), of_root(count, UINT32_MAX);
+  for (uint32_t p = 0; p < count; ++p) root[p] = sets.find(p);
   RunLabels labels;
   labels.of_run.resize(of_run.size());
-  std::vector<uint32_t> of_root(sets.parent.size(), UINT32_MAX);
   if (root_of_label) root_of_label->clear();
   for (size_t i = 0; i < of_run.size(); ++i) {
-    const uint32_t root = sets.find(of_run[i]);
-    uint32_t& label = of_root[root];
+    uint32_t& label = of_root[root[of_run[i]]];
     if (label == UINT32_MAX) {
       label = labels.count++;
-      if (root_of_label) root_of_label->push_back(root);
+      if (root_of_label) root_of_label->push_back(root[of_run[i]]);
     }
     labels.of_run[i] = label;
   }
