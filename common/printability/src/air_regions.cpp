@@ -59,6 +59,16 @@ AirLayer air_layer_of(const LevelRuns& solid) {
     const uint32_t je = n;
     const bool edge_row = y == 0 || y == last_row;
     const uint32_t sb = solid.row_begin[size_t(y)], se = solid.row_begin[size_t(y) + 1];
+    if (sb == se && je - j == 1 && lo_of[j] == 0 && hi_of[j] == width) {
+      // A row all air under a row all air (most rows of a display): its region, one row more.
+      lo_of[n] = 0, hi_of[n] = uint16_t(width);
+      labels.of_run.push_back(labels.of_run[j]);
+      ++n;
+      AirRegion& r = sums[labels.of_run.back()];
+      r.pixels += uint64_t(width);
+      r.y1 = y + 1;
+      continue;
+    }
     // Gap g of the row: before solid run g (the last one: after the last solid run).
     for (uint32_t g = sb; g <= se; ++g) {
       const int lo = g == sb ? 0 : solid.hi[g - 1];
