@@ -47,11 +47,11 @@ void find_touching(const MaskRuns& mask, PixelBox& box, uint64_t& pixels) {
 
 LayerFacts layer_facts_of(MaskRuns mask) {
   LayerFacts f;
-  std::vector<LevelRuns> at = runs_at_levels(mask, {kIslandLit, kIslandPointLevel, kTrapSolid, 128, kSupportLevel});
+  std::vector<LevelRuns> at = runs_at_levels(mask, {kIslandLit, kIslandPointLevel, kTrapSolid, kSupportLevel});
   f.lit = std::move(at[0]);
   f.points = std::move(at[1]);
-  f.at_least_128 = std::move(at[3]);
-  f.support = std::move(at[4]);
+  f.solid = std::move(at[2]);
+  f.support = std::move(at[3]);
   f.nonzero_box = nonzero_box_of(mask);
   find_touching(mask, f.touching_box, f.touching_pixels);
 
@@ -75,7 +75,7 @@ LayerFacts layer_facts_of(MaskRuns mask) {
       f.lit_regions[c].point_pixels += f.points.hi[i] - f.points.lo[i];
     }
   }
-  f.air = air_layer_of(at[2]);
+  f.air = air_layer_of(f.solid);
   f.mask = std::move(mask);
   return f;
 }

@@ -30,7 +30,7 @@ struct LitRegion {
 struct LayerFacts {
   MaskRuns mask;
   PixelBox nonzero_box;                       // of its pixels > 0
-  LevelRuns lit, points, at_least_128, support;  // > 1, >= 10, >= 128, >= 150
+  LevelRuns lit, points, solid, support;  // > 1, >= 10, >= 101, >= 150
   RunLabels lit_labels;                       // region of each run of lit
   std::vector<LitRegion> lit_regions;
   std::vector<uint32_t> point_region;  // region of each run of points (the lit run holding it)

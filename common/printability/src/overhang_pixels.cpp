@@ -45,17 +45,24 @@ LevelRuns overhang_pixels(const LayerRuns& layer, const LayerRuns& below) {
   kept.width = mask.width;
   kept.height = mask.height;
   kept.row_begin.assign(size_t(mask.height) + 1, 0);
+  // Whether a run of the pixels of a not in b holds a core, in the rows with pixels here.
+  const auto any_core_in = [&](const LevelRuns& a, const LevelRuns& b) {
+    bool any = false;
+    for (int y = layer.nonzero_box->y0; y < layer.nonzero_box->y1 && !any; ++y)
+      for_each_difference(a, b, y, [&](int lo, int hi) {
+        int core_lo, core_hi;
+        any |= core_of(lo, hi, core_lo, core_hi);
+      });
+    return any;
+  };
   // Brighter by more than 127 needs >= 128 here and < 128 below (the candidates); the levels
-  // decide the rest. Most layers have no candidate run with a core: they are not kept.
-  const LevelRuns& here_128 = *layer.at_least_128;
-  const LevelRuns& below_128 = *below.at_least_128;
-  bool any_core = false;
-  for (int y = layer.nonzero_box->y0; y < layer.nonzero_box->y1 && !any_core; ++y)  // rows with pixels here
-    for_each_difference(here_128, below_128, y, [&](int lo, int hi) {
-      int core_lo, core_hi;
-      any_core |= core_of(lo, hi, core_lo, core_hi);
-    });
-  if (!any_core) return kept;
+  // decide the rest. The candidates lie within the pixels >= 101 here and < 150 below, whose
+  // runs the layers have: most layers have no run of those with a core, and are not kept; the
+  // others have their candidates found.
+  if (!any_core_in(*layer.solid, *below.support)) return kept;
+  const LevelRuns here_128 = runs_at_levels(mask, {128})[0];
+  const LevelRuns below_128 = runs_at_levels(*below.mask, {128})[0];
+  if (!any_core_in(here_128, below_128)) return kept;
   const LevelRuns candidates = subtract_runs(here_128, below_128);
   LevelRuns brighter;
   brighter.width = mask.width;

@@ -6,8 +6,8 @@
 // boxes (UVtools crops both to it and reflects at its border, which never erodes: a pixel
 // mirrored across the border is farther than the pixel it mirrors).
 // In: both masks as runs of levels (same size) with the box of their pixels > 0 and their runs
-// of pixels >= 128; out:
-// runs (level_runs.h).
+// of pixels >= 101 and >= 150 (the checks' levels, which bound the pixels >= 128 the overhangs
+// start from); out: runs (level_runs.h).
 // Time: the lit runs, plus a distance transform over the box of the pixels with 40 brighter
 // pixels on either side in their row (and 41 pixels around it): none where the layer only
 // shrinks, repeats or widens by thin rims the layer below.
@@ -19,7 +19,8 @@ namespace slicereuse {
 struct LayerRuns {
   const MaskRuns* mask = nullptr;
   const PixelBox* nonzero_box = nullptr;
-  const LevelRuns* at_least_128 = nullptr;
+  const LevelRuns* solid = nullptr;    // pixels >= 101
+  const LevelRuns* support = nullptr;  // pixels >= 150
 };
 
 LevelRuns overhang_pixels(const LayerRuns& layer, const LayerRuns& below);
