@@ -92,22 +92,16 @@ AirLayer air_layer_of(const LevelRuns& solid) {
   air.row_begin[size_t(solid.height)] = n;
   air.lo.resize(n);
   air.hi.resize(n);
-  for (uint32_t p = 0; p < sums.size(); ++p) {
-    const uint32_t root = labels.sets.find(p);
-    if (root == p) continue;
-    AirRegion& to = sums[root];
-    const AirRegion& from = sums[p];
+  std::vector<uint32_t> root_of_label;
+  a.labels = labels.numbered(&root_of_label);
+  a.regions = labels.summed(sums, root_of_label, [](AirRegion& to, const AirRegion& from) {
     to.pixels += from.pixels;
     to.x0 = std::min(to.x0, from.x0);
     to.y0 = std::min(to.y0, from.y0);
     to.x1 = std::max(to.x1, from.x1);
     to.y1 = std::max(to.y1, from.y1);
     to.border |= from.border;
-  }
-  std::vector<uint32_t> root_of_label;
-  a.labels = labels.numbered(&root_of_label);
-  a.regions.reserve(a.labels.count);
-  for (const uint32_t root : root_of_label) a.regions.push_back(sums[root]);
+  });
   a.solid.resize(a.labels.count);
   for (uint32_t c = 0; c < a.labels.count; ++c)
     a.solid[c] = a.regions[c].pixels < kRequiredAreaToProcessCheck && !a.regions[c].border;

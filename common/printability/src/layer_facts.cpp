@@ -55,18 +55,30 @@ LayerFacts layer_facts_of(MaskRuns mask) {
   f.nonzero_box = nonzero_box_of(mask);
   find_touching(mask, f.touching_box, f.touching_pixels);
 
-  f.lit_labels = label_runs(f.lit, false);  // UVtools: AllowDiagonalBonds false
-  f.lit_regions.resize(f.lit_labels.count);
-  for (int y = 0; y < f.lit.height; ++y) {
+  // The lit regions (UVtools: AllowDiagonalBonds false) labelled and summed in one pass over the
+  // rows with pixels, as air_layer_of does the air's.
+  ProvisionalLabels labels;
+  labels.of_run.reserve(f.lit.runs());
+  std::vector<LitRegion> sums;  // per provisional label
+  for (int y = f.nonzero_box.y0; y < f.nonzero_box.y1; ++y) {
+    uint32_t j = y > 0 ? f.lit.row_begin[size_t(y) - 1] : 0;
+    const uint32_t je = f.lit.row_begin[size_t(y)];
     for (uint32_t i = f.lit.row_begin[size_t(y)]; i < f.lit.row_begin[size_t(y) + 1]; ++i) {
-      LitRegion& r = f.lit_regions[f.lit_labels.of_run[i]];
+      if (labels.add(f.lit.lo.data(), f.lit.hi.data(), j, je, f.lit.lo[i], f.lit.hi[i], 0)) sums.emplace_back();
+      LitRegion& r = sums[labels.of_run.back()];
       r.pixels += f.lit.hi[i] - f.lit.lo[i];
       r.box.add(f.lit.lo[i], f.lit.hi[i], y);
     }
   }
+  std::vector<uint32_t> root_of_label;
+  f.lit_labels = labels.numbered(&root_of_label);
+  f.lit_regions = labels.summed(sums, root_of_label, [](LitRegion& to, const LitRegion& from) {
+    to.pixels += from.pixels;
+    to.box.add(from.box);
+  });
   // Pixels >= 10 are lit: each run of them lies in one lit run.
   f.point_region.resize(f.points.runs());
-  for (int y = 0; y < f.points.height; ++y) {
+  for (int y = f.nonzero_box.y0; y < f.nonzero_box.y1; ++y) {
     uint32_t j = f.lit.row_begin[size_t(y)];
     for (uint32_t i = f.points.row_begin[size_t(y)]; i < f.points.row_begin[size_t(y) + 1]; ++i) {
       while (f.lit.hi[j] <= f.points.lo[i]) ++j;

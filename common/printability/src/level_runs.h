@@ -72,7 +72,8 @@ RunLabels label_runs(const LevelRuns& runs, bool diagonal);
 // label of the first run above it touches, or a new one (returns true), and the labels of other
 // runs above it touches are joined to it. Most runs touch one run above, so the sets hold few
 // labels and most finds end at once. numbered(root_of_label) numbers the sets in order of their
-// first run; root_of_label, when not null, gets each one's root among the provisional labels.
+// first run; root_of_label, when not null, gets each one's root among the provisional labels;
+// summed turns sums kept per provisional label into sums per label.
 struct ProvisionalLabels {
   std::vector<uint32_t> of_run;
   UnionFind sets;
@@ -90,6 +91,19 @@ struct ProvisionalLabels {
     return false;
   }
   RunLabels numbered(std::vector<uint32_t>* root_of_label = nullptr);
+  // Sums kept per provisional label (sums[p]) -> per label, as numbered gave their roots: each
+  // set's sums added at its root by add(to, from).
+  template <class Sums, class Add>
+  std::vector<Sums> summed(std::vector<Sums>& sums, const std::vector<uint32_t>& root_of_label, Add add) {
+    for (uint32_t p = 0; p < sums.size(); ++p) {
+      const uint32_t root = sets.find(p);
+      if (root != p) add(sums[root], sums[p]);
+    }
+    std::vector<Sums> out;
+    out.reserve(root_of_label.size());
+    for (const uint32_t root : root_of_label) out.push_back(sums[root]);
+    return out;
+  }
 };
 std::vector<uint64_t> pixels_inside(const LevelRuns& other, const LevelRuns& runs, const RunLabels& labels);
 
