@@ -99,8 +99,8 @@ struct LayerChecker::State {
 
   // Islands and overhangs of a layer above layer 0.
   void check_islands_and_overhangs(const LayerFacts& f, size_t layer) {
-    const LevelRuns overhang =
-        overhang_pixels({&f.mask, &f.nonzero_box, &f.solid, &f.support}, {&below.mask, &below.nonzero_box, &below.solid, &below.support});
+    const LevelRuns overhang = overhang_pixels({&f.mask, &f.nonzero_box, &f.solid, &f.support},
+                                               {&below.mask, &below.nonzero_box, &below.solid, &below.support});
     if (overhang.runs() > 0) add_overhang_findings(overhang, layer);
 
     // Per region, its pixels >= 10 on pixels >= 150 below (the rows of its pixels > 0 hold them).

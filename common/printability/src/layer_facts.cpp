@@ -60,16 +60,12 @@ LayerFacts layer_facts_of(MaskRuns mask) {
   ProvisionalLabels labels;
   labels.of_run.reserve(f.lit.runs());
   std::vector<LitRegion> sums;  // per provisional label
-  for (int y = f.nonzero_box.y0; y < f.nonzero_box.y1; ++y) {
-    uint32_t j = y > 0 ? f.lit.row_begin[size_t(y) - 1] : 0;
-    const uint32_t je = f.lit.row_begin[size_t(y)];
-    for (uint32_t i = f.lit.row_begin[size_t(y)]; i < f.lit.row_begin[size_t(y) + 1]; ++i) {
-      if (labels.add(f.lit.lo.data(), f.lit.hi.data(), j, je, f.lit.lo[i], f.lit.hi[i], 0)) sums.emplace_back();
-      LitRegion& r = sums[labels.of_run.back()];
-      r.pixels += f.lit.hi[i] - f.lit.lo[i];
-      r.box.add(f.lit.lo[i], f.lit.hi[i], y);
-    }
-  }
+  labels.add_rows(f.lit, f.nonzero_box.y0, f.nonzero_box.y1, 0, [&](uint32_t i, int y, bool fresh) {
+    if (fresh) sums.emplace_back();
+    LitRegion& r = sums[labels.of_run.back()];
+    r.pixels += f.lit.hi[i] - f.lit.lo[i];
+    r.box.add(f.lit.lo[i], f.lit.hi[i], y);
+  });
   std::vector<uint32_t> root_of_label;
   f.lit_labels = labels.numbered(&root_of_label);
   f.lit_regions = labels.summed(sums, root_of_label, [](LitRegion& to, const LitRegion& from) {

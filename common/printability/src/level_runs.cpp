@@ -127,12 +127,7 @@ LevelRuns subtract_runs(const LevelRuns& a, const LevelRuns& b) {
 RunLabels label_runs(const LevelRuns& runs, bool diagonal) {
   ProvisionalLabels labels;
   labels.of_run.reserve(runs.runs());
-  for (int y = 0; y < runs.height; ++y) {
-    uint32_t j = y > 0 ? runs.row_begin[size_t(y) - 1] : 0;
-    const uint32_t je = runs.row_begin[size_t(y)];
-    for (uint32_t i = runs.row_begin[size_t(y)]; i < runs.row_begin[size_t(y) + 1]; ++i)
-      labels.add(runs.lo.data(), runs.hi.data(), j, je, runs.lo[i], runs.hi[i], diagonal ? 1 : 0);
-  }
+  labels.add_rows(runs, 0, runs.height, diagonal ? 1 : 0, [](uint32_t, int, bool) {});
   return labels.numbered();
 }
 

@@ -73,7 +73,8 @@ RunLabels label_runs(const LevelRuns& runs, bool diagonal);
 // runs above it touches are joined to it. Most runs touch one run above, so the sets hold few
 // labels and most finds end at once. numbered(root_of_label) numbers the sets in order of their
 // first run; root_of_label, when not null, gets each one's root among the provisional labels;
-// summed turns sums kept per provisional label into sums per label.
+// summed turns sums kept per provisional label into sums per label. add_rows adds the runs of rows
+// that exist already.
 struct ProvisionalLabels {
   std::vector<uint32_t> of_run;
   UnionFind sets;
@@ -89,6 +90,17 @@ struct ProvisionalLabels {
       if (of_run[k] != label) sets.join(of_run[k], label);
     of_run.push_back(label);
     return false;
+  }
+  // Adds rows [y0, y1) of runs (the row before y0 holds none), calling visit(i, y, fresh) after
+  // labelling each run i of row y, fresh when it started a label.
+  template <class Visit>
+  void add_rows(const LevelRuns& runs, int y0, int y1, int reach, Visit visit) {
+    for (int y = y0; y < y1; ++y) {
+      uint32_t j = y > 0 ? runs.row_begin[size_t(y) - 1] : 0;
+      const uint32_t je = runs.row_begin[size_t(y)];
+      for (uint32_t i = runs.row_begin[size_t(y)]; i < runs.row_begin[size_t(y) + 1]; ++i)
+        visit(i, y, add(runs.lo.data(), runs.hi.data(), j, je, runs.lo[i], runs.hi[i], reach));
+    }
   }
   RunLabels numbered(std::vector<uint32_t>* root_of_label = nullptr);
   // Sums kept per provisional label (sums[p]) -> per label, as numbered gave their roots: each
