@@ -115,6 +115,19 @@ TEST(LevelRuns, SetOperationsAndLabels) {
   EXPECT_EQ(label_runs(nonzero, true).count, 1u);
 }
 
+// A width x height image of random pixels: of every 8, 3 black and `full` at 255 on average, the
+// others of any level.
+MaskImage random_image(std::mt19937& rng, int width, int height, uint32_t full) {
+  MaskImage image;
+  image.width = width, image.height = height;
+  image.pixels.assign(size_t(width) * size_t(height), 0);
+  for (uint8_t& p : image.pixels) {
+    const uint32_t r = rng() % 8;
+    p = r < 3 ? 0 : r < 3 + full ? 255 : uint8_t(rng() % 256);
+  }
+  return image;
+}
+
 // Every level's runs are exactly the pixels at or above it, on random grey images (runs of every
 // level side by side, gaps, rows empty and full), the levels given in no order, the image's
 // edges included.
@@ -123,13 +136,7 @@ TEST(LevelRuns, AtLevelsAreThePixelsAtOrAboveEachLevel) {
   const std::vector<uint8_t> levels{150, 2, 101, 10, 128, 255, 1};
   for (int trial = 0; trial < 40; ++trial) {
     const int width = 1 + int(rng() % 90), height = 1 + int(rng() % 6);
-    MaskImage image;
-    image.width = width, image.height = height;
-    image.pixels.assign(size_t(width) * size_t(height), 0);
-    for (uint8_t& p : image.pixels) {
-      const uint32_t r = rng() % 8;
-      p = r < 3 ? 0 : r < 5 ? 255 : uint8_t(rng() % 256);
-    }
+    const MaskImage image = random_image(rng, width, height, 2);
     const std::vector<LevelRuns> at = runs_at_levels(mask_runs_of(image), levels);
     ASSERT_EQ(at.size(), levels.size());
     for (size_t j = 0; j < levels.size(); ++j) {
@@ -152,13 +159,7 @@ TEST(AirRegions, AirOfALayerIsItsOtherPixelsInTheirFourConnectedRegions) {
   std::mt19937 rng(5);
   for (int trial = 0; trial < 60; ++trial) {
     const int width = 1 + int(rng() % 40), height = 1 + int(rng() % 30);
-    MaskImage image;
-    image.width = width, image.height = height;
-    image.pixels.assign(size_t(width) * size_t(height), 0);
-    for (uint8_t& p : image.pixels) {
-      const uint32_t r = rng() % 8;
-      p = r < 3 ? 0 : r < 6 ? 255 : uint8_t(rng() % 256);
-    }
+    const MaskImage image = random_image(rng, width, height, 3);
     const AirLayer air = air_layer_of(runs_at_levels(mask_runs_of(image), {101})[0]);
     // The reference: each air pixel's region, numbered as found scanning the rows.
     std::vector<int> region(image.pixels.size(), -1);
