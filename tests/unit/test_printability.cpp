@@ -108,7 +108,8 @@ TEST(LevelRuns, SetOperationsAndLabels) {
   const LevelRuns b = runs_at_levels(mask_runs_of(layer(16, 2, {{3, 0, 10, 1}})), {1})[0];
   EXPECT_EQ(row0(subtract_runs(nonzero, b)), (std::vector<int>{0, 3, 10, 12}));
   std::vector<int> overlaps;
-  for_each_overlap(nonzero, b, 0, [&](uint32_t, uint32_t, int lo, int hi) { overlaps.insert(overlaps.end(), {lo, hi}); });
+  for_each_overlap(nonzero, b, 0,
+                   [&](uint32_t, uint32_t, int lo, int hi) { overlaps.insert(overlaps.end(), {lo, hi}); });
   EXPECT_EQ(overlaps, (std::vector<int>{3, 5, 8, 10}));
   // Row 1's [5, 8) touches row 0's runs only at corners: one region with diagonals, three without.
   EXPECT_EQ(label_runs(nonzero, false).count, 3u);
@@ -192,7 +193,8 @@ TEST(AirRegions, AirOfALayerIsItsOtherPixelsInTheirFourConnectedRegions) {
     std::vector<int> drawn(image.pixels.size(), -1);
     for (int y = 0; y < height; ++y)
       for (uint32_t i = air.runs.row_begin[size_t(y)]; i < air.runs.row_begin[size_t(y) + 1]; ++i)
-        for (int x = air.runs.lo[i]; x < air.runs.hi[i]; ++x) drawn[size_t(y) * size_t(width) + size_t(x)] = int(air.labels.of_run[i]);
+        for (int x = air.runs.lo[i]; x < air.runs.hi[i]; ++x)
+          drawn[size_t(y) * size_t(width) + size_t(x)] = int(air.labels.of_run[i]);
     ASSERT_EQ(drawn, region) << "trial " << trial;
     ASSERT_EQ(air.labels.count, regions.size());
     ASSERT_EQ(air.regions.size(), regions.size());

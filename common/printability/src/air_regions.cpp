@@ -9,6 +9,11 @@ namespace {
 
 constexpr uint32_t kSolid = UINT32_MAX;
 
+// Marks the rows of a region: it holds runs in every row of its box (it is 4-connected).
+void mark_rows(std::vector<uint8_t>& rows, const AirRegion& r) {
+  std::fill(rows.begin() + r.y0, rows.begin() + r.y1, uint8_t(1));
+}
+
 }  // namespace
 
 void AirRegions::merge(uint32_t a, uint32_t b) {
@@ -140,12 +145,10 @@ void AirRegions::add_layer(AirLayer layer_air, size_t layer, std::vector<uint32_
   struct Shared {
     uint64_t key = 0, pixels = 0, below_area = 0;
   };
-  // A region holds runs in every row of its box (it is 4-connected): the rows with inner air are
-  // its boxes' rows.
   std::vector<Shared> shared;
   std::vector<uint8_t> inner_rows(size_t(air.height), 0);
   for (uint32_t c = 0; c < labels.count; ++c)
-    if (node[c] != kSolid && !pieces[c].border) std::fill(&inner_rows[size_t(pieces[c].y0)], &inner_rows[size_t(pieces[c].y1 - 1)] + 1, 1);
+    if (node[c] != kSolid && !pieces[c].border) mark_rows(inner_rows, pieces[c]);
   if (previous_air_.height == air.height && previous_air_.width == air.width) {
     for (int y = 0; y < air.height; ++y) {
       if (!inner_rows[size_t(y)] && !previous_inner_rows_[size_t(y)]) continue;
@@ -207,8 +210,7 @@ void AirRegions::add_layer(AirLayer layer_air, size_t layer, std::vector<uint32_
   sets_ = UnionFind(regions_.size());
   previous_inner_rows_.assign(size_t(air.height), 0);
   for (uint32_t c = 0; c < labels.count; ++c)
-    if (previous_node_[c] != kSolid && !regions_[previous_node_[c]].border)
-      std::fill(&previous_inner_rows_[size_t(pieces[c].y0)], &previous_inner_rows_[size_t(pieces[c].y1 - 1)] + 1, 1);
+    if (previous_node_[c] != kSolid && !regions_[previous_node_[c]].border) mark_rows(previous_inner_rows_, pieces[c]);
   previous_air_ = std::move(layer_air.runs);
   previous_labels_ = std::move(layer_air.labels.of_run);
 }

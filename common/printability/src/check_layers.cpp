@@ -106,8 +106,9 @@ struct LayerChecker::State {
     // Per region, its pixels >= 10 on pixels >= 150 below (the rows of its pixels > 0 hold them).
     std::vector<uint64_t> supported(f.lit_labels.count, 0);
     for (int y = f.nonzero_box.y0; y < f.nonzero_box.y1; ++y)
-      for_each_overlap(f.points, below.support, y,
-                       [&](uint32_t i, uint32_t, int lo, int hi) { supported[f.point_region[i]] += uint64_t(hi - lo); });
+      for_each_overlap(f.points, below.support, y, [&](uint32_t i, uint32_t, int lo, int hi) {
+        supported[f.point_region[i]] += uint64_t(hi - lo);
+      });
     std::vector<uint64_t> overhanging;  // only where a region is held well enough to need it
     for (uint32_t c = 0; c < f.lit_labels.count; ++c) {
       const LitRegion& r = f.lit_regions[c];
