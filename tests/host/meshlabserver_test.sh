@@ -386,32 +386,33 @@ crossparam)
   no_outputs
   ;;
 supports)
-  # The three support examples on a sphere family (raised, its lower half overhangs): points
-  # generated on member 0, transferred to member 1 (kept + moved + dropped = the source's),
-  # its supports built from its file; member 1's print job on the transferred supports stands
-  # 60 layers (5 mm and the pad's 1 mm at 0.1 mm) higher. A points file for another mesh is refused in words.
-  "$GEN_FAMILY" --shape sphere --faces 4000 --members 2 --height 6 --seed 7 --out sph >/dev/null
-  ok log_gen.txt -i sph/member_000.ply -s "$EXAMPLES/generate_supports.mlx"
+  # The three support examples on a box family (raised: its flat bottom takes points on both
+  # sides of x = 0, which the edit example tells apart): points generated on member 0,
+  # transferred to member 1 (kept + moved + dropped = the source's), its supports built from its
+  # file; member 1's print job on the transferred supports stands 60 layers (5 mm and the pad's
+  # 1 mm at 0.1 mm) higher. A points file for another mesh is refused in words.
+  "$GEN_FAMILY" --shape box --faces 4000 --members 2 --height 6 --seed 7 --out boxes >/dev/null
+  ok log_gen.txt -i boxes/member_000.ply -s "$EXAMPLES/generate_supports.mlx"
   points=$(result log_gen.txt points)
   above "$points" 0 || fail "no support points: $(grep slicereuse-result log_gen.txt)"
   [ -f out/source.srp ] || fail "no out/source.srp"
-  ok log_tr.txt -i sph/member_001.ply -s "$EXAMPLES/transfer_supports.mlx"
+  ok log_tr.txt -i boxes/member_001.ply -s "$EXAMPLES/transfer_supports.mlx"
   [ "$(result log_tr.txt transferred)" = "$points" ] || fail "transfer: $(grep slicereuse-result log_tr.txt)"
   [ $(( $(result log_tr.txt kept) + $(result log_tr.txt moved) + $(result log_tr.txt dropped) )) = "$points" ] ||
     fail "kept + moved + dropped is not the source's: $(grep slicereuse-result log_tr.txt)"
-  ok log_build.txt -i sph/member_001.ply -s "$EXAMPLES/build_supports.mlx"
+  ok log_build.txt -i boxes/member_001.ply -s "$EXAMPLES/build_supports.mlx"
   [ "$(result log_build.txt layers_below)" = 60 ] || fail "build: $(grep slicereuse-result log_build.txt)"
   [ "$(result log_build.txt points)" = "$(result log_tr.txt points)" ] || fail "build: not the member's points"
   edit print_job.mlx job.mlx 's#name="encoding_file" value="out/slice.enc"#name="encoding_file" value=""#' \
     's#name="supports" value="0"#name="supports" value="2"#' \
     's#name="support_points_file" value=""#name="support_points_file" value="out/source.srp"#' \
     's#out/print_job\.sl1#out/supported.sl1#'
-  ok log_job.txt -i sph/member_001.ply -s job.mlx
+  ok log_job.txt -i boxes/member_001.ply -s job.mlx
   [ "$(result log_job.txt support_points)" = "$(result log_tr.txt points)" ] || fail "job: $(grep slicereuse-result log_job.txt)"
   [ -f out/supported.sl1 ] || fail "no out/supported.sl1"
   # The point layer edited with MeshLab's own selection and delete filters: the supports are
   # built from the points left, as many as were generated minus those deleted.
-  ok log_edit.txt -i sph/member_000.ply -s "$EXAMPLES/edit_supports.mlx"
+  ok log_edit.txt -i boxes/member_000.ply -s "$EXAMPLES/edit_supports.mlx"
   deleted=$(sed -n 's/^LOG: [0-9]* Deleted \([0-9]*\) vertices, 0 faces\.$/\1/p' log_edit.txt | head -n 1)
   above "$deleted" 0 || fail "edit: no point deleted: $(grep -E 'Deleted|slicereuse-result' log_edit.txt)"
   [ "$(result log_edit.txt points)" = $(( points - deleted )) ] ||

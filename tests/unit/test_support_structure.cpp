@@ -248,7 +248,7 @@ SupportPoints generated(const Mesh& part) {
   so.thickness = kLayer;
   so.z_start = 0;
   SupportPointOptions o;
-  o.density_relative = 3;
+  o.density_relative = 6;  // points close enough that heads join their neighbours' pillars
   o.critical_angle_deg = 60;
   return generate_support_points(part, slice_layers(part, so), o);
 }

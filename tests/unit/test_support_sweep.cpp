@@ -4,10 +4,10 @@
 // and checked (support_checks.h): no island and no resin trap in the print file (the traps
 // supports close are lit, support_traps.h: before, 414 traps on 8 of these parts), nothing lit
 // more than 1 mm from the layer below, no foot in the air, pillars entering the part only at
-// heads. The supports' resin within 1.3x PrusaSlicer's holds on all parts but those whose base
-// lies nearly flat (an island on which the masks' 1 mm rule asks a point about every 1.4 mm, where
-// PrusaSlicer's stand 3 mm apart: 2 of these 12, 2 of the large sweep's 100), so it is measured,
-// not asserted, by the large sweep (bench/support_sweep.py, bench/RESULTS.md).
+// heads. The supports' resin within 1.3x PrusaSlicer's holds on all of the large sweep's 100
+// parts and on 11 of these 12: the arch lying flat (the first) takes 1.68x, where PrusaSlicer's own
+// file has 3 islands. PrusaSlicer is not in the test environment, so the resin is measured, not
+// asserted, by bench/support_sweep.py (bench/RESULTS.md).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -74,6 +74,19 @@ TEST_F(SupportSweepTest, AHeadTouchingAPieceThatRestsIsHeld) {
   EXPECT_EQ(f.support_islands, 0u) << "the first in layer " << f.support_island_layer;
   EXPECT_EQ(f.islands, 0u);
   EXPECT_EQ(f.feet_in_air, 0u);
+}
+
+// A part of the large sweep whose lowest edge rises 1.6 degrees along the box: each layer's strip
+// ends in a wedge narrower than a pixel, which its mask leaves unlit. Measured from the layers'
+// regions, the layer above reached 0.9 mm beyond, not far enough to need a point; measured on the
+// masks, its lit tip stood 1.1 mm from the lit pixels below. Far areas are now measured from the
+// layer below less its parts narrower than 0.1 mm.
+TEST_F(SupportSweepTest, ASliverTooThinToLightHoldsNothingAboveIt) {
+  const test::SweepPart part = test::sweep_part_from_text("box 87 2 43 31.5 1.3 12 6000");
+  const test::SweepFindings f = test::check_sweep_part(part, 0.05, dir, false);
+  EXPECT_EQ(f.error, "");
+  EXPECT_LE(f.far_mm, 1.0) << "layer " << f.far_layer;
+  EXPECT_EQ(f.islands, 0u);
 }
 
 TEST(SupportSweep, RandomPartsSpanTheRangesAndReadBackFromTheirText) {

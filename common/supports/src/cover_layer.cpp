@@ -4,6 +4,7 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "cell_grid.h"
 #include "slicereuse/regions/layer_region.h"
 #include "slicereuse/supports/support_points.h"
 
@@ -63,6 +64,7 @@ std::array<double, 2> centroid(const ClipperLib::Paths& part) {
 
 // A cell's key in HeldSurface's hash.
 long long cell_key(long long i, long long j) { return i * 0x9E3779B1LL + j; }
+
 
 }  // namespace
 
@@ -128,8 +130,9 @@ std::vector<PlanePoint> hold_slopes(const std::vector<const ClipperLib::Paths*>&
 std::vector<PlanePoint> cover_layer(const LayerAreas& areas, const std::vector<std::array<double, 2>>& existing,
                                     const HeldSurface& held, double z, const CoverReach& reach) {
   // The lattice is fine enough for the smaller reach: every reach less the margin stays
-  // positive (0.17 of it at least), at any density.
-  const double g = std::min(reach.head, reach.support) / 2;
+  // positive (0.90 of it at least), at any density; finer than half the reach (0.58 of it)
+  // since the points' count goes with the inverse square of what is left.
+  const double g = std::min(reach.head, reach.support) / 8;
   const double margin = g * std::sqrt(0.5) + g / 8;
   const double support_reach = reach.support - margin;
   // This layer's points: held in its plane (dz 0) within the head reach, an overhang's within
@@ -158,9 +161,44 @@ std::vector<PlanePoint> cover_layer(const LayerAreas& areas, const std::vector<s
         }
         take(seed, kind);
       }
-      for (const std::vector<std::array<double, 2>>* list : {&c.lattice, &c.boundary})
-        for (const std::array<double, 2>& p : *list)
-          if (!taken.holds(p[0], p[1], z, own_reach) && !(held_counts && held.holds(p[0], p[1], z, support_reach))) take(p, kind);
+      // Each candidate not yet held, in order, gets held by the candidate within reach of it
+      // that holds the most of those not yet held (the first on a tie): taking the candidate
+      // itself, at the edge of what is held, would spend half its disc on held ground.
+      const size_t lattice = c.lattice.size();
+      std::vector<std::array<double, 2>> all = std::move(c.lattice);
+      all.insert(all.end(), c.boundary.begin(), c.boundary.end());
+      std::vector<uint8_t> held_now(all.size());
+      for (size_t i = 0; i < all.size(); ++i)
+        held_now[i] = taken.holds(all[i][0], all[i][1], z, own_reach) ||
+                      (held_counts && held.holds(all[i][0], all[i][1], z, support_reach));
+      CellGrid grid(own_reach);
+      for (size_t i = 0; i < all.size(); ++i) grid.add(i, all[i][0], all[i][1]);
+      const auto within_reach = [&](size_t of, auto f) {
+        grid.for_each_near(all[of][0], all[of][1], [&](size_t q) {
+          if (std::hypot(all[q][0] - all[of][0], all[q][1] - all[of][1]) <= own_reach) f(q);
+        });
+      };
+      // In rows, the boundary's candidates among the lattice's: a boundary candidate left for
+      // after the lattice, however near what its row took, would take a point of its own.
+      std::vector<size_t> order(all.size());
+      for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+      std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+        return all[a][1] != all[b][1] ? all[a][1] < all[b][1] : all[a][0] < all[b][0];
+      });
+      for (const size_t i : order) {
+        if (held_now[i]) continue;
+        size_t best = i, most = 0;
+        within_reach(i, [&](size_t p) {
+          // A layer's points stand apart; a point on the boundary may miss the face under it
+          // (placed then at the nearest contour point), so only the candidate itself takes one.
+          if ((p >= lattice && p != i) || taken.holds(all[p][0], all[p][1], z, own_reach / 2)) return;
+          size_t n = 0;
+          within_reach(p, [&](size_t q) { n += !held_now[q]; });
+          if (n > most || (n == most && p < best)) most = n, best = p;
+        });
+        take(all[best], kind);
+        within_reach(best, [&](size_t q) { held_now[q] = 1; });
+      }
     }
   };
   cover(areas.islands, SupportKind::Island, head_reach, false);

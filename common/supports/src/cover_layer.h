@@ -2,12 +2,17 @@
 // cover_layer: one layer's support points in the plane, for its islands, far areas and
 // overhangs (support_areas.h), as generate_support_points.h says.
 //
-// Candidates: the points of the global lattice of spacing g = min(head_reach, support_radius) / 2
-// (x = i*g, y = j*g: the same on every layer) inside each part, then the part's boundary, its vertices and points
-// between them at most g/4 apart (slivers narrower than g hold no lattice point). Every point of
-// a part is then within m = g/sqrt(2) + g/8 of a candidate (its nearest lattice point, or where
-// the way to it leaves the part), so a greedy pass that takes each candidate not yet covered
-// within reach - m covers the part within reach:
+// Candidates: the points of a global lattice of spacing g (x = i*g, y = j*g: the same on every
+// layer) inside each part, then the part's boundary, its vertices and points between them at
+// most g/4 apart (slivers narrower than g hold no lattice point). Every point of a part is then
+// within m = g/sqrt(2) + g/8 of a candidate (its nearest lattice point, or where the way to it
+// leaves the part), so a pass that holds every candidate within reach - m of a point covers the
+// part within reach. Here g = min(head_reach, support_radius) / 8 (m leaves 0.90 of the reach; a
+// lattice of half the reach, 0.58), and each candidate not yet held, in order, gets held by the
+// lattice candidate within reach - m of it, not within half that of a point of the layer, that
+// holds the most candidates not yet held (or by itself): taking each candidate not yet held
+// itself spends half of each disc on ground already held. Boundary candidates take a point only
+// for themselves: the face under one may be missed, and its point placed elsewhere.
 //   islands and far areas: covered by points of this layer (existing ones first), reach
 //     head_reach;
 //   overhangs: within the smaller of head_reach and support_radius, also by the points held
@@ -17,9 +22,10 @@
 // areas, then overhangs; the order is fixed, so the result is too.
 //
 // hold_slopes: up to count points on the slopes given (of one part; support_force.h says how
-// many), each the candidate (as above) farthest from the points held in space and this layer's
-// (layer), among those neither holds within the support reach less the margin: spread over the
-// slopes, and none where the surface is already held.
+// many), each the candidate (as above, on a lattice of g = min(head_reach, support_radius) / 2)
+// farthest from the points held in space and this layer's (layer), among those neither holds
+// within the support reach less the margin: spread over the slopes, and none where the surface
+// is already held.
 #include <array>
 #include <cstdint>
 #include <unordered_map>

@@ -11,6 +11,8 @@ double SupportPointOptions::held_area_mm2() const { return 10 / density_relative
 
 double SupportPointOptions::support_radius_mm() const { return std::sqrt(held_area_mm2() / M_PI); }
 
+double SupportPointOptions::point_reach_mm() const { return head_reach_mm + head_front_diameter_mm / 2 - 0.05; }
+
 double SupportPointOptions::self_supporting_mm(double thickness) const {
   return thickness / std::tan(critical_angle_deg * M_PI / 180);
 }

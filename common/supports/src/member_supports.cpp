@@ -13,6 +13,7 @@ MemberSupports make_member_supports(const Mesh& part, const Slices& part_slicing
   SupportPointOptions point_options = options.points;
   // A part raised off the plate rests on its supports from its first layer on.
   point_options.raised = options.tree.object_elevation_mm > 0;
+  point_options.head_front_diameter_mm = options.tree.head_front_diameter_mm;
   auto t = std::chrono::steady_clock::now();
   const Progress points_progress = sub_progress(progress, 0, 0.9);
   if (source) {

@@ -19,6 +19,11 @@ namespace {
 // head's or a pixel's size, and it divides the polygon work several times.
 constexpr double kAreaToleranceMm = 0.005;
 
+// The far reach is measured from the layer below less its parts narrower than twice this (mm):
+// a mask lights a pixel only where the layer covers about half of it, so a sliver 0.1 mm wide
+// (two pixels of 0.05 mm) may light nothing, and hold nothing above it.
+constexpr double kUnlitHalfWidthMm = 0.05;
+
 // A part resting on less than this share of its area is an island: UVtools' check counts a
 // region an island unless a quarter of its pixels rest on lit ones below, and anti-aliased
 // edges light less than their area.
@@ -85,14 +90,24 @@ ClipperLib::Paths loops_of(const std::vector<ClipperLib::Paths>& parts) {
   return loops;
 }
 
-// The parts of region minus below grown by distance (round joins).
-std::vector<ClipperLib::Paths> beyond(const ClipperLib::Paths& region, const ClipperLib::Paths& below, double distance) {
+// below offset by distance (negative: shrunk), with round joins or others.
+ClipperLib::Paths offset(const ClipperLib::Paths& below, double distance, ClipperLib::JoinType join = ClipperLib::jtRound) {
   ClipperLib::ClipperOffset grow;
   // Arcs within the areas' tolerance of the true circle: finer only adds vertices.
   grow.ArcTolerance = kAreaToleranceMm * kRegionScale;
-  grow.AddPaths(below, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+  grow.AddPaths(below, join, ClipperLib::etClosedPolygon);
   ClipperLib::Paths grown;
   grow.Execute(grown, distance * kRegionScale);
+  return grown;
+}
+
+// The parts of region minus below grown by distance (round joins); with thin, below less its
+// parts narrower than 2 thin first (shrunk by thin, then grown by distance + thin).
+std::vector<ClipperLib::Paths> beyond(const ClipperLib::Paths& region, const ClipperLib::Paths& below, double distance,
+                                      double thin = 0) {
+  // Shrunk with mitred joins: round ones would add arcs at each of a dense contour's bends.
+  const ClipperLib::Paths grown =
+      thin > 0 ? offset(offset(below, -thin, ClipperLib::jtMiter), distance + thin) : offset(below, distance);
   ClipperLib::Clipper clipper;
   clipper.AddPaths(region, ClipperLib::ptSubject, true);
   clipper.AddPaths(grown, ClipperLib::ptClip, true);
@@ -146,7 +161,7 @@ LayerAreas areas_of(const LayerRegion* below, const LayerRegion& region, double 
   // Far areas lie within what overhangs only when they reach no farther; at small critical
   // angles a ledge wider than the far reach may not overhang at all.
   if (!overhanging.empty() || o.far_reach_mm < self_supporting)
-    out.far = beyond(region.loops, below->loops, o.far_reach_mm);
+    out.far = beyond(region.loops, below->loops, o.far_reach_mm, kUnlitHalfWidthMm);
   return out;
 }
 
@@ -180,6 +195,9 @@ void check_support_input(const Mesh& mesh, const Slices& slicing, const SupportP
   if (!(o.far_reach_mm > 0 && o.head_reach_mm > 0 && std::isfinite(o.far_reach_mm) && std::isfinite(o.head_reach_mm)))
     throw Error(format("the reach beyond the layer below (%g mm) and of a head (%g mm) must be positive",
                        o.far_reach_mm, o.head_reach_mm));
+  if (!(o.head_front_diameter_mm >= 0) || !std::isfinite(o.head_front_diameter_mm) || !(o.point_reach_mm() > 0))
+    throw Error(format("the heads' front diameter must be a number of mm that leaves a point some reach, not %g mm",
+                       o.head_front_diameter_mm));
 }
 
 std::vector<LayerAreas> support_areas(const Slices& slicing, const SupportPointOptions& options,

@@ -8,7 +8,8 @@
 //              k > 0: the surface flatter than 15 degrees, or than the critical angle if less;
 //   slopes:    the rest of region_k beyond region_{k-1} grown by the self-supporting distance:
 //              the surface between the critical angle and 15 degrees, each with its part;
-//   far:       the part of region_k beyond region_{k-1} grown by options.far_reach_mm;
+//   far:       the part of region_k beyond region_{k-1} grown by options.far_reach_mm, once
+//              region_{k-1}'s parts narrower than 0.1 mm are left out (its mask may not light them);
 //   parts:     the region's parts (its structures, support_force.h), their areas, and how each
 //              overlaps the parts of layer k-1 (links, with the overlap's area).
 // Polygons in kRegionScale units (layer_region.h), outer loop first, then its holes, found on the

@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "bridge_path.h"
-#include "pillar_grid.h"
+#include "cell_grid.h"
 
 namespace slicereuse {
 
@@ -50,7 +50,7 @@ bool zig_zag(const PartColumns& columns, size_t a, size_t b, double slope, Suppo
 void link_tall_pillars(const PartColumns& columns, const SupportTreeOptions& o, SupportStructure& s) {
   if (!(o.max_pillar_link_distance_mm > 0)) return;
   const double slope = std::tan(o.critical_angle_deg * M_PI / 180);
-  PillarGrid on_ground(o.max_pillar_link_distance_mm);
+  CellGrid on_ground(o.max_pillar_link_distance_mm);
   for (size_t p = 0; p < s.pillars.size(); ++p)
     if (s.pillars[p].end == PillarEnd::Ground) on_ground.add(p, s.pillars[p].x, s.pillars[p].y);
   std::vector<size_t> links(s.pillars.size(), 0);

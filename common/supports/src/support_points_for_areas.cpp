@@ -83,7 +83,7 @@ SupportPoints support_points_for_areas(const Mesh& mesh, const Slices& slicing, 
   // The cover runs up the layers (a layer's overhangs may be held by points below); then each
   // layer's points go onto the mesh on all cores.
   std::vector<std::vector<PlanePoint>> plane(n);
-  const CoverReach reach{options.head_reach_mm, options.support_radius_mm()};
+  const CoverReach reach{options.point_reach_mm(), options.support_radius_mm()};
   HeldSurface held(std::max(reach.head, reach.support));
   const Progress cover_progress = sub_progress(progress, 0, 0.5);
   // Each part's support force (support_force.h), layer on layer: its points' and what it inherits.

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "bridge_path.h"
-#include "pillar_grid.h"
+#include "cell_grid.h"
 #include "support_heads.h"
 
 namespace slicereuse {
@@ -49,7 +49,7 @@ size_t add_pillar(SupportStructure& s, size_t head, double z_bottom, PillarEnd e
 }
 
 // The cheapest clear bridge from head h to a pillar on the ground (see route_heads).
-Join cheapest_join(const PartColumns& columns, const SupportStructure& s, const PillarGrid& on_ground,
+Join cheapest_join(const PartColumns& columns, const SupportStructure& s, const CellGrid& on_ground,
                    const std::vector<size_t>& bridges_on, size_t h, const WayDown& way, const SupportTreeOptions& o) {
   const double r = o.pillar_diameter_mm / 2, slope = std::tan(o.critical_angle_deg * M_PI / 180);
   const double max_run = max_bridge_run(o);
@@ -84,7 +84,7 @@ void route_heads(const PartColumns& columns, const SupportPoints& points, const 
   const double r_base = o.base_diameter_mm / 2;
   const double max_run = max_bridge_run(o);
   const bool joins = max_run > 0 && o.max_bridges_on_pillar > 0;
-  PillarGrid on_ground(joins ? max_run : 1);
+  CellGrid on_ground(joins ? max_run : 1);
   std::vector<size_t> bridges_on;  // per pillar, the heads' bridges ending on it
   auto new_pillar = [&](size_t h, double z_bottom, PillarEnd end) {
     bridges_on.push_back(0);

@@ -10,13 +10,14 @@
 //              the surface flatter than the critical angle and than 15 degrees;
 //   slopes:    the surface between: reaching beyond thickness / tan(critical_angle_deg), short
 //              of thickness x tan(75 degrees);
-//   far:       the part of layer k farther than far_reach_mm from layer k-1's region.
+//   far:       the part of layer k farther than far_reach_mm from layer k-1's region, less its
+//              parts narrower than 0.1 mm (a sliver that thin may light no pixel of its mask).
 // Points are placed on those areas (greedy cover of a lattice of candidates, then the area's
 // boundary for slivers thinner than the lattice; cover_layer.h), layer by layer from the bottom:
-//   every point of an island or a far area lies within head_reach_mm of a point of its own
-//   layer, whose head then lies under it in the layer below: with far_reach_mm and
+//   every point of an island or a far area lies within point_reach_mm() of a point of its own
+//   layer, whose head's tip then lies under it in the layer below: with far_reach_mm and
 //   head_reach_mm below 1 mm, no lit pixel of a mask is more than 1 mm from the layer below;
-//   every point of an overhang lies within support_radius_mm() (and head_reach_mm) of a point
+//   every point of an overhang lies within support_radius_mm() (and point_reach_mm()) of a point
 //   of its own layer or, in space, within support_radius_mm() of a point of a layer below (the
 //   surface between them is held by it), as PrusaSlicer's support force spreads over the
 //   surface around a point, at any density;
@@ -56,9 +57,13 @@ struct SupportPointOptions {
   // PrusaSlicer's support_points_minimal_distance: how near a point added on a member may be
   // to a dropped one to count as that point moved (transfer_support_points.h).
   double minimal_distance_mm = 1.0;
-  // The masks' rule (no lit pixel more than 1 mm from the layer below), see above.
+  // The masks' rule (no lit pixel more than 1 mm from the layer below), see above: a layer's
+  // far area and islands lie within head_reach_mm of the edge of a head's tip, which is lit in the
+  // layer below, head_front_diameter_mm across (the tree's, SupportTreeOptions), so within
+  // point_reach_mm() of its point.
   double far_reach_mm = 0.9;
   double head_reach_mm = 1.0;
+  double head_front_diameter_mm = 0.5;
   // Raised off the plate (support_object_elevation > 0): layer 0 is an island to support.
   bool raised = true;
   size_t max_points = 1000000;
@@ -67,6 +72,9 @@ struct SupportPointOptions {
   double held_area_mm2() const;
   // How far a point holds the overhanging surface around it: sqrt(held_area_mm2() / pi).
   double support_radius_mm() const;
+  // How far a point holds its layer's far area and islands: head_reach_mm plus the head tip's
+  // radius, less 0.05 mm for its pixels.
+  double point_reach_mm() const;
   // How far a layer may reach beyond the one below without overhanging.
   double self_supporting_mm(double thickness) const;
 };
