@@ -5,7 +5,7 @@
 // for_each_near: f(item) for each of them, in no fixed order, without a list.
 #include <cmath>
 #include <cstdint>
-#include <map>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -29,9 +29,12 @@ class CellGrid {
 
  private:
   using Cell = std::pair<int64_t, int64_t>;
+  struct CellHash {
+    size_t operator()(const Cell& c) const { return size_t(c.first * 0x9E3779B1LL + c.second); }
+  };
   Cell cell(double x, double y) const { return {int64_t(std::floor(x / reach_)), int64_t(std::floor(y / reach_))}; }
   double reach_;
-  std::map<Cell, std::vector<size_t>> cells_;
+  std::unordered_map<Cell, std::vector<size_t>, CellHash> cells_;
 };
 
 }  // namespace slicereuse

@@ -2,9 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
-#include "cell_grid.h"
 #include "slicereuse/regions/layer_region.h"
 #include "slicereuse/supports/support_points.h"
 
@@ -62,28 +60,20 @@ std::array<double, 2> centroid(const ClipperLib::Paths& part) {
   return {cx / (3 * a), cy / (3 * a)};
 }
 
-// A cell's key in HeldSurface's hash.
-long long cell_key(long long i, long long j) { return i * 0x9E3779B1LL + j; }
-
-
 }  // namespace
 
-long long HeldSurface::cell(double v) const { return (long long)std::floor(v / radius_); }
-
-void HeldSurface::add(double x, double y, double z) { cells_[cell_key(cell(x), cell(y))].push_back({x, y, z}); }
+void HeldSurface::add(double x, double y, double z) {
+  grid_.add(points_.size(), x, y);
+  points_.push_back({x, y, z});
+}
 
 double HeldSurface::nearest2(double x, double y, double z) const {
   double best = INFINITY;
-  const long long cx = cell(x), cy = cell(y);
-  for (long long i = cx - 1; i <= cx + 1; ++i)
-    for (long long j = cy - 1; j <= cy + 1; ++j) {
-      const auto it = cells_.find(cell_key(i, j));
-      if (it == cells_.end()) continue;
-      for (const std::array<double, 3>& p : it->second) {
-        const double dx = p[0] - x, dy = p[1] - y, dz = z - p[2];
-        if (dz >= 0) best = std::min(best, dx * dx + dy * dy + dz * dz);
-      }
-    }
+  grid_.for_each_near(x, y, [&](size_t i) {
+    const std::array<double, 3>& p = points_[i];
+    const double dx = p[0] - x, dy = p[1] - y, dz = z - p[2];
+    if (dz >= 0) best = std::min(best, dx * dx + dy * dy + dz * dz);
+  });
   return best;
 }
 

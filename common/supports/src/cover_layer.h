@@ -28,9 +28,9 @@
 // is already held.
 #include <array>
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
+#include "cell_grid.h"
 #include "support_areas.h"
 
 namespace slicereuse {
@@ -40,23 +40,23 @@ struct PlanePoint {
   uint8_t kind;  // SupportKind
 };
 
-// Points in space, hashed in x-y cells of the radius: whether one at or below z lies within reach
-// (at most the radius) of (x, y, z). The layers covered so far, and a layer's own points in its
-// plane.
+// Points in space, by x-y cells of the radius (CellGrid): whether one at or below z lies within
+// reach (at most the radius) of (x, y, z). The layers covered so far, and a layer's own points in
+// its plane.
 class HeldSurface {
  public:
-  explicit HeldSurface(double radius) : radius_(radius) {}
+  explicit HeldSurface(double radius) : radius_(radius), grid_(radius) {}
   bool holds(double x, double y, double z, double reach) const;
   // The distance to the nearest point at or below z, if within the radius; else infinity.
   double distance(double x, double y, double z) const;
   void add(double x, double y, double z);
 
  private:
-  long long cell(double v) const;
   // The squared distance to the nearest point at or below z in the cells around (x, y).
   double nearest2(double x, double y, double z) const;
   double radius_;
-  std::unordered_map<long long, std::vector<std::array<double, 3>>> cells_;
+  std::vector<std::array<double, 3>> points_;
+  CellGrid grid_;
 };
 
 struct CoverReach {
