@@ -30,7 +30,7 @@ class CellGrid {
  private:
   using Cell = std::pair<int64_t, int64_t>;
   struct CellHash {
-    size_t operator()(const Cell& c) const { return size_t(c.first * 0x9E3779B1LL + c.second); }
+    size_t operator()(const Cell& c) const { return size_t(uint64_t(c.first) * 0x9E3779B1u + uint64_t(c.second)); }
   };
   Cell cell(double x, double y) const { return {int64_t(std::floor(x / reach_)), int64_t(std::floor(y / reach_))}; }
   double reach_;
